@@ -1,0 +1,52 @@
+#pragma once
+// One call from a case to its result: mesh → hierarchy → assembly → solve → result JSON and
+// VTU text. Used by the CLI and, in-process, by the job service.
+
+#include <atomic>
+#include <functional>
+#include <nlohmann/json.hpp>
+#include <string>
+
+#include "case/case_error.hpp"
+#include "case/case_reader.hpp"
+#include "case/case_spec.hpp"
+
+namespace fosls {
+
+/// What the solver reports after every iteration (also one history entry of the result).
+struct IterationRecord {
+  int iteration = 0;
+  double energy = 0.0;        ///< J(x_k)
+  double correction = 0.0;    ///< energy norm of x_k − x_{k−1}
+  double kkt_residual = 0.0;  ///< ‖x − P_K(x − (Ax − b))‖
+  int active = 0;             ///< size of the active set
+  int changed = 0;            ///< DOFs whose active/inactive state changed
+  double time_s = 0.0;        ///< since the start of the solve
+};
+
+struct RunControl {
+  /// Called after every iteration from the solving thread; keep it cheap.
+  std::function<void(const IterationRecord&)> on_iteration;
+  /// When set and it becomes true, the solve stops at the next iteration and the result
+  /// says "cancelled": true.
+  const std::atomic<bool>* cancel = nullptr;
+  /// Whether to produce the VTU text.
+  bool want_vtu = true;
+};
+
+struct RunOutput {
+  nlohmann::json result;  ///< architecture.md, "Result JSON"
+  std::string vtu;        ///< VTK XML unstructured grid (empty unless want_vtu)
+  bool cancelled = false;
+};
+
+/// Everything that validation can say about a case JSON, including what needs the coarse mesh
+/// (mesh errors, groups named in `boundary` that the mesh does not have, DOF limits).
+std::vector<CaseError> validate_case(const nlohmann::json& j, const CaseReadOptions& options = {});
+
+/// Runs a validated case. Throws CaseException for problems a user caused that only show up
+/// while running (for example weights that make the matrix indefinite).
+RunOutput run_case(const CaseSpec& spec, const RunControl& control = {},
+                   const CaseLimits& limits = {});
+
+}  // namespace fosls

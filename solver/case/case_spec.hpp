@@ -1,0 +1,94 @@
+#pragma once
+// The contact case as the library sees it after the case JSON has been validated.
+// The JSON format is documented in docs/case-format.md; parsing lives in case_reader.hpp.
+
+#include <array>
+#include <limits>
+#include <map>
+#include <optional>
+#include <string>
+
+#include "mesh/geometry_spec.hpp"
+
+namespace fosls {
+
+/// A scalar datum: a number, or an expression of x and y (muParser syntax).
+struct Scalar {
+  std::string expression;  ///< empty when `value` is a plain number
+  double value = 0.0;
+  bool is_constant() const { return expression.empty(); }
+};
+
+struct MeshSpec {
+  enum class Kind { kBuiltin, kGeometry, kMsh, kGeoFile };
+  Kind kind = Kind::kBuiltin;
+  std::string builtin = "square";        ///< "square" or "hertz"
+  std::map<std::string, double> params;  ///< builtin parameters (x0, y0, width, height; radius,
+                                         ///< contact_fraction, grading)
+  GeometrySpec geometry;                 ///< kind == kGeometry
+  std::string msh_text;                  ///< kind == kMsh (ASCII 4.1)
+  std::string geo_path;                  ///< kind == kGeoFile (CLI only, never from the network)
+  double size = 0.25;                    ///< coarse mesh size
+  int refinements = 0;                   ///< levels = refinements + 1
+};
+
+struct Material {
+  double mu = 1.0;
+  double lambda = 1.0;  ///< +infinity for an incompressible material
+  bool incompressible() const { return lambda == std::numeric_limits<double>::infinity(); }
+};
+
+struct Obstacle {
+  enum class Kind { kPlane, kCircle, kGap };
+  Kind kind = Kind::kPlane;
+  Point point = Point::Zero();   ///< plane: a point on it
+  Point normal = Point(0, 1);    ///< plane: unit normal from the obstacle into the body
+  Point center = Point::Zero();  ///< circle
+  double radius = 0.0;           ///< circle (the body lies outside the circle)
+  Scalar gap;                    ///< gap: g(x, y) measured along the body normal
+};
+
+enum class ContactDirection { kBodyNormal, kObstacleNormal };
+
+struct BoundaryCondition {
+  enum class Type { kDirichlet, kNeumann, kContact };
+  Type type = Type::kNeumann;
+  std::array<Scalar, 2> values;  ///< displacement (Dirichlet) or traction (Neumann)
+  Obstacle obstacle;             ///< contact
+  ContactDirection direction = ContactDirection::kBodyNormal;
+};
+
+/// Weights of the FOSLS functional (method.md §2).
+struct Weights {
+  double c1 = 1.0;
+  double c2 = 1.0;
+  double c3 = 0.5;
+  double c4 = 0.0;
+};
+
+enum class Method { kMmg, kTnnmg, kPdas, kPgs };
+enum class SmootherKind { kPatch, kPoint };
+enum class CoarseObstacle { kA, kB, kC };
+
+struct SolverSettings {
+  Method method = Method::kMmg;
+  double tolerance = 1e-8;
+  int max_iterations = 200;
+  SmootherKind smoother = SmootherKind::kPatch;
+  int pre_smoothing = 1;
+  int post_smoothing = 1;
+  CoarseObstacle coarse_obstacle = CoarseObstacle::kA;
+};
+
+struct CaseSpec {
+  std::string name = "case";
+  MeshSpec mesh;
+  Material material;
+  std::array<Scalar, 2> body_force;
+  /// Condition per boundary group; groups not named are traction free.
+  std::map<std::string, BoundaryCondition> boundary;
+  Weights weights;
+  SolverSettings solver;
+};
+
+}  // namespace fosls
