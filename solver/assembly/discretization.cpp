@@ -1,0 +1,81 @@
+#include "assembly/discretization.hpp"
+
+#include "fem/transfer.hpp"
+
+namespace fosls {
+
+Discretization::Discretization(MeshHierarchy meshes, ProblemData data)
+    : meshes_(std::move(meshes)), data_(std::move(data)) {
+  const auto roles = data_.roles();
+  for (const Mesh& m : meshes_.meshes)
+    spaces_.push_back(std::make_unique<FoslsSpace>(m, roles, obstacle_vertex_normals(m, data_)));
+  assembler_ = std::make_unique<FoslsAssembler>(*spaces_.back(), data_);
+  problem_ = assembler_->assemble_system();
+}
+
+std::vector<std::vector<int>> vertex_patches(const FoslsSpace& space) {
+  const Mesh& mesh = space.mesh();
+  const auto vertex_edges = mesh.vertex_edges();
+  std::vector<std::vector<int>> patches;
+  patches.reserve(mesh.num_vertices());
+  for (int v = 0; v < mesh.num_vertices(); ++v) {
+    std::vector<int> p;
+    for (int c = 0; c < 2; ++c)
+      if (int f = space.free_index(space.u_dof(v, c)); f >= 0) p.push_back(f);
+    for (int e : vertex_edges[v])
+      for (int i = 0; i < 2; ++i)
+        if (int f = space.free_index(space.sigma_dof(e, i)); f >= 0) p.push_back(f);
+    if (!p.empty()) patches.push_back(std::move(p));
+  }
+  return patches;
+}
+
+LevelHierarchy Discretization::build_hierarchy() const {
+  LevelHierarchy h;
+  h.levels.resize(num_levels());
+  for (int j = 0; j < num_levels(); ++j) {
+    const FoslsSpace& fine = *spaces_[j];
+    Level& level = h.levels[j];
+    level.num_dofs = fine.num_free();
+    level.patches = vertex_patches(fine);
+    if (j == 0) continue;
+    const FoslsSpace& coarse = *spaces_[j - 1];
+    const RefinementMaps& maps = meshes_.maps[j];
+    level.prolongation =
+        free_prolongation(coarse, fine, cartesian_prolongation(coarse.mesh(), fine.mesh(), maps));
+    // Contact links: every coarse contact edge with its fine midpoint and halves.
+    const Mesh& cm = coarse.mesh();
+    const Mesh& fm = fine.mesh();
+    const int ncv = cm.num_vertices();
+    std::vector<std::array<int, 2>> halves(cm.num_edges(), {-1, -1});
+    for (int f = 0; f < fm.num_edges(); ++f) {
+      int e = maps.parent_edge[f];
+      if (e < 0 || !coarse.is_contact_edge(e)) continue;
+      // The half that touches the coarse edge's first end point comes first.
+      bool first = fm.edge(f)[0] == cm.edge(e)[0] || fm.edge(f)[1] == cm.edge(e)[0];
+      halves[e][first ? 0 : 1] = f;
+    }
+    auto normal_u = [](const FoslsSpace& s, int v) {
+      return s.is_contact_vertex(v) ? s.free_index(s.u_dof(v, 0)) : -1;
+    };
+    for (int e = 0; e < cm.num_edges(); ++e) {
+      if (!coarse.is_contact_edge(e)) continue;
+      ContactLink link;
+      const auto& ab = cm.edge(e);
+      link.coarse_un_a = normal_u(coarse, ab[0]);
+      link.coarse_un_b = normal_u(coarse, ab[1]);
+      link.fine_un_a = normal_u(fine, ab[0]);
+      link.fine_un_b = normal_u(fine, ab[1]);
+      link.fine_un_mid = normal_u(fine, ncv + e);
+      link.coarse_sn = coarse.free_index(coarse.sigma_dof(e, 0));
+      for (int k = 0; k < 2; ++k) {
+        link.fine_sn[k] = fine.free_index(fine.sigma_dof(halves[e][k], 0));
+        link.sn_weight[k] = level.prolongation.coeff(link.fine_sn[k], link.coarse_sn);
+      }
+      level.links.push_back(link);
+    }
+  }
+  return h;
+}
+
+}  // namespace fosls

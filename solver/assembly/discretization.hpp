@@ -1,0 +1,40 @@
+#pragma once
+// A case's discrete problem on all levels: spaces, the assembled finest-level QP and the level
+// hierarchy for the multilevel solvers.
+
+#include <memory>
+#include <vector>
+
+#include "assembly/fosls_assembler.hpp"
+#include "core/level_hierarchy.hpp"
+#include "mesh/refinement.hpp"
+
+namespace fosls {
+
+class Discretization {
+ public:
+  /// Builds spaces on every level and assembles the finest one.
+  Discretization(MeshHierarchy meshes, ProblemData data);
+
+  int num_levels() const { return meshes_.num_levels(); }
+  const MeshHierarchy& meshes() const { return meshes_; }
+  const FoslsSpace& space(int level) const { return *spaces_[level]; }
+  const FoslsSpace& finest_space() const { return *spaces_.back(); }
+  const FoslsAssembler& assembler() const { return *assembler_; }
+  const AssembledProblem& problem() const { return problem_; }
+  const ProblemData& data() const { return data_; }
+  /// Builds the transfers, patches and contact links of all levels (not needed by pdas).
+  LevelHierarchy build_hierarchy() const;
+
+ private:
+  MeshHierarchy meshes_;
+  ProblemData data_;
+  std::vector<std::unique_ptr<FoslsSpace>> spaces_;
+  std::unique_ptr<FoslsAssembler> assembler_;
+  AssembledProblem problem_;
+};
+
+/// Vertex patches of a space in its free numbering (method.md §4.1).
+std::vector<std::vector<int>> vertex_patches(const FoslsSpace& space);
+
+}  // namespace fosls

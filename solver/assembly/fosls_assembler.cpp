@@ -1,0 +1,382 @@
+#include "assembly/fosls_assembler.hpp"
+
+#include <omp.h>
+
+#include <Eigen/Dense>
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+
+#include "fem/element_geometry.hpp"
+
+namespace fosls {
+
+using Mat12 = Eigen::Matrix<double, 12, 12>;
+using Vec12 = Eigen::Matrix<double, 12, 1>;
+using Row12 = Eigen::Matrix<double, 1, 12>;
+
+struct FoslsAssembler::Local {
+  Mat12 K;
+  Vec12 b;
+  double c = 0.0;
+};
+
+namespace {
+
+/// Operators of one triangle at one quadrature point, acting on the 12 local DOFs
+/// (u: 2k + c, σ: 6 + 2k + i), all in Cartesian coordinates with μ = 1 (scaled stresses).
+struct PointOperators {
+  Eigen::Matrix<double, 4, 12> constitutive;  ///< rows (ij) = 00, 01, 10, 11 of Aσ − ε(u)
+  Row12 asymmetry;                            ///< σ_01 − σ_10
+};
+
+PointOperators point_operators(const ElementGeometry& g, const Point& x, double kappa) {
+  PointOperators op;
+  op.constitutive.setZero();
+  op.asymmetry.setZero();
+  const double inv2mu = 0.5;
+  for (int k = 0; k < 3; ++k) {
+    const Point psi = g.rt0(k, x);
+    const Point grad = g.grad_p1(k);
+    for (int i = 0; i < 2; ++i) {
+      for (int j = 0; j < 2; ++j) {
+        // Aσ: (σ_ij − κ δ_ij tr σ) / (2μ), σ_ij = Σ_k S_{i,k} ψ_k,j.
+        op.constitutive(2 * i + j, 6 + 2 * k + i) += inv2mu * psi[j];
+        if (i == j)
+          for (int m = 0; m < 2; ++m)
+            op.constitutive(2 * i + i, 6 + 2 * k + m) -= inv2mu * kappa * psi[m];
+        // −ε_ij = −½(∂_j u_i + ∂_i u_j).
+        op.constitutive(2 * i + j, 2 * k + i) -= 0.5 * grad[j];
+        op.constitutive(2 * i + j, 2 * k + j) -= 0.5 * grad[i];
+      }
+    }
+    op.asymmetry(6 + 2 * k + 0) += psi[1];
+    op.asymmetry(6 + 2 * k + 1) -= psi[0];
+  }
+  return op;
+}
+
+/// div σ_i as a function of the local DOFs (constant on the triangle).
+Eigen::Matrix<double, 2, 12> divergence_operator(const ElementGeometry& g) {
+  Eigen::Matrix<double, 2, 12> d;
+  d.setZero();
+  for (int k = 0; k < 3; ++k)
+    for (int i = 0; i < 2; ++i) d(i, 6 + 2 * k + i) = g.rt0_div(k);
+  return d;
+}
+
+/// Gauss–Legendre points on [0, 1] (3 points, exact for degree 5).
+constexpr std::array<double, 3> kGaussX = {0.1127016653792583, 0.5, 0.8872983346207417};
+constexpr std::array<double, 3> kGaussW = {5.0 / 18.0, 8.0 / 18.0, 5.0 / 18.0};
+
+}  // namespace
+
+std::vector<Point> obstacle_vertex_normals(const Mesh& mesh, const ProblemData& data) {
+  bool any = false;
+  for (const auto& g : data.groups)
+    any |=
+        g.role == GroupRole::kContact && g.contact.direction == ContactDirection::kObstacleNormal;
+  if (!any) return {};
+  std::vector<Point> averaged(mesh.num_vertices(), Point::Zero());
+  std::vector<int> group(mesh.num_vertices(), -1);
+  for (int e = 0; e < mesh.num_edges(); ++e) {
+    int g = mesh.edge_group(e);
+    if (g < 0 || data.groups[g].role != GroupRole::kContact) continue;
+    for (int v : mesh.edge(e)) {
+      averaged[v] += mesh.edge_normal(e);
+      group[v] = g;
+    }
+  }
+  std::vector<Point> normals(mesh.num_vertices(), Point::Zero());
+  for (int v = 0; v < mesh.num_vertices(); ++v) {
+    if (group[v] < 0) continue;
+    Point n = averaged[v].normalized();
+    normals[v] = locate_obstacle(data.groups[group[v]].contact, mesh.vertex(v), n).direction;
+  }
+  return normals;
+}
+
+FoslsAssembler::FoslsAssembler(const FoslsSpace& space, const ProblemData& data)
+    : space_(space), data_(data) {
+  const Mesh& mesh = space.mesh();
+  mu_ = data.material.mu;
+  if (!(mu_ > 0)) throw std::invalid_argument("mu must be positive");
+  const double lambda = data.material.lambda / mu_;  // scaled: μ = 1
+  kappa_ = data.material.incompressible() ? 0.5 : lambda / (2.0 * lambda + 2.0);
+  body_force_.resize(mesh.num_triangles());
+  for (int t = 0; t < mesh.num_triangles(); ++t) {
+    ElementGeometry g(mesh, t);
+    for (int q = 0; q < 3; ++q) {
+      Point x = g.edge_midpoint(q);
+      for (int i = 0; i < 2; ++i)
+        body_force_[t][2 * q + i] =
+            data.body_force[i] ? data.body_force[i](x.x(), x.y()) / mu_ : 0.0;
+    }
+  }
+  // Gaps at the vertices of contact edges, capped at a length far beyond the body so that
+  // a ray that misses the obstacle leaves the point effectively unconstrained.
+  double lo_x = 1e300, hi_x = -1e300, lo_y = 1e300, hi_y = -1e300;
+  for (const auto& p : mesh.vertices()) {
+    lo_x = std::min(lo_x, p.x()), hi_x = std::max(hi_x, p.x());
+    lo_y = std::min(lo_y, p.y()), hi_y = std::max(hi_y, p.y());
+  }
+  const double far = 10.0 * std::hypot(hi_x - lo_x, hi_y - lo_y);
+  vertex_gap_.assign(mesh.num_vertices(), std::numeric_limits<double>::infinity());
+  for (int e = 0; e < mesh.num_edges(); ++e) {
+    int g = mesh.edge_group(e);
+    if (g < 0 || data.groups[g].role != GroupRole::kContact) continue;
+    for (int v : mesh.edge(e)) {
+      Point n = space.is_contact_vertex(v) ? space.vertex_normal(v) : mesh.edge_normal(e);
+      ContactData body = data.groups[g].contact;
+      body.direction = ContactDirection::kBodyNormal;  // n already is the constraint direction
+      double gap = locate_obstacle(body, mesh.vertex(v), n).gap;
+      if (data.groups[g].contact.direction == ContactDirection::kObstacleNormal &&
+          body.obstacle.kind != Obstacle::Kind::kGap)
+        gap = locate_obstacle(data.groups[g].contact, mesh.vertex(v), n).gap;
+      if (!std::isfinite(gap) || gap > far) gap = far;
+      vertex_gap_[v] = std::min(vertex_gap_[v], gap);
+    }
+  }
+}
+
+std::array<int, 12> FoslsAssembler::local_dofs(int t) const {
+  const Mesh& mesh = space_.mesh();
+  std::array<int, 12> d;
+  for (int k = 0; k < 3; ++k)
+    for (int c = 0; c < 2; ++c) {
+      d[2 * k + c] = space_.u_dof(mesh.triangle(t)[k], c);
+      d[6 + 2 * k + c] = space_.sigma_dof(mesh.triangle_edge(t, k), c);
+    }
+  return d;
+}
+
+void FoslsAssembler::element_kernel(int t, Local& out) const {
+  const Weights& w = data_.weights;
+  ElementGeometry g(space_.mesh(), t);
+  const double wq = g.area / 3.0;  // edge-midpoint rule, exact for degree 2
+  const auto div = divergence_operator(g);
+  out.K.setZero();
+  out.b.setZero();
+  out.c = 0.0;
+  for (int q = 0; q < 3; ++q) {
+    const PointOperators op = point_operators(g, g.edge_midpoint(q), kappa_);
+    out.K.noalias() += (2.0 * w.c2 * wq) * op.constitutive.transpose() * op.constitutive;
+    if (w.c4 != 0.0) out.K.noalias() += (2.0 * w.c4 * wq) * op.asymmetry.transpose() * op.asymmetry;
+    Eigen::Vector2d f(body_force_[t][2 * q], body_force_[t][2 * q + 1]);
+    out.b.noalias() -= (2.0 * w.c1 * wq) * div.transpose() * f;
+    out.c += w.c1 * wq * f.squaredNorm();
+  }
+  out.K.noalias() += (2.0 * w.c1 * g.area) * div.transpose() * div;
+}
+
+void FoslsAssembler::rotate_local(int t, Local& loc) const {
+  const Mesh& mesh = space_.mesh();
+  for (int k = 0; k < 3; ++k) {
+    for (int kind = 0; kind < 2; ++kind) {
+      Point n;
+      if (kind == 0) {
+        int v = mesh.triangle(t)[k];
+        if (!space_.is_contact_vertex(v)) continue;
+        n = space_.vertex_normal(v);
+      } else {
+        int e = mesh.triangle_edge(t, k);
+        if (!space_.is_contact_edge(e)) continue;
+        n = mesh.edge_normal(e);
+      }
+      const int o = kind == 0 ? 2 * k : 6 + 2 * k;
+      Eigen::Matrix2d q;
+      q << n.x(), -n.y(), n.y(), n.x();  // columns n, t
+      loc.K.middleCols<2>(o) = (loc.K.middleCols<2>(o) * q).eval();
+      loc.K.middleRows<2>(o) = (q.transpose() * loc.K.middleRows<2>(o)).eval();
+      loc.b.segment<2>(o) = (q.transpose() * loc.b.segment<2>(o)).eval();
+    }
+  }
+}
+
+AssembledProblem FoslsAssembler::assemble_system() const {
+  const Mesh& mesh = space_.mesh();
+  const int n_full = space_.num_dofs(), n_free = space_.num_free();
+  AssembledProblem out;
+  out.stress_scale = mu_;
+  out.vertex_gap = vertex_gap_;
+
+  // Essential data: Dirichlet displacements and Neumann fluxes (scaled), S_t = 0.
+  Vector xd = Vector::Zero(n_full);
+  for (int e = 0; e < mesh.num_edges(); ++e) {
+    int g = mesh.edge_group(e);
+    if (g < 0) continue;
+    const GroupData& gd = data_.groups[g];
+    const auto& pq = mesh.edge(e);
+    if (gd.role == GroupRole::kDirichlet) {
+      for (int v : pq)
+        for (int c = 0; c < 2; ++c)
+          xd[space_.u_dof(v, c)] =
+              gd.values[c] ? gd.values[c](mesh.vertex(v).x(), mesh.vertex(v).y()) : 0.0;
+    } else if (gd.role == GroupRole::kNeumann) {
+      const Point a = mesh.vertex(pq[0]), b = mesh.vertex(pq[1]);
+      const double len = (b - a).norm();
+      for (int c = 0; c < 2; ++c) {
+        double flux = 0.0;
+        if (gd.values[c])
+          for (int q = 0; q < 3; ++q) {
+            Point x = a + kGaussX[q] * (b - a);
+            flux += kGaussW[q] * gd.values[c](x.x(), x.y());
+          }
+        xd[space_.sigma_dof(e, c)] = flux * len / mu_;
+      }
+    }
+  }
+  // Dirichlet vertices at the end of a Neumann edge keep their displacement; fixed σ of
+  // Neumann edges keep the flux. Clear values of DOFs that are not fixed.
+  for (int d = 0; d < n_full; ++d)
+    if (space_.role(d) != DofRole::kFixed) xd[d] = 0.0;
+
+  const int threads = omp_get_max_threads();
+  std::vector<std::vector<Eigen::Triplet<double>>> triplets(threads);
+  std::vector<Vector> bs(threads, Vector::Zero(n_free));
+  std::vector<double> cs(threads, 0.0);
+#pragma omp parallel
+  {
+    const int tid = omp_get_thread_num();
+    auto& trip = triplets[tid];
+    Vector& b = bs[tid];
+    double& c = cs[tid];
+    trip.reserve(static_cast<std::size_t>(144) * mesh.num_triangles() / threads + 144);
+    Local loc;
+#pragma omp for schedule(static)
+    for (int t = 0; t < mesh.num_triangles(); ++t) {
+      element_kernel(t, loc);
+      rotate_local(t, loc);
+      const auto dofs = local_dofs(t);
+      c += loc.c;
+      for (int i = 0; i < 12; ++i) {
+        const int fi = space_.free_index(dofs[i]);
+        if (fi >= 0) {
+          double bi = loc.b[i];
+          for (int j = 0; j < 12; ++j) {
+            const int fj = space_.free_index(dofs[j]);
+            if (fj >= 0)
+              trip.emplace_back(fi, fj, loc.K(i, j));
+            else
+              bi -= loc.K(i, j) * xd[dofs[j]];
+          }
+          b[fi] += bi;
+        } else {
+          const double xi = xd[dofs[i]];
+          c -= loc.b[i] * xi;
+          for (int j = 0; j < 12; ++j)
+            if (space_.free_index(dofs[j]) < 0) c += 0.5 * loc.K(i, j) * xi * xd[dofs[j]];
+        }
+      }
+    }
+  }
+  // Contact term C3 ⟨u·n − g, σ_nn⟩ on each contact edge: σ_nn = S_n/|e| is constant, u·n and
+  // g are linear along the edge, so the term is C3 S_n ((u·n)_p + (u·n)_q − g_p − g_q) / 2.
+  const double c3 = data_.weights.c3;
+  auto& trip0 = triplets[0];
+  Vector& b0 = bs[0];
+  for (int e = 0; e < mesh.num_edges(); ++e) {
+    if (!space_.is_contact_edge(e) || c3 == 0.0) continue;
+    const int sn = space_.free_index(space_.sigma_dof(e, 0));
+    const Point ne = mesh.edge_normal(e);
+    double gbar = 0.0;
+    for (int v : mesh.edge(e)) {
+      gbar += 0.5 * vertex_gap_[v];
+      std::array<std::pair<int, double>, 2> terms;
+      if (space_.is_contact_vertex(v))
+        terms = {{{space_.u_dof(v, 0), 0.5 * c3}, {space_.u_dof(v, 1), 0.0}}};
+      else
+        terms = {
+            {{space_.u_dof(v, 0), 0.5 * c3 * ne.x()}, {space_.u_dof(v, 1), 0.5 * c3 * ne.y()}}};
+      for (auto [dof, val] : terms) {
+        if (val == 0.0) continue;
+        const int fj = space_.free_index(dof);
+        if (fj >= 0) {
+          trip0.emplace_back(sn, fj, val);
+          trip0.emplace_back(fj, sn, val);
+        } else {
+          b0[sn] -= val * xd[dof];
+        }
+      }
+    }
+    b0[sn] += c3 * gbar;
+  }
+
+  out.qp.A.resize(n_free, n_free);
+  for (int t = 0; t < threads; ++t) {
+    SparseMatrix part(n_free, n_free);
+    part.setFromTriplets(triplets[t].begin(), triplets[t].end());
+    std::vector<Eigen::Triplet<double>>().swap(triplets[t]);
+    if (t == 0)
+      out.qp.A = std::move(part);
+    else
+      out.qp.A += part;
+  }
+  out.qp.A.makeCompressed();
+  out.qp.b = Vector::Zero(n_free);
+  for (const auto& b : bs) out.qp.b += b;
+  out.qp.constant = 0.0;
+  for (double c : cs) out.qp.constant += c;
+
+  out.qp.lower = Vector::Constant(n_free, -kNoBound);
+  out.qp.upper = Vector::Constant(n_free, kNoBound);
+  for (int f = 0; f < n_free; ++f) {
+    const int d = space_.free_to_full()[f];
+    if (space_.role(d) == DofRole::kNormalU) out.qp.upper[f] = vertex_gap_[d / 2];
+    if (space_.role(d) == DofRole::kNormalS) out.qp.upper[f] = 0.0;
+  }
+  out.fixed_values = std::move(xd);
+  return out;
+}
+
+Vector FoslsAssembler::full_vector(const AssembledProblem& p, const Vector& x_free) const {
+  Vector x = p.fixed_values;
+  for (int f = 0; f < space_.num_free(); ++f) x[space_.free_to_full()[f]] = x_free[f];
+  return x;
+}
+
+FunctionalParts FoslsAssembler::functional(const Vector& x_full) const {
+  const Mesh& mesh = space_.mesh();
+  const Weights& w = data_.weights;
+  const Vector x_cart = space_.rotation() * x_full;
+  FunctionalParts parts;
+  parts.element.assign(mesh.num_triangles(), 0.0);
+  double mom = 0, con = 0, asym = 0;
+#pragma omp parallel for reduction(+ : mom, con, asym) schedule(static)
+  for (int t = 0; t < mesh.num_triangles(); ++t) {
+    ElementGeometry g(mesh, t);
+    const auto dofs = local_dofs(t);
+    Vec12 xl;
+    for (int i = 0; i < 12; ++i) xl[i] = x_cart[dofs[i]];
+    const double wq = g.area / 3.0;
+    const Eigen::Vector2d div = divergence_operator(g) * xl;
+    double m = 0, c = 0, a = 0;
+    for (int q = 0; q < 3; ++q) {
+      const PointOperators op = point_operators(g, g.edge_midpoint(q), kappa_);
+      Eigen::Vector2d f(body_force_[t][2 * q], body_force_[t][2 * q + 1]);
+      m += w.c1 * wq * (div + f).squaredNorm();
+      c += w.c2 * wq * (op.constitutive * xl).squaredNorm();
+      a += w.c4 * wq * std::pow(op.asymmetry.dot(xl), 2);
+    }
+    parts.element[t] = m + c + a;
+    mom += m, con += c, asym += a;
+  }
+  parts.momentum = mom, parts.constitutive = con, parts.asymmetry = asym;
+  for (int e = 0; e < mesh.num_edges(); ++e) {
+    if (!space_.is_contact_edge(e)) continue;
+    const Point ne = mesh.edge_normal(e);
+    double un = 0.0, gbar = 0.0;
+    for (int v : mesh.edge(e)) {
+      un += 0.5 * (space_.is_contact_vertex(v)
+                       ? x_full[space_.u_dof(v, 0)]
+                       : ne.x() * x_full[space_.u_dof(v, 0)] + ne.y() * x_full[space_.u_dof(v, 1)]);
+      gbar += 0.5 * vertex_gap_[v];
+    }
+    const double term = w.c3 * x_full[space_.sigma_dof(e, 0)] * (un - gbar);
+    parts.contact += term;
+    parts.element[mesh.edge_triangles(e)[0]] += term;
+  }
+  return parts;
+}
+
+}  // namespace fosls

@@ -1,0 +1,71 @@
+#pragma once
+// Assembly of the FOSLS functional (method.md §2–3) into a bound-constrained QP on the free
+// DOFs of a FoslsSpace, and element-wise evaluation of the functional (the error estimator).
+
+#include <Eigen/Core>
+#include <vector>
+
+#include "assembly/problem_data.hpp"
+#include "core/box_qp.hpp"
+#include "fem/fosls_space.hpp"
+
+namespace fosls {
+
+/// The discrete problem of one level.
+struct AssembledProblem {
+  BoxQp qp;             ///< over the free DOFs, rotated contact coordinates, scaled stresses
+  Vector fixed_values;  ///< full vector: values of the fixed DOFs, zero elsewhere
+  /// Stresses are computed in units of μ (σ = stress_scale · σ_scaled) so that the default
+  /// weights are balanced whatever units the user works in.
+  double stress_scale = 1.0;
+  /// Gap g(v) at every vertex of a contact edge along its constraint direction, +inf elsewhere.
+  std::vector<double> vertex_gap;
+};
+
+/// The functional split into its terms; `element` holds the C1 + C2 + C4 terms of each
+/// triangle plus the contact term of its contact edge, if it has one.
+struct FunctionalParts {
+  double momentum = 0.0;      ///< C1 ‖div σ + f‖²
+  double constitutive = 0.0;  ///< C2 ‖Aσ − ε(u)‖²
+  double contact = 0.0;       ///< C3 ⟨u·n − g, σ_nn⟩
+  double asymmetry = 0.0;     ///< C4 ‖as σ‖²
+  std::vector<double> element;
+  double total() const { return momentum + constitutive + contact + asymmetry; }
+};
+
+class FoslsAssembler {
+ public:
+  /// Evaluates the data (not thread-safe functions) once, sequentially.
+  FoslsAssembler(const FoslsSpace& space, const ProblemData& data);
+
+  /// A, b, bounds and constant of J on the free DOFs; O(N), element loop on both cores.
+  AssembledProblem assemble_system() const;
+
+  /// Full (rotated, scaled) DOF vector from the free DOFs of a solution.
+  Vector full_vector(const AssembledProblem& p, const Vector& x_free) const;
+
+  /// The functional and its element-wise split at a full DOF vector.
+  FunctionalParts functional(const Vector& x_full) const;
+
+  const FoslsSpace& space() const { return space_; }
+  const ProblemData& data() const { return data_; }
+
+ private:
+  struct Local;
+  void element_kernel(int t, Local& out) const;
+  void rotate_local(int t, Local& loc) const;
+  std::array<int, 12> local_dofs(int t) const;
+
+  const FoslsSpace& space_;
+  const ProblemData& data_;
+  double mu_ = 1.0;
+  double kappa_ = 0.5;                             ///< λ / (2λ + 2μ), → ½ as λ → ∞
+  std::vector<std::array<double, 6>> body_force_;  ///< scaled f at the 3 quadrature points
+  std::vector<double> vertex_gap_;
+};
+
+/// Constraint directions at contact vertices for groups that constrain along the obstacle
+/// normal (method.md §1); empty when every contact group uses the body normal.
+std::vector<Point> obstacle_vertex_normals(const Mesh& mesh, const ProblemData& data);
+
+}  // namespace fosls

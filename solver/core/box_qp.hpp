@@ -1,0 +1,43 @@
+#pragma once
+// The discrete problem every solver works on (method.md §3):
+//   minimise J(x) = ½ xᵀ A x − bᵀ x + c   subject to   lower ≤ x ≤ upper.
+
+#include <Eigen/Core>
+#include <Eigen/Sparse>
+#include <limits>
+
+namespace fosls {
+
+using SparseMatrix = Eigen::SparseMatrix<double, Eigen::ColMajor, int>;
+using Vector = Eigen::VectorXd;
+
+/// Bounds at or beyond this magnitude mean "no bound". Finite, so that the coarse-obstacle
+/// formulas (2a − b) never produce inf − inf.
+constexpr double kNoBound = 1e300;
+
+inline bool is_bounded_above(double upper) { return upper < 0.5 * kNoBound; }
+inline bool is_bounded_below(double lower) { return lower > -0.5 * kNoBound; }
+
+/// Bound-constrained quadratic program. A is symmetric positive definite and stored in full.
+struct BoxQp {
+  SparseMatrix A;
+  Vector b;
+  Vector lower;
+  Vector upper;
+  double constant = 0.0;
+
+  int size() const { return static_cast<int>(b.size()); }
+  /// J(x).
+  double energy(const Vector& x) const;
+  /// J(x) when the residual r = b − A x is known: ½ xᵀ(b − r) − bᵀx + c, O(n).
+  double energy_from_residual(const Vector& x, const Vector& r) const;
+  /// ‖x − P_K(x − (A x − b))‖₂ from the residual r = b − A x: zero exactly at the solution.
+  double kkt_residual(const Vector& x, const Vector& r) const;
+  /// Whether lower ≤ x ≤ upper holds exactly.
+  bool feasible(const Vector& x) const;
+};
+
+/// y = A x using both cores (A symmetric, column-major: y_i = Σ_j A_ji x_j by columns).
+void symmetric_multiply(const SparseMatrix& A, const Vector& x, Vector& y);
+
+}  // namespace fosls

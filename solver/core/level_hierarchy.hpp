@@ -1,0 +1,39 @@
+#pragma once
+// What the multilevel solvers know about the levels: sizes, transfers, vertex patches and how
+// contact DOFs of neighbouring levels are related. Free DOF numbering, rotated coordinates.
+
+#include <array>
+#include <vector>
+
+#include "core/box_qp.hpp"
+
+namespace fosls {
+
+/// One coarse contact edge E = (a, b) and its fine children (a, m), (m, b), as DOF indices of
+/// the two levels (-1 where the DOF is fixed). Used to carry the defect obstacle to the coarse
+/// level by the non-linear projections of method.md §4.3.
+struct ContactLink {
+  int coarse_un_a = -1, coarse_un_b = -1;  ///< coarse U_n at a and b
+  int fine_un_a = -1, fine_un_mid = -1, fine_un_b = -1;
+  int coarse_sn = -1;                            ///< coarse S_n of E
+  std::array<int, 2> fine_sn = {-1, -1};         ///< fine S_n of the two halves
+  std::array<double, 2> sn_weight = {0.5, 0.5};  ///< P entry fine S_n ← coarse S_n
+};
+
+struct Level {
+  int num_dofs = 0;
+  /// P_j : level j−1 → level j (empty on the coarsest level).
+  SparseMatrix prolongation;
+  /// DOFs of each vertex patch: the vertex's u DOFs and both σ rows on every edge through it.
+  std::vector<std::vector<int>> patches;
+  /// Relation of the contact DOFs of level j−1 to those of level j.
+  std::vector<ContactLink> links;
+};
+
+/// Levels coarsest first; the finest level is the one of the BoxQp.
+struct LevelHierarchy {
+  std::vector<Level> levels;
+  int num_levels() const { return static_cast<int>(levels.size()); }
+};
+
+}  // namespace fosls

@@ -1,0 +1,63 @@
+#pragma once
+// The discrete space X_j = P1(T_j)² × RT0(T_j)² of one level with its boundary roles:
+// DOF numbering, rotated contact coordinates, fixed DOFs and bounded DOFs.
+
+#include <Eigen/Sparse>
+#include <vector>
+
+#include "mesh/mesh.hpp"
+
+namespace fosls {
+
+/// Role of a boundary group in the discrete problem.
+enum class GroupRole { kDirichlet, kNeumann, kContact };
+
+/// How a DOF enters the quadratic program.
+enum class DofRole : unsigned char {
+  kFree,     ///< unconstrained
+  kFixed,    ///< essential: Dirichlet u, Neumann σ flux, tangential σ on contact edges
+  kNormalU,  ///< U_n at a contact vertex: U_n ≤ g
+  kNormalS,  ///< S_n on a contact edge: S_n ≤ 0
+};
+
+/// Full DOF vector layout: u_c at vertex v is 2v + c; σ row i on edge e is 2·nv + 2e + i.
+/// At contact vertices the pair (2v, 2v+1) holds (U_n, U_t) with U_n = n_v·U_v, U_t = t_v·U_v,
+/// t = (−n_y, n_x); on contact edges the pair holds (S_n, S_t) = (Σ n_i S_i, Σ t_i S_i).
+class FoslsSpace {
+ public:
+  /// `roles[g]` is the role of mesh group g. `vertex_normals` gives the constraint direction
+  /// at each contact vertex (ignored elsewhere; empty = the normalised average of the adjacent
+  /// contact edge normals).
+  FoslsSpace(const Mesh& mesh, const std::vector<GroupRole>& roles,
+             const std::vector<Point>& vertex_normals = {});
+
+  const Mesh& mesh() const { return *mesh_; }
+  int num_dofs() const { return 2 * mesh_->num_vertices() + 2 * mesh_->num_edges(); }
+  int u_dof(int v, int c) const { return 2 * v + c; }
+  int sigma_dof(int e, int i) const { return 2 * mesh_->num_vertices() + 2 * e + i; }
+
+  DofRole role(int dof) const { return roles_[dof]; }
+  bool is_contact_vertex(int v) const { return contact_vertex_[v] != 0; }
+  bool is_contact_edge(int e) const { return contact_edge_[e] != 0; }
+  bool is_dirichlet_vertex(int v) const { return dirichlet_vertex_[v] != 0; }
+  /// Constraint direction n_v at a contact vertex.
+  const Point& vertex_normal(int v) const { return vertex_normal_[v]; }
+
+  /// Rotation Q with x_cartesian = Q x_rotated (orthogonal, 2×2 blocks at contact DOFs).
+  const Eigen::SparseMatrix<double>& rotation() const { return rotation_; }
+
+  int num_free() const { return static_cast<int>(free_to_full_.size()); }
+  const std::vector<int>& free_to_full() const { return free_to_full_; }
+  /// Free index of a full DOF, -1 for fixed DOFs.
+  int free_index(int dof) const { return full_to_free_[dof]; }
+
+ private:
+  const Mesh* mesh_;
+  std::vector<DofRole> roles_;
+  std::vector<char> contact_vertex_, contact_edge_, dirichlet_vertex_;
+  std::vector<Point> vertex_normal_;
+  Eigen::SparseMatrix<double> rotation_;
+  std::vector<int> free_to_full_, full_to_free_;
+};
+
+}  // namespace fosls
