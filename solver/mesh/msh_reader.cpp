@@ -6,6 +6,7 @@
 #include <cstdint>
 #include <map>
 #include <optional>
+#include <sstream>
 #include <stdexcept>
 #include <string>
 #include <unordered_map>
@@ -24,6 +25,13 @@ std::string quote(std::string_view s) {
   std::string out(s.substr(0, kMax));
   if (s.size() > kMax) out += "...";
   return "'" + out + "'";
+}
+
+std::string num(double v) {
+  std::ostringstream s;
+  s.precision(6);
+  s << v;
+  return s.str();
 }
 
 bool is_space(char c) { return c == ' ' || c == '\t' || c == '\r' || c == '\v' || c == '\f'; }
@@ -134,7 +142,12 @@ class MshParser {
   }
 
   [[noreturn]] void fail(const std::string& what) const {
-    throw CaseException(kPointer, "line " + std::to_string(line_no_) + ": " + what + ".");
+    // On the last line a malformed record usually means the text was cut off.
+    const bool last = section_ != "$MeshFormat" &&
+                      text_.find_first_not_of(" \t\r\n\v\f", std::min(pos_, text_.size())) ==
+                          std::string_view::npos;
+    throw CaseException(kPointer, "line " + std::to_string(line_no_) + ": " + what +
+                                      (last ? " (the text ends here: it is truncated)." : "."));
   }
   [[noreturn]] void fail_at(int line_no, const std::string& what) const {
     throw CaseException(kPointer, "line " + std::to_string(line_no) + ": " + what + ".");
@@ -381,7 +394,7 @@ class MshParser {
       const Node& node = nodes_.at(tag);
       if (node.z != 0.0)
         fail("the triangle uses node " + std::to_string(tag) + " (line " +
-             std::to_string(node.line_no) + ") with z = " + std::to_string(node.z) +
+             std::to_string(node.line_no) + ") with z = " + num(node.z) +
              "; only planar meshes in z = 0 are supported");
       vertices_.push_back(node.xy);
     }
@@ -457,9 +470,8 @@ class MshParser {
       while (j < edges.size() && edges[j] == edges[i]) ++j;
       if (j - i == 1 && !std::binary_search(covered.begin(), covered.end(), edges[i])) {
         const Point a = vertices_[edges[i] >> 32], b = vertices_[edges[i] & 0xffffffffu];
-        fail_at_end("the boundary edge from (" + std::to_string(a.x()) + ", " +
-                    std::to_string(a.y()) + ") to (" + std::to_string(b.x()) + ", " +
-                    std::to_string(b.y()) +
+        fail_at_end("the boundary edge from (" + num(a.x()) + ", " + num(a.y()) + ") to (" +
+                    num(b.x()) + ", " + num(b.y()) +
                     ") is on no physical curve; put every boundary curve in a physical group "
                     "(Physical Curve) before saving the mesh");
       }
