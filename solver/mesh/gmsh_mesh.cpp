@@ -394,6 +394,7 @@ struct ModelScope {
 /// Options every build relies on; set each time because a .geo script may have changed them.
 void set_common_options() {
   gmsh::option::setNumber("General.Terminal", 0);
+  gmsh::option::setNumber("General.AbortOnError", 2);
   gmsh::option::setNumber("General.NumThreads", 1);
   gmsh::option::setNumber("Mesh.MaxNumThreads1D", 1);
   gmsh::option::setNumber("Mesh.MaxNumThreads2D", 1);
@@ -401,6 +402,33 @@ void set_common_options() {
   gmsh::option::setNumber("Mesh.RecombineAll", 0);
   gmsh::option::setNumber("Mesh.SubdivisionAlgorithm", 0);
   gmsh::option::setNumber("Mesh.RandomSeed", 1);
+}
+
+/// Runs a .geo script. gmsh 4.8 leaves its script parser broken when a parse error is thrown
+/// as an exception (every later file then reads as empty), so errors are only logged while
+/// the script runs and are collected from the log afterwards.
+void run_geo_script(const std::string& path) {
+  struct Restore {
+    ~Restore() {
+      try {
+        gmsh::logger::stop();
+        gmsh::option::setNumber("General.AbortOnError", 2);
+      } catch (...) {
+      }
+    }
+  };
+  gmsh::option::setNumber("General.AbortOnError", 0);
+  gmsh::logger::start();
+  Restore restore;
+  gmsh::open(path);
+  std::vector<std::string> log;
+  gmsh::logger::get(log);
+  std::string errors;
+  int count = 0;
+  for (const auto& line : log)
+    if (line.rfind("Error: ", 0) == 0 && count++ < 3)
+      errors += (errors.empty() ? "" : "; ") + line.substr(7);
+  if (!errors.empty()) throw CaseException(kGeoFilePointer, "the .geo script failed: " + errors);
 }
 
 std::string last_gmsh_error() {
@@ -733,6 +761,7 @@ Mesh mesh_from_geometry(const GeometrySpec& g, const MeshSizeField& size) {
   return guarded(kGeometryPointer, [&] {
     ensure_gmsh_initialized();
     ModelScope scope;
+    set_common_options();
     namespace geo = gmsh::model::geo;
     std::vector<bool> needed(g.points.size(), false);
     for (const auto& cv : g.curves) {
@@ -788,7 +817,8 @@ Mesh mesh_from_geo_file(const std::string& path, double size) {
   return guarded(kGeoFilePointer, [&] {
     ensure_gmsh_initialized();
     ModelScope scope;
-    gmsh::open(path);
+    set_common_options();
+    run_geo_script(path);
     set_common_options();
     gmsh::option::setNumber("Mesh.MeshSizeMax", size);
 
