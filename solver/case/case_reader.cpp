@@ -607,7 +607,7 @@ class CaseReader {
         error(child(pointer, "center"), "the centre coincides with an end point of the arc");
         return std::nullopt;
       }
-      if (std::abs(ra - rb) > 1e-6 * std::max(ra, rb)) {
+      if (std::abs(ra - rb) > 1e-9 * std::max(ra, rb)) {  // as the gmsh mesher checks
         error(child(pointer, "center"),
               "the end points are not equidistant from the centre (distances " + format_number(ra) +
                   " and " + format_number(rb) + "); an arc is part of a circle around the centre");

@@ -70,6 +70,28 @@ TEST(ReadCase, EveryShippedExampleReads) {
   EXPECT_GE(count, 5);
 }
 
+// Every complete case shown in docs/case-format.md reads without errors.
+TEST(ReadCase, CasesInTheDocumentationRead) {
+  std::ifstream in(std::string(FOSLS_SOURCE_DIR) + "/docs/case-format.md");
+  std::stringstream text;
+  text << in.rdbuf();
+  const std::string doc = text.str();
+  int cases = 0;
+  for (std::size_t start = doc.find("```json\n"); start != std::string::npos;
+       start = doc.find("```json\n", start + 1)) {
+    const std::size_t begin = start + 8, end = doc.find("```", begin);
+    ASSERT_NE(end, std::string::npos);
+    const std::string block = doc.substr(begin, end - begin);
+    if (!block.starts_with("{")) continue;  // a fragment such as "geometry": {...}
+    const json j = json::parse(block, nullptr, false);
+    ASSERT_FALSE(j.is_discarded()) << block;
+    ++cases;
+    const auto r = read_case(j);
+    EXPECT_TRUE(r.spec) << j["name"] << "\n" << dump_errors(r.errors);
+  }
+  EXPECT_GE(cases, 2);
+}
+
 TEST(ReadCase, SignoriniSquareExample) {
   const auto r = read_case(load_example("signorini_square"));
   ASSERT_TRUE(r.spec) << dump_errors(r.errors);
