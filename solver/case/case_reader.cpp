@@ -412,7 +412,7 @@ class CaseReader {
         check_fields(j, pointer, "the hertz geometry",
                      {"name", "radius", "contact_fraction", "grading"});
         read_optional_number(j, pointer, "radius", kPositive, p["radius"]);
-        read_optional_number(j, pointer, "contact_fraction", Range{0.0, 1.0, true, false},
+        read_optional_number(j, pointer, "contact_fraction", Range{0.0, 1.0, true, true},
                              p["contact_fraction"]);
         read_optional_number(j, pointer, "grading", Range{1.0, 100.0, false, false}, p["grading"]);
       }

@@ -455,6 +455,10 @@ TEST(ReadCase, MeshSources) {
   EXPECT_TRUE(has_error(read_case(j), "/mesh/builtin", "square, hertz"));
   j["mesh"] = {{"builtin", {{"name", "hertz"}, {"width", 1}}}};
   EXPECT_TRUE(has_error(read_case(j), "/mesh/builtin/width", "unknown field"));
+  j["mesh"] = {{"builtin", {{"name", "hertz"}, {"contact_fraction", 1}, {"grading", 0.5}}}};
+  auto hertz = read_case(j);
+  EXPECT_TRUE(has_error(hertz, "/mesh/builtin/contact_fraction", "in (0, 1)"));
+  EXPECT_TRUE(has_error(hertz, "/mesh/builtin/grading", "in [1, 100]"));
   j["mesh"] = {{"builtin", {{"radius", 1}}}};
   EXPECT_TRUE(has_error(read_case(j), "/mesh/builtin/name", "missing field"));
   j["mesh"] = {{"msh", "  \n"}};
