@@ -822,6 +822,12 @@ Mesh mesh_from_geo_file(const std::string& path, double size) {
     set_common_options();
     gmsh::option::setNumber("Mesh.MeshSizeMax", size);
 
+    gmsh::vectorpair surfaces;
+    gmsh::model::getEntities(surfaces, 2);
+    if (surfaces.empty())
+      throw CaseException(kGeoFilePointer,
+                          "the .geo file defines no surface to mesh; add a "
+                          "Plane Surface bounded by its curves");
     double x0, y0, z0, x1, y1, z1;
     gmsh::model::getBoundingBox(-1, -1, x0, y0, z0, x1, y1, z1);
     const double estimate = (x1 - x0) * (y1 - y0) / (std::sqrt(3.0) / 4 * size * size);

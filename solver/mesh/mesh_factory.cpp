@@ -18,7 +18,7 @@ const std::string kBuiltinPointer = "/mesh/builtin";
 const std::string kSizePointer = "/mesh/size";
 
 /// Copies the known parameters of a built-in geometry into their fields; every unknown or
-/// non-finite parameter is an error.
+/// non-finite parameter is an error at /mesh/builtin/<name> (the case JSON's layout).
 void take_params(const MeshSpec& spec, const std::vector<std::pair<std::string, double*>>& known,
                  std::vector<CaseError>& errors) {
   for (const auto& [name, value] : spec.params) {
@@ -29,10 +29,11 @@ void take_params(const MeshSpec& spec, const std::vector<std::pair<std::string, 
       names += (names.empty() ? "" : ", ") + k;
     }
     if (!field)
-      errors.push_back({kBuiltinPointer, "'" + spec.builtin + "' has no parameter '" + name +
-                                             "' (its parameters: " + names + ")"});
+      errors.push_back({kBuiltinPointer + "/" + name, "'" + spec.builtin + "' has no parameter '" +
+                                                          name + "' (its parameters: " + names +
+                                                          ")"});
     else if (!std::isfinite(value))
-      errors.push_back({kBuiltinPointer, "parameter '" + name + "' must be a finite number"});
+      errors.push_back({kBuiltinPointer + "/" + name, "must be a finite number"});
     else
       *field = value;
   }
@@ -47,8 +48,8 @@ Mesh build_builtin(const MeshSpec& spec) {
     take_params(spec, {{"x0", &p.x0}, {"y0", &p.y0}, {"width", &p.width}, {"height", &p.height}},
                 errors);
     p.size = spec.size;
-    if (!(p.width > 0)) errors.push_back({kBuiltinPointer, "'width' must be positive"});
-    if (!(p.height > 0)) errors.push_back({kBuiltinPointer, "'height' must be positive"});
+    if (!(p.width > 0)) errors.push_back({kBuiltinPointer + "/width", "must be positive"});
+    if (!(p.height > 0)) errors.push_back({kBuiltinPointer + "/height", "must be positive"});
     if (!errors.empty()) throw CaseException(std::move(errors));
     const double triangles = 2 * std::ceil(p.width / p.size) * std::ceil(p.height / p.size);
     if (triangles > kMaxCoarseTriangles)

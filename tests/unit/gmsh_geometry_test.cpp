@@ -292,6 +292,8 @@ TEST_F(GeoFile, ReportsMissingFilesScriptErrorsAndMissingGroups) {
   EXPECT_EQ(pointer_of("/nonexistent/dir/x.geo").rfind("/mesh/geo_file: cannot read", 0), 0u);
   write("Point(1) = {0, 0, 0;\n");
   EXPECT_EQ(pointer_of(path_).rfind("/mesh/geo_file: the .geo script failed", 0), 0u);
+  write("Point(1) = {0, 0, 0};\n");
+  EXPECT_NE(pointer_of(path_).find("no surface"), std::string::npos);
   write("Point(1) = {0, 0, 0};\nLine(1) = {1, 7};\n");
   EXPECT_NE(pointer_of(path_).find("Unknown control point 7"), std::string::npos);
   write(R"(

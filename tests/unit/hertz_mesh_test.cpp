@@ -166,7 +166,7 @@ TEST(MeshFactory, BuildsBuiltinsAndReportsBadParametersWithPointers) {
   EXPECT_EQ(pointer_of(spec), "/mesh/builtin");
   spec.builtin = "square";
   spec.params = {{"radius", 1.0}};
-  EXPECT_EQ(pointer_of(spec), "/mesh/builtin");
+  EXPECT_EQ(pointer_of(spec), "/mesh/builtin/radius");
   spec.params = {};
   spec.size = 1e-5;  // 2·10¹⁰ triangles: refused before any allocation
   EXPECT_EQ(pointer_of(spec), "/mesh/size");
