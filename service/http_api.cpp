@@ -135,6 +135,9 @@ std::string HttpApi::route_template(const std::string& path) {
 
 void HttpApi::install(httplib::Server& server) {
   server.set_payload_max_length(options_.max_body_bytes);
+  // httplib writes headers and body separately; with Nagle's algorithm the body waits for the
+  // client's delayed ACK (~40 ms on Linux) on every keep-alive response.
+  server.set_tcp_nodelay(true);
   server.set_pre_routing_handler(
       [this](const Request& req, Response& res) { return pre_route(req, res); });
   server.set_expect_100_continue_handler(
@@ -236,7 +239,9 @@ int HttpApi::expect_continue(const Request& req, Response& res) {
 }
 
 HandlerResponse HttpApi::on_error(const Request& req, Response& res) {
-  if (!res.body.empty()) return HandlerResponse::Unhandled;  // a handler wrote the problem
+  // Always "Handled": in cpp-httplib 0.11.4 only then does a response written outside routing
+  // (e.g. a refused Expect: 100-continue) get its Content-Length header.
+  if (!res.body.empty()) return HandlerResponse::Handled;  // a handler wrote the problem
   Problem p;
   p.status = res.status;
   if (res.status == 404) {
