@@ -84,6 +84,7 @@ int serve(const ServeOptions& o, const sigset_t& stop_signals) {
   const int http_threads = o.http_threads;
   server.new_task_queue = [http_threads] { return new httplib::ThreadPool(http_threads); };
   server.set_keep_alive_timeout(2);  // idle keep-alive connections delay shutdown this long
+  server.set_keep_alive_max_count(1000);
   api.install(server);
 
   const int port = o.port == 0 ? server.bind_to_any_port(o.host)
