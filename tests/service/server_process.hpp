@@ -30,6 +30,11 @@ class ServerProcess {
     int out[2];
     if (pipe(out) != 0) throw std::runtime_error("pipe failed");
     args.insert(args.begin(), {binary, "--host", "127.0.0.1", "--port", "0"});
+    // Everything the child needs is prepared before fork: only async-signal-safe calls
+    // are allowed between fork and exec in a multithreaded program.
+    std::vector<char*> argv;
+    for (auto& a : args) argv.push_back(a.data());
+    argv.push_back(nullptr);
     const pid_t parent = getpid();
     pid_ = fork();
     if (pid_ < 0) throw std::runtime_error("fork failed");
@@ -41,9 +46,6 @@ class ServerProcess {
       if (log >= 0) dup2(log, STDERR_FILENO);
       close(out[0]);
       close(out[1]);
-      std::vector<char*> argv;
-      for (auto& a : args) argv.push_back(a.data());
-      argv.push_back(nullptr);
       execv(binary.c_str(), argv.data());
       _exit(127);
     }

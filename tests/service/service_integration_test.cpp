@@ -429,6 +429,17 @@ TEST(ServiceIntegration, TwoHundredConcurrentJobs) {
   EXPECT_EQ(log.find("\"status\":5"), std::string::npos);
 }
 
+TEST(ServiceIntegration, SecondServerOnTheSameDatabaseIsRefused) {
+  Service svc(1);
+  EXPECT_THROW(ServerProcess(FOSLS_SERVE_PATH, {"--db", svc.db()}, svc.db() + ".second.log"),
+               std::runtime_error);
+  std::ifstream in(svc.db() + ".second.log");
+  std::stringstream second_log;
+  second_log << in.rdbuf();
+  EXPECT_NE(second_log.str().find("another fosls-serve is using"), std::string::npos);
+  EXPECT_EQ(svc.client().Get("/healthz")->status, 200);  // the first one is unaffected
+}
+
 TEST(ServiceIntegration, IdempotencyKey) {
   Service svc(1);
   const httplib::Headers key = {{"Idempotency-Key", "client-7-request-1"}};
