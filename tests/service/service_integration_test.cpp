@@ -257,7 +257,8 @@ TEST(ServiceIntegration, ErrorPaths) {
   auto res = svc.post(invalid);
   expect_problem(res, 422);
   std::set<std::string> pointers;
-  for (const auto& e : json::parse(res->body)["errors"]) {
+  const json problem = json::parse(res->body);
+  for (const auto& e : problem["errors"]) {
     pointers.insert(e["pointer"].get<std::string>());
     EXPECT_FALSE(e["detail"].get<std::string>().empty());
   }
@@ -271,7 +272,8 @@ TEST(ServiceIntegration, ErrorPaths) {
   auto geo_res = svc.post(geo);
   expect_problem(geo_res, 422);
   bool names_geo_file = false;
-  for (const auto& e : json::parse(geo_res->body)["errors"]) {
+  const json geo_problem = json::parse(geo_res->body);
+  for (const auto& e : geo_problem["errors"]) {
     names_geo_file |= e["pointer"].get<std::string>().rfind("/mesh/geo_file", 0) == 0;
   }
   EXPECT_TRUE(names_geo_file) << geo_res->body;
