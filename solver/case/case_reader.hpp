@@ -19,6 +19,12 @@ struct CaseLimits {
   std::size_t max_expression_length = 1024;
   std::size_t max_geometry_entities = 10000;
   std::size_t max_name_length = 200;
+  /// The whole case JSON text (the CLI's case file; the service may use it as its body limit).
+  std::size_t max_case_bytes = 16u << 20;
+  /// Estimated triangles of the coarse mesh of a builtin or geometry mesh (≈ area / size²):
+  /// keeps a tiny `mesh.size` from building a huge coarse mesh before the DOF limit is checked.
+  long long max_coarse_triangles = 200'000;
+  std::size_t max_path_length = 4096;  ///< mesh.geo_file
 };
 
 struct CaseReadOptions {

@@ -1,6 +1,7 @@
 #pragma once
 // Scalars of the case (numbers or muParser expressions of x, y) as callable functions.
 
+#include <cstddef>
 #include <functional>
 #include <optional>
 #include <string>
@@ -15,8 +16,9 @@ using ScalarFunction = std::function<double(double x, double y)>;
 /// Throws std::invalid_argument with muParser's message when the expression does not parse.
 ScalarFunction compile_scalar(const Scalar& s);
 
-/// The reason an expression is not acceptable (unparsable, unknown variable, not finite at
-/// the origin), or nothing when it is fine.
-std::optional<std::string> check_expression(const std::string& text);
+/// The reason an expression is not acceptable (empty, longer than `max_length` characters,
+/// unparsable, an unknown variable, an assignment, several comma-separated values, or not
+/// finite at one of the sample points (0, 0), (0.5, 0.25), (1, 1)), or nothing when it is fine.
+std::optional<std::string> check_expression(const std::string& text, std::size_t max_length = 1024);
 
 }  // namespace fosls

@@ -1,7 +1,11 @@
 #include "mesh/builtin_meshes.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <stdexcept>
+
+#include "mesh/geometry_spec.hpp"
+#include "mesh/gmsh_mesh.hpp"
 
 namespace fosls {
 
@@ -31,6 +35,36 @@ Mesh make_square(const SquareParams& p) {
     seg.push_back({id(0, j), id(0, j + 1), 3, -1});
   }
   return Mesh(std::move(v), std::move(tris), std::move(seg), {"bottom", "right", "top", "left"});
+}
+
+Mesh make_hertz(const HertzParams& p) {
+  if (!(p.radius > 0) || !std::isfinite(p.radius))
+    throw std::invalid_argument("hertz: radius must be a positive number");
+  if (!(p.contact_fraction > 0 && p.contact_fraction < 1))
+    throw std::invalid_argument("hertz: contact_fraction must lie strictly between 0 and 1");
+  if (!(p.size > 0) || !std::isfinite(p.size))
+    throw std::invalid_argument("hertz: size must be a positive number");
+  if (!(p.grading >= 1) || !std::isfinite(p.grading))
+    throw std::invalid_argument("hertz: grading must be a number of at least 1");
+  const double r = p.radius;
+  const double xc = p.contact_fraction * r;
+  const double yc = r - std::sqrt(r * r - xc * xc);
+  GeometrySpec g;
+  // 0: centre, 1: contact point, 2/5: ends of the contact group, 3/4: corners of the flat side.
+  g.points = {Point(0, r), Point(0, 0), Point(xc, yc), Point(r, r), Point(-r, r), Point(-xc, yc)};
+  g.curves = {{true, {1, 2}, 0},
+              {true, {2, 3}, 0},
+              {false, {3, 4}, -1},
+              {true, {4, 5}, 0},
+              {true, {5, 1}, 0}};
+  g.groups = {{"top", {2}}, {"contact", {0, 4}}, {"free", {1, 3}}};
+  // Edge length grows linearly with the distance from the contact point, from size at the
+  // origin to grading * size at the corners of the flat side (distance √2 R).
+  const double far = std::sqrt(2.0) * r;
+  auto size = [&p, far](const Point& x) {
+    return p.size * (1.0 + (p.grading - 1.0) * std::min(1.0, x.norm() / far));
+  };
+  return mesh_from_geometry(g, size);
 }
 
 }  // namespace fosls

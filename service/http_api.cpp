@@ -1,0 +1,598 @@
+#include "http_api.hpp"
+
+#include <charconv>
+#include <chrono>
+#include <fstream>
+#include <iterator>
+#include <optional>
+#include <sstream>
+
+#include "problem.hpp"
+#include "request_checks.hpp"
+#include "static_files.hpp"
+
+namespace fosls::service {
+
+namespace {
+
+using Clock = std::chrono::steady_clock;
+using HandlerResponse = httplib::Server::HandlerResponse;
+
+// Each request is handled start to finish on one httplib thread, so its start time can live
+// in a thread_local between the pre-routing handler and the logger.
+thread_local std::optional<Clock::time_point> request_start;
+
+constexpr const char* kProblemPrefix = "urn:fosls:problem:";
+
+std::string problem_type(const char* name) { return std::string(kProblemPrefix) + name; }
+
+std::string dump(const nlohmann::json& j) {
+  return j.dump(-1, ' ', false, nlohmann::json::error_handler_t::replace);
+}
+
+/// Splits "/v1/jobs/<id>[/<leaf>]"; nothing for other paths.
+struct JobPath {
+  std::string id;
+  std::string leaf;  ///< "", "result", "solution.vtu", "cancel" or anything else
+};
+
+std::optional<JobPath> split_job_path(const std::string& path) {
+  static const std::string prefix = "/v1/jobs/";
+  if (path.compare(0, prefix.size(), prefix) != 0) return std::nullopt;
+  const std::string rest = path.substr(prefix.size());
+  if (rest.empty()) return std::nullopt;
+  const auto slash = rest.find('/');
+  if (slash == std::string::npos) return JobPath{rest, ""};
+  return JobPath{rest.substr(0, slash), rest.substr(slash + 1)};
+}
+
+/// Methods a path supports, for 405 responses ("" when the path is not an API route).
+std::string allowed_methods(const std::string& path) {
+  if (path == "/v1/jobs") return "GET, POST";
+  if (path == "/healthz" || path == "/metrics") return "GET";
+  if (auto jp = split_job_path(path)) {
+    if (jp->leaf.empty()) return "GET, DELETE";
+    if (jp->leaf == "result" || jp->leaf == "solution.vtu") return "GET";
+    if (jp->leaf == "cancel") return "POST";
+  }
+  return "";
+}
+
+std::string method_label(const std::string& method) {
+  for (const char* known : {"GET", "HEAD", "POST", "PUT", "PATCH", "DELETE", "OPTIONS"}) {
+    if (method == known) return method;
+  }
+  return "other";
+}
+
+Problem bad_length_problem(const std::string& why) {
+  Problem p;
+  p.status = 411;
+  p.type = problem_type("length-required");
+  p.detail = why;
+  return p;
+}
+
+Problem too_large_problem(std::size_t limit) {
+  Problem p;
+  p.status = 413;
+  p.type = problem_type("payload-too-large");
+  p.detail = "the request body is larger than the limit of " + std::to_string(limit) + " bytes";
+  return p;
+}
+
+Problem media_type_problem(const std::string& got) {
+  Problem p;
+  p.status = 415;
+  p.type = problem_type("unsupported-media-type");
+  p.detail = "send the case with 'Content-Type: application/json' (got '" +
+             (got.empty() ? std::string("none") : got) + "')";
+  return p;
+}
+
+/// nlohmann's message for unparsable text (where and why); only called on the error path.
+std::string parse_error_message(const std::string& text) {
+  try {
+    [[maybe_unused]] const auto j = nlohmann::json::parse(text);
+  } catch (const nlohmann::json::parse_error& e) {
+    return e.what();
+  }
+  return "unknown parse error";
+}
+
+Problem invalid_parameter(const std::string& name, const std::string& detail) {
+  Problem p;
+  p.status = 400;
+  p.type = problem_type("invalid-parameter");
+  p.detail = "query parameter '" + name + "': " + detail;
+  p.extra["errors"] = nlohmann::json::array({{{"parameter", name}, {"detail", detail}}});
+  return p;
+}
+
+}  // namespace
+
+HttpApi::HttpApi(JobStore& store, WorkerPool& workers, CaseValidator validator, Metrics& metrics,
+                 EventLog& log, HttpApiOptions options)
+    : store_(store),
+      workers_(workers),
+      validator_(std::move(validator)),
+      metrics_(metrics),
+      log_(log),
+      options_(std::move(options)) {}
+
+std::string HttpApi::route_template(const std::string& path) {
+  if (path == "/v1/jobs" || path == "/healthz" || path == "/metrics") return path;
+  if (auto jp = split_job_path(path)) {
+    if (jp->leaf.empty()) return "/v1/jobs/{id}";
+    if (jp->leaf == "result" || jp->leaf == "solution.vtu" || jp->leaf == "cancel") {
+      return "/v1/jobs/{id}/" + jp->leaf;
+    }
+    return "unknown";
+  }
+  if (path.compare(0, 4, "/v1/") == 0) return "unknown";
+  return "static";
+}
+
+void HttpApi::install(httplib::Server& server) {
+  server.set_payload_max_length(options_.max_body_bytes);
+  // httplib writes headers and body separately; with Nagle's algorithm the body waits for the
+  // client's delayed ACK (~40 ms on Linux) on every keep-alive response.
+  server.set_tcp_nodelay(true);
+  server.set_pre_routing_handler(
+      [this](const Request& req, Response& res) { return pre_route(req, res); });
+  server.set_expect_100_continue_handler(
+      [this](const Request& req, Response& res) { return expect_continue(req, res); });
+  server.set_error_handler(httplib::Server::HandlerWithResponse(
+      [this](const Request& req, Response& res) { return on_error(req, res); }));
+  server.set_exception_handler([this](const Request& req, Response& res, std::exception_ptr e) {
+    on_exception(req, res, e);
+  });
+  server.set_logger([this](const Request& req, const Response& res) { on_logged(req, res); });
+
+  auto with_id = [this](void (HttpApi::*handler)(const Request&, Response&, std::int64_t)) {
+    return [this, handler](const Request& req, Response& res) {
+      const std::string text = req.matches[1];
+      if (auto id = parse_job_id(text)) {
+        (this->*handler)(req, res, *id);
+      } else {
+        Problem p;
+        p.status = 404;
+        p.detail = "there is no job '" + text + "' (job ids are positive integers)";
+        send_problem(req, res, p);
+      }
+    };
+  };
+  server.Post("/v1/jobs", [this](const Request& req, Response& res) { post_job(req, res); });
+  server.Get("/v1/jobs", [this](const Request& req, Response& res) { list_jobs(req, res); });
+  server.Get("/v1/jobs/([^/]+)", with_id(&HttpApi::get_job));
+  server.Get("/v1/jobs/([^/]+)/result", with_id(&HttpApi::get_result));
+  server.Get("/v1/jobs/([^/]+)/solution\\.vtu", with_id(&HttpApi::get_solution));
+  server.Post("/v1/jobs/([^/]+)/cancel", with_id(&HttpApi::cancel_job));
+  server.Delete("/v1/jobs/([^/]+)", with_id(&HttpApi::delete_job));
+  server.Get("/healthz", [this](const Request& req, Response& res) { healthz(req, res); });
+  server.Get("/metrics", [this](const Request& req, Response& res) { metrics(req, res); });
+  // Last, so API routes win: everything else under / comes from --web-root.
+  server.Get("/.*", [this](const Request& req, Response& res) { static_file(req, res); });
+}
+
+HandlerResponse HttpApi::pre_route(const Request& req, Response& res) {
+  request_start = Clock::now();
+  // cpp-httplib 0.11.4 reads chunked bodies without applying the payload limit.
+  if (req.has_header("Transfer-Encoding")) {
+    res.set_header("Connection", "close");
+    send_problem(req, res,
+                 bad_length_problem(is_chunked(req.get_header_value("Transfer-Encoding"))
+                                        ? "chunked request bodies are not accepted; send the "
+                                          "body with a Content-Length header"
+                                        : "Transfer-Encoding is not supported; send the body "
+                                          "with a Content-Length header"));
+    return HandlerResponse::Handled;
+  }
+  const bool body_method = req.method == "POST" || req.method == "PUT" || req.method == "PATCH" ||
+                           req.method == "DELETE";
+  if (!body_method || req.has_header("Content-Length")) return HandlerResponse::Unhandled;
+
+  // Without Content-Length cpp-httplib would read the body until the client closes the
+  // connection. Routes that take no body are served here without reading anything.
+  if (auto jp = split_job_path(req.path)) {
+    if (auto id = parse_job_id(jp->id)) {
+      if (req.method == "POST" && jp->leaf == "cancel") {
+        cancel_job(req, res, *id);
+        return HandlerResponse::Handled;
+      }
+      if (req.method == "DELETE" && jp->leaf.empty()) {
+        delete_job(req, res, *id);
+        return HandlerResponse::Handled;
+      }
+    }
+  }
+  if (req.path == "/v1/jobs" && req.method == "POST") {
+    send_problem(req, res, bad_length_problem("send the case with a Content-Length header"));
+    return HandlerResponse::Handled;
+  }
+  res.status = 404;  // on_error fills in the problem (or turns it into 405)
+  return HandlerResponse::Handled;
+}
+
+int HttpApi::expect_continue(const Request& req, Response& res) {
+  request_start = Clock::now();
+  // Refuse before the client sends a body that would be discarded anyway.
+  if (req.method == "POST" && req.path == "/v1/jobs") {
+    if (req.has_header("Transfer-Encoding")) {
+      send_problem(req, res, bad_length_problem("send the body with a Content-Length header"));
+      return res.status;
+    }
+    const std::string length = req.get_header_value("Content-Length");
+    std::size_t n = 0;
+    auto [end, ec] = std::from_chars(length.data(), length.data() + length.size(), n);
+    if (ec == std::errc::result_out_of_range ||
+        (ec == std::errc() && n > options_.max_body_bytes)) {
+      send_problem(req, res, too_large_problem(options_.max_body_bytes));
+      return res.status;
+    }
+    if (!is_json_media_type(req.get_header_value("Content-Type"))) {
+      send_problem(req, res, media_type_problem(req.get_header_value("Content-Type")));
+      return res.status;
+    }
+  }
+  return 100;
+}
+
+HandlerResponse HttpApi::on_error(const Request& req, Response& res) {
+  // Always "Handled": in cpp-httplib 0.11.4 only then does a response written outside routing
+  // (e.g. a refused Expect: 100-continue) get its Content-Length header.
+  if (!res.body.empty()) return HandlerResponse::Handled;  // a handler wrote the problem
+  Problem p;
+  p.status = res.status;
+  if (res.status == 404) {
+    const std::string allowed = allowed_methods(req.path);
+    if (!allowed.empty()) {
+      p.status = 405;
+      p.detail = req.method + " is not supported on " + req.path + " (allowed: " + allowed + ")";
+      res.set_header("Allow", allowed);
+    } else {
+      p.detail = "there is nothing at " + req.path;
+    }
+  } else if (res.status == 413) {
+    p = too_large_problem(options_.max_body_bytes);
+  } else if (res.status == 400) {
+    p.detail = "the HTTP request is malformed or its body could not be read";
+  } else if (res.status == 414) {
+    p.detail = "the request URI is too long";
+  }
+  send_problem(req, res, p);
+  return HandlerResponse::Handled;
+}
+
+void HttpApi::on_exception(const Request& req, Response& res, std::exception_ptr error) {
+  Problem p;
+  try {
+    std::rethrow_exception(error);
+  } catch (const StoreError& e) {
+    p.status = 503;
+    p.type = problem_type("store-unavailable");
+    p.detail = "the job store is busy or unavailable; retry later";
+    res.set_header("Retry-After", std::to_string(options_.retry_after_seconds));
+    log_.write("store_error", {{"path", req.path}, {"error", e.what()}});
+  } catch (const std::exception& e) {
+    p.status = 500;
+    p.detail = "internal error; the request was not completed";
+    log_.write("internal_error", {{"path", req.path}, {"error", e.what()}});
+  } catch (...) {
+    p.status = 500;
+    p.detail = "internal error; the request was not completed";
+    log_.write("internal_error", {{"path", req.path}, {"error", "unknown exception"}});
+  }
+  send_problem(req, res, p);
+}
+
+void HttpApi::on_logged(const Request& req, const Response& res) {
+  std::optional<double> seconds;
+  if (request_start) {
+    seconds = std::chrono::duration<double>(Clock::now() - *request_start).count();
+    request_start.reset();
+  }
+  metrics_.record_http(method_label(req.method), route_template(req.path), res.status,
+                       seconds.value_or(0.0));
+  log_.write("http_request",
+             {{"method", req.method},
+              {"path", req.path},
+              {"status", res.status},
+              {"duration_ms", seconds ? nlohmann::json(*seconds * 1e3) : nlohmann::json(nullptr)},
+              {"remote", req.remote_addr}});
+}
+
+void HttpApi::not_found(const Request& req, Response& res, std::int64_t id) {
+  Problem p;
+  p.status = 404;
+  p.type = problem_type("job-not-found");
+  p.detail = "there is no job " + std::to_string(id) + " (it may have been deleted)";
+  send_problem(req, res, p);
+}
+
+void HttpApi::send_job(Response& res, int status, const Job& job) {
+  res.status = status;
+  res.set_content(dump(job_to_json(job)), "application/json");
+}
+
+void HttpApi::post_job(const Request& req, Response& res) {
+  const std::string content_type = req.get_header_value("Content-Type");
+  if (!is_json_media_type(content_type)) {
+    send_problem(req, res, media_type_problem(content_type));
+    return;
+  }
+  if (json_nesting_depth(req.body, options_.max_json_depth) > options_.max_json_depth) {
+    Problem p;
+    p.status = 400;
+    p.type = problem_type("unparsable-json");
+    p.detail =
+        "the JSON is nested deeper than " + std::to_string(options_.max_json_depth) + " levels";
+    send_problem(req, res, p);
+    return;
+  }
+  nlohmann::json case_json = nlohmann::json::parse(req.body, nullptr, false);
+  if (case_json.is_discarded()) {
+    Problem p;
+    p.status = 400;
+    p.type = problem_type("unparsable-json");
+    p.detail = "the body is not valid JSON";
+    p.detail += ": " + parse_error_message(req.body);
+    send_problem(req, res, p);
+    return;
+  }
+  std::optional<std::string> key;
+  if (req.has_header("Idempotency-Key")) {
+    key = req.get_header_value("Idempotency-Key");
+    if (!is_valid_idempotency_key(*key)) {
+      Problem p;
+      p.status = 400;
+      p.type = problem_type("invalid-idempotency-key");
+      p.detail = "Idempotency-Key must be 1 to 255 visible ASCII characters";
+      send_problem(req, res, p);
+      return;
+    }
+  }
+  std::vector<CaseError> errors = validator_(case_json);
+  if (!errors.empty()) {
+    Problem p;
+    p.status = 422;
+    p.type = problem_type("invalid-case");
+    p.title = "The case is not valid";
+    p.detail = std::to_string(errors.size()) + (errors.size() == 1 ? " problem" : " problems") +
+               " in the case; each entry of errors names the field (JSON pointer) and the fix";
+    p.errors = std::move(errors);
+    send_problem(req, res, p);
+    return;
+  }
+
+  NewJob job;
+  if (case_json.contains("name") && case_json["name"].is_string()) {
+    job.name = case_json["name"].get<std::string>();
+  } else {
+    job.name = "case";
+  }
+  job.case_json = dump(case_json);  // canonical: keys sorted, no whitespace
+  job.body_hash = sha256_hex(job.case_json);
+  job.idempotency_key = key;
+  SubmitOutcome outcome = store_.submit(job, options_.max_queue);
+  switch (outcome.kind) {
+    case SubmitOutcome::Kind::kCreated:
+      res.set_header("Location", "/v1/jobs/" + std::to_string(outcome.job->id));
+      send_job(res, 202, *outcome.job);
+      log_.write("job_transition", {{"job_id", outcome.job->id},
+                                    {"from", nullptr},
+                                    {"to", "queued"},
+                                    {"name", outcome.job->name}});
+      workers_.notify_job_available();
+      return;
+    case SubmitOutcome::Kind::kReplayed:
+      res.set_header("Location", "/v1/jobs/" + std::to_string(outcome.job->id));
+      send_job(res, 200, *outcome.job);
+      return;
+    case SubmitOutcome::Kind::kKeyConflict: {
+      Problem p;
+      p.status = 422;
+      p.type = problem_type("idempotency-key-reused");
+      p.detail = "this Idempotency-Key was already used for job " +
+                 std::to_string(outcome.job->id) +
+                 " with a different body; use a new key for a new case";
+      p.extra["job"] = "/v1/jobs/" + std::to_string(outcome.job->id);
+      send_problem(req, res, p);
+      return;
+    }
+    case SubmitOutcome::Kind::kQueueFull: {
+      Problem p;
+      p.status = 503;
+      p.type = problem_type("queue-full");
+      p.detail = "the queue already holds " + std::to_string(options_.max_queue) +
+                 " waiting jobs; retry later";
+      res.set_header("Retry-After", std::to_string(options_.retry_after_seconds));
+      send_problem(req, res, p);
+      return;
+    }
+  }
+}
+
+void HttpApi::list_jobs(const Request& req, Response& res) {
+  JobListQuery query;
+  if (req.has_param("state")) {
+    const std::string state = req.get_param_value("state");
+    query.state = parse_job_state(state);
+    if (!query.state) {
+      send_problem(
+          req, res,
+          invalid_parameter("state", "'" + state +
+                                         "' is not a state; use queued, running, succeeded, "
+                                         "failed or cancelled"));
+      return;
+    }
+  }
+  if (req.has_param("page_size")) {
+    const std::string text = req.get_param_value("page_size");
+    int n = 0;
+    auto [end, ec] = std::from_chars(text.data(), text.data() + text.size(), n);
+    if (ec != std::errc() || end != text.data() + text.size() || n < 1 || n > 100) {
+      send_problem(req, res, invalid_parameter("page_size", "must be an integer from 1 to 100"));
+      return;
+    }
+    query.page_size = n;
+  }
+  if (req.has_param("page_token") && !req.get_param_value("page_token").empty()) {
+    query.before_id = parse_job_id(req.get_param_value("page_token"));
+    if (!query.before_id) {
+      send_problem(
+          req, res,
+          invalid_parameter("page_token", "not a token from next_page_token of an earlier page"));
+      return;
+    }
+  }
+  JobPage page = store_.list(query);
+  nlohmann::json jobs = nlohmann::json::array();
+  for (const Job& job : page.jobs) jobs.push_back(job_to_json(job));
+  nlohmann::json body = {{"jobs", std::move(jobs)}};
+  body["next_page_token"] = page.next_before_id
+                                ? nlohmann::json(std::to_string(*page.next_before_id))
+                                : nlohmann::json(nullptr);
+  res.set_content(dump(body), "application/json");
+}
+
+void HttpApi::get_job(const Request& req, Response& res, std::int64_t id) {
+  auto job = store_.find(id);
+  if (!job) return not_found(req, res, id);
+  send_job(res, 200, *job);
+}
+
+namespace {
+/// 409 for a job whose result cannot be fetched (yet or ever).
+Problem not_succeeded_problem(const Job& job) {
+  Problem p;
+  p.status = 409;
+  p.extra["state"] = std::string(to_string(job.state));
+  const std::string which = "job " + std::to_string(job.id);
+  switch (job.state) {
+    case JobState::kQueued:
+    case JobState::kRunning:
+      p.type = problem_type("job-not-finished");
+      p.detail = which + " is " + std::string(to_string(job.state)) + "; poll /v1/jobs/" +
+                 std::to_string(job.id) + " until its state is succeeded";
+      break;
+    case JobState::kFailed:
+      p.type = problem_type("job-failed");
+      p.detail = which + " failed: " + job.error;
+      break;
+    case JobState::kCancelled:
+      p.type = problem_type("job-cancelled");
+      p.detail = which + " was cancelled; it has no result";
+      break;
+    case JobState::kSucceeded:
+      p.status = 500;
+      p.detail = which + " succeeded but its result is missing";
+      break;
+  }
+  return p;
+}
+}  // namespace
+
+void HttpApi::get_result(const Request& req, Response& res, std::int64_t id) {
+  auto job = store_.find(id);
+  if (!job) return not_found(req, res, id);
+  if (job->state == JobState::kSucceeded) {
+    if (auto text = store_.result_json(id)) {
+      res.set_content(*text, "application/json");
+      return;
+    }
+  }
+  send_problem(req, res, not_succeeded_problem(*job));
+}
+
+void HttpApi::get_solution(const Request& req, Response& res, std::int64_t id) {
+  auto job = store_.find(id);
+  if (!job) return not_found(req, res, id);
+  if (job->state == JobState::kSucceeded) {
+    if (auto text = store_.vtu(id)) {
+      res.set_header("Content-Disposition",
+                     "attachment; filename=\"job-" + std::to_string(id) + ".vtu\"");
+      res.set_content(*text, "application/xml");
+      return;
+    }
+  }
+  send_problem(req, res, not_succeeded_problem(*job));
+}
+
+void HttpApi::cancel_job(const Request& req, Response& res, std::int64_t id) {
+  CancelOutcome outcome = store_.cancel(id);
+  switch (outcome.kind) {
+    case CancelOutcome::Kind::kNotFound:
+      return not_found(req, res, id);
+    case CancelOutcome::Kind::kCancelled:
+      log_.write("job_transition", {{"job_id", id}, {"from", "queued"}, {"to", "cancelled"}});
+      return send_job(res, 200, *outcome.job);
+    case CancelOutcome::Kind::kRequested:
+      workers_.request_cancel(id);
+      log_.write("job_cancel_requested", {{"job_id", id}});
+      return send_job(res, 202, *outcome.job);
+    case CancelOutcome::Kind::kAlreadyFinished: {
+      Problem p;
+      p.status = 409;
+      p.type = problem_type("job-finished");
+      p.detail = "job " + std::to_string(id) + " is already " +
+                 std::string(to_string(outcome.job->state)) + "; there is nothing to cancel";
+      p.extra["state"] = std::string(to_string(outcome.job->state));
+      return send_problem(req, res, p);
+    }
+  }
+}
+
+void HttpApi::delete_job(const Request& req, Response& res, std::int64_t id) {
+  switch (store_.remove(id)) {
+    case DeleteOutcome::kNotFound:
+      return not_found(req, res, id);
+    case DeleteOutcome::kDeleted:
+      log_.write("job_deleted", {{"job_id", id}});
+      res.status = 204;
+      return;
+    case DeleteOutcome::kNotFinished: {
+      Problem p;
+      p.status = 409;
+      p.type = problem_type("job-not-finished");
+      p.detail = "job " + std::to_string(id) +
+                 " is still queued or running; cancel it first, then delete it";
+      return send_problem(req, res, p);
+    }
+  }
+}
+
+void HttpApi::healthz(const Request& req, Response& res) {
+  store_.ping();  // throws StoreError → 503 through on_exception
+  res.set_content(dump({{"status", "ok"}, {"workers", workers_.size()}, {"busy", workers_.busy()}}),
+                  "application/json");
+}
+
+void HttpApi::metrics(const Request& req, Response& res) {
+  MetricsSnapshot snapshot;
+  snapshot.jobs_by_state = store_.count_by_state();
+  snapshot.workers = workers_.size();
+  snapshot.busy_workers = workers_.busy();
+  res.set_content(metrics_.render(snapshot), "text/plain; version=0.0.4; charset=utf-8");
+}
+
+void HttpApi::static_file(const Request& req, Response& res) {
+  std::optional<std::filesystem::path> file;
+  if (!options_.web_root.empty()) file = resolve_static_file(options_.web_root, req.path);
+  std::string content;
+  if (file) {
+    std::ifstream in(*file, std::ios::binary);
+    if (in) content.assign(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
+    if (!in || in.bad()) file.reset();
+  }
+  if (!file) {
+    Problem p;
+    p.status = 404;
+    p.detail = "there is nothing at " + req.path;
+    return send_problem(req, res, p);
+  }
+  res.set_header("Cache-Control", "no-cache");
+  res.set_content(content, std::string(content_type_for(*file)));
+}
+
+}  // namespace fosls::service

@@ -1,0 +1,82 @@
+#pragma once
+// The REST API of the job service (architecture.md, "HTTP API") on a cpp-httplib server:
+// routes, body limits, problem+json errors, request logging and metrics.
+
+#include <httplib.h>
+
+#include <cstddef>
+#include <exception>
+#include <filesystem>
+#include <functional>
+#include <nlohmann/json.hpp>
+#include <string>
+#include <vector>
+
+#include "case/case_error.hpp"
+#include "event_log.hpp"
+#include "job_store.hpp"
+#include "metrics.hpp"
+#include "worker_pool.hpp"
+
+namespace fosls::service {
+
+/// Checks a parsed case before it is queued; every problem with its JSON pointer.
+using CaseValidator = std::function<std::vector<CaseError>(const nlohmann::json& case_json)>;
+
+struct HttpApiOptions {
+  std::size_t max_body_bytes = 8u << 20;  ///< larger POST bodies get 413
+  std::size_t max_queue = 1000;           ///< queued jobs beyond which POST gets 503
+  std::filesystem::path web_root;         ///< served at / (empty: no static files)
+  int retry_after_seconds = 5;            ///< Retry-After of 503 responses
+  int max_json_depth = 64;                ///< deeper nesting is refused before parsing
+};
+
+/// Installs the API on an httplib::Server. Handlers only touch the store and wake workers;
+/// they never solve.
+class HttpApi {
+ public:
+  /// All references must outlive the server the API is installed on.
+  HttpApi(JobStore& store, WorkerPool& workers, CaseValidator validator, Metrics& metrics,
+          EventLog& log, HttpApiOptions options);
+
+  /// Registers routes and handlers, and sets the payload limit on `server`.
+  void install(httplib::Server& server);
+
+  /// The route template of a path for metrics labels ("/v1/jobs/{id}/result", "static").
+  static std::string route_template(const std::string& path);
+
+ private:
+  using Request = httplib::Request;
+  using Response = httplib::Response;
+
+  void post_job(const Request& req, Response& res);
+  void list_jobs(const Request& req, Response& res);
+  void get_job(const Request& req, Response& res, std::int64_t id);
+  void get_result(const Request& req, Response& res, std::int64_t id);
+  void get_solution(const Request& req, Response& res, std::int64_t id);
+  void cancel_job(const Request& req, Response& res, std::int64_t id);
+  void delete_job(const Request& req, Response& res, std::int64_t id);
+  void healthz(const Request& req, Response& res);
+  void metrics(const Request& req, Response& res);
+  void static_file(const Request& req, Response& res);
+
+  httplib::Server::HandlerResponse pre_route(const Request& req, Response& res);
+  int expect_continue(const Request& req, Response& res);
+  httplib::Server::HandlerResponse on_error(const Request& req, Response& res);
+  void on_exception(const Request& req, Response& res, std::exception_ptr error);
+  void on_logged(const Request& req, const Response& res);
+
+  /// 404 problem for an unknown job id.
+  void not_found(const Request& req, Response& res, std::int64_t id);
+  /// Sends a job JSON with `status`.
+  void send_job(Response& res, int status, const Job& job);
+
+  JobStore& store_;
+  WorkerPool& workers_;
+  CaseValidator validator_;
+  Metrics& metrics_;
+  EventLog& log_;
+  HttpApiOptions options_;
+};
+
+}  // namespace fosls::service

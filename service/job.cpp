@@ -1,0 +1,97 @@
+#include "job.hpp"
+
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <ctime>
+
+namespace fosls::service {
+
+std::string_view to_string(JobState state) {
+  switch (state) {
+    case JobState::kQueued:
+      return "queued";
+    case JobState::kRunning:
+      return "running";
+    case JobState::kSucceeded:
+      return "succeeded";
+    case JobState::kFailed:
+      return "failed";
+    case JobState::kCancelled:
+      return "cancelled";
+  }
+  return "unknown";
+}
+
+std::optional<JobState> parse_job_state(std::string_view text) {
+  for (JobState s : kAllJobStates) {
+    if (to_string(s) == text) return s;
+  }
+  return std::nullopt;
+}
+
+bool is_finished(JobState state) {
+  return state == JobState::kSucceeded || state == JobState::kFailed ||
+         state == JobState::kCancelled;
+}
+
+namespace {
+nlohmann::json optional_time(const std::optional<std::int64_t>& ms) {
+  return ms ? nlohmann::json(format_rfc3339(*ms)) : nlohmann::json(nullptr);
+}
+
+// JSON has no NaN or infinity; a diverging solve reports them, so they become null.
+nlohmann::json finite_or_null(double v) {
+  return std::isfinite(v) ? nlohmann::json(v) : nlohmann::json(nullptr);
+}
+}  // namespace
+
+nlohmann::json job_to_json(const Job& job) {
+  const std::string self = "/v1/jobs/" + std::to_string(job.id);
+  nlohmann::json j = {
+      {"id", job.id},
+      {"name", job.name},
+      {"state", to_string(job.state)},
+      {"created_at", format_rfc3339(job.created_at_ms)},
+      {"started_at", optional_time(job.started_at_ms)},
+      {"finished_at", optional_time(job.finished_at_ms)},
+      {"attempts", job.attempts},
+      {"cancel_requested", job.cancel_requested},
+      {"error", job.error.empty() ? nlohmann::json(nullptr) : nlohmann::json(job.error)},
+      {"links",
+       {{"self", self},
+        {"result", self + "/result"},
+        {"solution", self + "/solution.vtu"},
+        {"cancel", self + "/cancel"}}},
+  };
+  if (job.progress) {
+    j["progress"] = {{"iteration", job.progress->iteration},
+                     {"kkt_residual", finite_or_null(job.progress->kkt_residual)},
+                     {"energy", finite_or_null(job.progress->energy)}};
+  } else {
+    j["progress"] = nullptr;
+  }
+  return j;
+}
+
+std::int64_t now_unix_ms() {
+  using namespace std::chrono;
+  return duration_cast<milliseconds>(system_clock::now().time_since_epoch()).count();
+}
+
+std::string format_rfc3339(std::int64_t unix_ms) {
+  std::time_t seconds = static_cast<std::time_t>(unix_ms / 1000);
+  int millis = static_cast<int>(unix_ms % 1000);
+  if (millis < 0) {
+    millis += 1000;
+    seconds -= 1;
+  }
+  std::tm tm{};
+  gmtime_r(&seconds, &tm);
+  char buf[64];
+  std::snprintf(buf, sizeof buf, "%04d-%02d-%02dT%02d:%02d:%02d.%03dZ", tm.tm_year + 1900,
+                tm.tm_mon + 1, tm.tm_mday, tm.tm_hour, tm.tm_min, tm.tm_sec, millis);
+  return buf;
+}
+
+}  // namespace fosls::service

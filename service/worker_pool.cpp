@@ -1,0 +1,201 @@
+#include "worker_pool.hpp"
+
+#include <exception>
+#include <string>
+
+namespace fosls::service {
+
+WorkerPool::WorkerPool(JobStore& store, JobRunner runner, EventLog& log, Metrics& metrics,
+                       WorkerPoolOptions options)
+    : store_(store), runner_(std::move(runner)), log_(log), metrics_(metrics), options_(options) {
+  if (options_.workers < 1) options_.workers = 1;
+}
+
+WorkerPool::~WorkerPool() {
+  begin_shutdown();
+  join();
+}
+
+void WorkerPool::start() {
+  std::lock_guard lock(mutex_);
+  if (!threads_.empty() || stopping_) return;
+  for (int i = 0; i < options_.workers; ++i) threads_.emplace_back([this, i] { run_worker(i); });
+}
+
+void WorkerPool::notify_job_available() {
+  {
+    std::lock_guard lock(mutex_);
+    ++generation_;
+  }
+  wake_.notify_all();
+}
+
+void WorkerPool::request_cancel(std::int64_t job_id) {
+  std::lock_guard lock(mutex_);
+  auto it = active_.find(job_id);
+  if (it == active_.end()) {
+    // Claimed but not yet registered by its worker: it picks this up when it registers.
+    early_cancels_.insert(job_id);
+    return;
+  }
+  it->second.user_cancel = true;
+  it->second.cancel->store(true);
+}
+
+void WorkerPool::begin_shutdown() {
+  {
+    std::lock_guard lock(mutex_);
+    stopping_ = true;
+    for (auto& [id, job] : active_) job.cancel->store(true);
+  }
+  wake_.notify_all();
+}
+
+void WorkerPool::join() {
+  for (auto& t : threads_) {
+    if (t.joinable()) t.join();
+  }
+  threads_.clear();
+}
+
+void WorkerPool::run_worker(int index) {
+  for (;;) {
+    std::uint64_t seen = 0;
+    {
+      std::lock_guard lock(mutex_);
+      if (stopping_) return;
+      seen = generation_;
+    }
+    std::optional<ClaimedJob> claimed;
+    try {
+      claimed = store_.claim_next();
+    } catch (const std::exception& e) {
+      log_.write("worker_error", {{"worker", index}, {"step", "claim"}, {"error", e.what()}});
+    }
+    if (claimed) {
+      run_job(*claimed);
+      continue;
+    }
+    std::unique_lock lock(mutex_);
+    wake_.wait_for(lock, options_.idle_poll, [&] { return stopping_ || generation_ != seen; });
+  }
+}
+
+bool WorkerPool::with_retries(const char* what, std::int64_t job_id,
+                              const std::function<bool()>& write) {
+  auto delay = std::chrono::milliseconds(200);
+  for (int attempt = 1;; ++attempt) {
+    try {
+      return write();
+    } catch (const std::exception& e) {
+      log_.write("store_error",
+                 {{"job_id", job_id}, {"step", what}, {"try", attempt}, {"error", e.what()}});
+      if (attempt == 5) return false;
+    }
+    std::this_thread::sleep_for(delay);
+    delay *= 2;
+  }
+}
+
+void WorkerPool::run_job(const ClaimedJob& claimed) {
+  const Job& job = claimed.job;
+  const int attempt = job.attempts;
+  auto cancel = std::make_shared<std::atomic<bool>>(false);
+  {
+    std::lock_guard lock(mutex_);
+    ActiveJob active{cancel, early_cancels_.erase(job.id) > 0};
+    if (active.user_cancel || stopping_) cancel->store(true);
+    active_.emplace(job.id, active);
+  }
+  ++busy_;
+  log_.write("job_transition",
+             {{"job_id", job.id}, {"from", "queued"}, {"to", "running"}, {"attempt", attempt}});
+
+  // Throttled progress: the solver may iterate thousands of times a second, the database
+  // needs to hear about it at most every progress_interval.
+  using Clock = std::chrono::steady_clock;
+  const Clock::time_point started = Clock::now();
+  Clock::time_point last_write = Clock::time_point::min();
+  std::optional<JobProgress> last_progress;
+  JobRunContext context{*cancel, [&](const JobProgress& p) {
+                          last_progress = p;
+                          const auto now = Clock::now();
+                          if (last_write != Clock::time_point::min() &&
+                              now - last_write < options_.progress_interval) {
+                            return;
+                          }
+                          last_write = now;
+                          try {
+                            store_.update_progress(job.id, attempt, p);
+                          } catch (const std::exception& e) {
+                            // Progress is advisory; a busy store must not fail the solve.
+                            log_.write(
+                                "store_error",
+                                {{"job_id", job.id}, {"step", "progress"}, {"error", e.what()}});
+                          }
+                        }};
+
+  JobRunOutcome outcome;
+  try {
+    const nlohmann::json case_json = nlohmann::json::parse(claimed.case_json);
+    outcome = runner_(case_json, context);
+  } catch (const std::exception& e) {
+    outcome.kind = JobRunOutcome::Kind::kFailed;
+    outcome.error = std::string("internal error while solving: ") + e.what();
+  } catch (const std::string& e) {  // gmsh throws std::string
+    outcome.kind = JobRunOutcome::Kind::kFailed;
+    outcome.error = "internal error while solving: " + e;
+  } catch (...) {
+    outcome.kind = JobRunOutcome::Kind::kFailed;
+    outcome.error = "internal error while solving (unknown exception)";
+  }
+  const double seconds = std::chrono::duration<double>(Clock::now() - started).count();
+
+  bool user_cancel = false;
+  bool stopping = false;
+  {
+    std::lock_guard lock(mutex_);
+    user_cancel = active_[job.id].user_cancel;
+    stopping = stopping_;
+    active_.erase(job.id);
+  }
+  if (last_progress) {
+    try {
+      store_.update_progress(job.id, attempt, *last_progress);
+    } catch (const std::exception&) {
+      // the final state below matters, the last progress figure does not
+    }
+  }
+
+  std::string to;
+  bool stored = false;
+  if (outcome.kind == JobRunOutcome::Kind::kSucceeded) {
+    to = "succeeded";
+    stored = with_retries("store result", job.id, [&] {
+      return store_.complete_succeeded(job.id, attempt, outcome.result_json, outcome.vtu);
+    });
+    metrics_.record_run(JobState::kSucceeded, seconds);
+  } else if (outcome.kind == JobRunOutcome::Kind::kCancelled && stopping && !user_cancel) {
+    // Interrupted by shutdown, not by its user: nothing is lost, it runs again next start.
+    to = "queued";
+    stored = with_retries("requeue", job.id, [&] { return store_.requeue(job.id, attempt); });
+  } else if (outcome.kind == JobRunOutcome::Kind::kCancelled) {
+    to = "cancelled";
+    stored = with_retries("store cancel", job.id,
+                          [&] { return store_.complete_cancelled(job.id, attempt); });
+    metrics_.record_run(JobState::kCancelled, seconds);
+  } else {
+    to = "failed";
+    stored = with_retries("store failure", job.id,
+                          [&] { return store_.complete_failed(job.id, attempt, outcome.error); });
+    metrics_.record_run(JobState::kFailed, seconds);
+  }
+  --busy_;
+
+  nlohmann::json fields = {{"job_id", job.id},   {"from", "running"},  {"to", to},
+                           {"attempt", attempt}, {"seconds", seconds}, {"stored", stored}};
+  if (outcome.kind == JobRunOutcome::Kind::kFailed) fields["error"] = outcome.error;
+  log_.write("job_transition", fields);
+}
+
+}  // namespace fosls::service

@@ -1,0 +1,88 @@
+#pragma once
+// In-process solver workers: each thread claims the oldest queued job, runs it with no
+// database transaction open, and records the outcome. HTTP threads never solve.
+
+#include <atomic>
+#include <chrono>
+#include <condition_variable>
+#include <cstdint>
+#include <map>
+#include <memory>
+#include <mutex>
+#include <set>
+#include <thread>
+#include <vector>
+
+#include "event_log.hpp"
+#include "job_runner.hpp"
+#include "job_store.hpp"
+#include "metrics.hpp"
+
+namespace fosls::service {
+
+struct WorkerPoolOptions {
+  int workers = 1;
+  /// At most one progress write per job per interval.
+  std::chrono::milliseconds progress_interval{500};
+  /// How often idle workers look for jobs they were not told about.
+  std::chrono::milliseconds idle_poll{1000};
+};
+
+/// A fixed set of worker threads over a JobStore.
+class WorkerPool {
+ public:
+  /// `store`, `log` and `metrics` must outlive the pool.
+  WorkerPool(JobStore& store, JobRunner runner, EventLog& log, Metrics& metrics,
+             WorkerPoolOptions options);
+  /// Stops like begin_shutdown() + join().
+  ~WorkerPool();
+  WorkerPool(const WorkerPool&) = delete;
+  WorkerPool& operator=(const WorkerPool&) = delete;
+
+  void start();
+
+  /// Wakes idle workers (a job was just queued).
+  void notify_job_available();
+
+  /// Stops a running job of this process on behalf of its user (the store already has
+  /// cancel_requested set); safe even if the job has not reached its worker yet.
+  void request_cancel(std::int64_t job_id);
+
+  /// Stops claiming and cancels running solves; those jobs go back to the queue without
+  /// counting the attempt. Returns at once; join() waits.
+  void begin_shutdown();
+
+  /// Waits for every worker to finish its current job.
+  void join();
+
+  int size() const { return options_.workers; }
+  int busy() const { return busy_.load(); }
+
+ private:
+  struct ActiveJob {
+    std::shared_ptr<std::atomic<bool>> cancel;
+    bool user_cancel = false;
+  };
+
+  void run_worker(int index);
+  void run_job(const ClaimedJob& claimed);
+  /// Calls `write` until it succeeds or attempts run out (the store may be busy for a while).
+  bool with_retries(const char* what, std::int64_t job_id, const std::function<bool()>& write);
+
+  JobStore& store_;
+  JobRunner runner_;
+  EventLog& log_;
+  Metrics& metrics_;
+  WorkerPoolOptions options_;
+
+  std::mutex mutex_;
+  std::condition_variable wake_;
+  std::uint64_t generation_ = 0;  ///< bumped by notify_job_available
+  bool stopping_ = false;
+  std::map<std::int64_t, ActiveJob> active_;
+  std::set<std::int64_t> early_cancels_;  ///< cancels that arrived before the worker did
+  std::atomic<int> busy_{0};
+  std::vector<std::thread> threads_;
+};
+
+}  // namespace fosls::service

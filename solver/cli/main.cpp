@@ -1,0 +1,39 @@
+// fosls-contact: the command line program of the FOSLS contact solver.
+//
+// Sample runs:
+//   fosls-contact example                       lists the shipped cases
+//   fosls-contact example hertz > hertz.json    prints one
+//   fosls-contact solve hertz.json --out result.json --vtu solution.vtu
+//   fosls-contact example hertz | fosls-contact solve - --quiet
+//
+// Exit codes: 0 converged, 1 unexpected failure, 2 bad command line or invalid case,
+// 3 solved but not converged (the result is still written).
+
+#include <CLI/CLI.hpp>
+#include <exception>
+#include <iostream>
+
+#include "cli/example_command.hpp"
+#include "cli/exit_codes.hpp"
+#include "cli/solve_command.hpp"
+
+int main(int argc, char** argv) {
+  using namespace fosls;
+  try {
+    CLI::App app{"FOSLS solver for 2D frictionless elastic contact (Signorini problems)",
+                 "fosls-contact"};
+    app.require_subcommand(1);
+    int exit_code = kExitOk;
+    add_solve_command(app, exit_code);
+    add_example_command(app, exit_code);
+    try {
+      app.parse(argc, argv);
+    } catch (const CLI::ParseError& e) {
+      return app.exit(e) == 0 ? kExitOk : kExitBadInput;
+    }
+    return exit_code;
+  } catch (const std::exception& e) {
+    std::cerr << "error: " << e.what() << '\n';
+    return kExitInternal;
+  }
+}

@@ -1,0 +1,114 @@
+#include "mesh/mesh_factory.hpp"
+
+#include <cmath>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include "case/case_error.hpp"
+#include "mesh/builtin_meshes.hpp"
+#include "mesh/gmsh_mesh.hpp"
+#include "mesh/msh_reader.hpp"
+
+namespace fosls {
+
+namespace {
+
+const std::string kBuiltinPointer = "/mesh/builtin";
+const std::string kSizePointer = "/mesh/size";
+
+/// Copies the known parameters of a built-in geometry into their fields; every unknown or
+/// non-finite parameter is an error at /mesh/builtin/<name> (the case JSON's layout).
+void take_params(const MeshSpec& spec, const std::vector<std::pair<std::string, double*>>& known,
+                 std::vector<CaseError>& errors) {
+  for (const auto& [name, value] : spec.params) {
+    double* field = nullptr;
+    std::string names;
+    for (const auto& [k, f] : known) {
+      if (k == name) field = f;
+      names += (names.empty() ? "" : ", ") + k;
+    }
+    if (!field)
+      errors.push_back({kBuiltinPointer + "/" + name, "'" + spec.builtin + "' has no parameter '" +
+                                                          name + "' (its parameters: " + names +
+                                                          ")"});
+    else if (!std::isfinite(value))
+      errors.push_back({kBuiltinPointer + "/" + name, "must be a finite number"});
+    else
+      *field = value;
+  }
+}
+
+Mesh build_builtin(const MeshSpec& spec) {
+  std::vector<CaseError> errors;
+  if (!(spec.size > 0) || !std::isfinite(spec.size))
+    errors.push_back({kSizePointer, "the mesh size must be a positive number"});
+  if (spec.builtin == "square") {
+    SquareParams p;
+    take_params(spec, {{"x0", &p.x0}, {"y0", &p.y0}, {"width", &p.width}, {"height", &p.height}},
+                errors);
+    p.size = spec.size;
+    if (!(p.width > 0)) errors.push_back({kBuiltinPointer + "/width", "must be positive"});
+    if (!(p.height > 0)) errors.push_back({kBuiltinPointer + "/height", "must be positive"});
+    if (!errors.empty()) throw CaseException(std::move(errors));
+    const double triangles = 2 * std::ceil(p.width / p.size) * std::ceil(p.height / p.size);
+    if (triangles > kMaxCoarseTriangles)
+      throw CaseException(kSizePointer,
+                          "the mesh size is too small for this square: " +
+                              std::to_string(static_cast<long long>(triangles)) +
+                              " coarse triangles (at most " +
+                              std::to_string(static_cast<long long>(kMaxCoarseTriangles)) +
+                              "); use a larger size and refinements instead");
+    return make_square(p);
+  }
+  if (spec.builtin == "hertz") {
+    HertzParams p;
+    take_params(
+        spec,
+        {{"radius", &p.radius}, {"contact_fraction", &p.contact_fraction}, {"grading", &p.grading}},
+        errors);
+    p.size = spec.size;
+    if (!errors.empty()) throw CaseException(std::move(errors));
+    return make_hertz(p);
+  }
+  throw CaseException(kBuiltinPointer,
+                      "unknown built-in geometry '" + spec.builtin + "'; use 'square' or 'hertz'");
+}
+
+std::string source_pointer(MeshSpec::Kind kind) {
+  switch (kind) {
+    case MeshSpec::Kind::kBuiltin:
+      return kBuiltinPointer;
+    case MeshSpec::Kind::kGeometry:
+      return "/mesh/geometry";
+    case MeshSpec::Kind::kMsh:
+      return "/mesh/msh";
+    case MeshSpec::Kind::kGeoFile:
+      return "/mesh/geo_file";
+  }
+  return "/mesh";
+}
+
+}  // namespace
+
+Mesh build_coarse_mesh(const MeshSpec& spec) {
+  try {
+    switch (spec.kind) {
+      case MeshSpec::Kind::kBuiltin:
+        return build_builtin(spec);
+      case MeshSpec::Kind::kGeometry:
+        return mesh_from_geometry(spec.geometry, spec.size);
+      case MeshSpec::Kind::kMsh:
+        return mesh_from_msh(spec.msh_text);
+      case MeshSpec::Kind::kGeoFile:
+        return mesh_from_geo_file(spec.geo_path, spec.size);
+    }
+  } catch (const std::invalid_argument& e) {
+    // Raised by the Mesh constructor and the built-in generators: the source gave a mesh that
+    // is not a valid triangulation, or parameters they reject.
+    throw CaseException(source_pointer(spec.kind), e.what());
+  }
+  throw CaseException("/mesh", "unknown kind of mesh source");
+}
+
+}  // namespace fosls

@@ -1,0 +1,414 @@
+// The HTTP layer in-process over a real SQLite store, with a fake validator and solver step:
+// every status code of the API, problem+json bodies, limits, idempotency, static files, logs.
+
+#include "http_api.hpp"
+
+#include <gtest/gtest.h>
+
+#include <chrono>
+#include <fstream>
+#include <memory>
+#include <sstream>
+#include <thread>
+
+#include "fake_job_runner.hpp"
+#include "http_client.hpp"
+#include "sqlite_job_store.hpp"
+#include "temp_dir.hpp"
+
+namespace fosls::service {
+namespace {
+
+using nlohmann::json;
+using testing::fake_job_runner;
+using testing::raw_body;
+using testing::raw_http;
+using testing::TempDir;
+
+/// Test double for validate_case: objects are valid unless they carry "bad".
+std::vector<CaseError> fake_validator(const json& j) {
+  std::vector<CaseError> errors;
+  if (!j.is_object()) {
+    errors.push_back({"", "the case must be a JSON object"});
+  } else if (j.contains("bad")) {
+    errors.push_back({"/bad", "remove this field"});
+    errors.push_back({"/material/nu", "must be in [0, 0.5]"});
+  }
+  return errors;
+}
+
+/// A complete service (store, workers, API, server) on a free loopback port.
+class Service {
+ public:
+  explicit Service(HttpApiOptions api_options = {}, bool start_workers = true)
+      : store_(dir_.file("jobs.db")),
+        pool_(store_, fake_job_runner, log_, metrics_, pool_options()),
+        api_(store_, pool_, fake_validator, metrics_, log_, with_web_root(api_options)) {
+    std::ofstream(dir_.path() / "web" / "index.html") << "<html>fosls</html>";
+    std::ofstream(dir_.path() / "web" / "app.js") << "console.log(1)";
+    std::ofstream(dir_.path() / "secret.txt") << "outside the web root";
+    server_.new_task_queue = [] { return new httplib::ThreadPool(4); };
+    api_.install(server_);
+    port_ = server_.bind_to_any_port("127.0.0.1");
+    thread_ = std::thread([this] { server_.listen_after_bind(); });
+    while (!server_.is_running()) std::this_thread::sleep_for(std::chrono::milliseconds(1));
+    if (start_workers) pool_.start();
+  }
+  ~Service() {
+    pool_.begin_shutdown();
+    server_.stop();
+    thread_.join();
+    pool_.join();
+  }
+
+  int port() const { return port_; }
+  httplib::Client client() const { return httplib::Client("127.0.0.1", port_); }
+  SqliteJobStore& store() { return store_; }
+  WorkerPool& pool() { return pool_; }
+  std::string log() const { return log_text_.str(); }
+
+  json wait_state(std::int64_t id, const std::string& state) {
+    auto cli = client();
+    const auto give_up = std::chrono::steady_clock::now() + std::chrono::seconds(20);
+    for (;;) {
+      auto res = cli.Get("/v1/jobs/" + std::to_string(id));
+      if (res && res->status == 200) {
+        json job = json::parse(res->body);
+        if (job["state"] == state) return job;
+      }
+      if (std::chrono::steady_clock::now() > give_up) {
+        ADD_FAILURE() << "job " << id << " never became " << state;
+        return json();
+      }
+      std::this_thread::sleep_for(std::chrono::milliseconds(5));
+    }
+  }
+
+ private:
+  static WorkerPoolOptions pool_options() {
+    WorkerPoolOptions o;
+    o.workers = 1;
+    o.idle_poll = std::chrono::milliseconds(50);
+    return o;
+  }
+  HttpApiOptions with_web_root(HttpApiOptions o) {
+    std::filesystem::create_directories(dir_.path() / "web");
+    o.web_root = dir_.path() / "web";
+    return o;
+  }
+
+  TempDir dir_;
+  std::ostringstream log_text_;
+  EventLog log_{log_text_};
+  Metrics metrics_;
+  SqliteJobStore store_;
+  WorkerPool pool_;
+  HttpApi api_;
+  httplib::Server server_;
+  int port_ = 0;
+  std::thread thread_;
+};
+
+httplib::Result post_json(httplib::Client& cli, const std::string& path, const std::string& body,
+                          const httplib::Headers& headers = {}) {
+  return cli.Post(path.c_str(), headers, body, "application/json");
+}
+
+void expect_problem(const httplib::Result& res, int status, const std::string& type_suffix = "") {
+  ASSERT_TRUE(res) << "no response";
+  EXPECT_EQ(res->status, status) << res->body;
+  EXPECT_EQ(res->get_header_value("Content-Type"), "application/problem+json");
+  json p = json::parse(res->body, nullptr, false);
+  ASSERT_FALSE(p.is_discarded()) << res->body;
+  EXPECT_EQ(p["status"], status);
+  EXPECT_TRUE(p["title"].is_string() && !p["title"].get<std::string>().empty());
+  EXPECT_TRUE(p["detail"].is_string() && !p["detail"].get<std::string>().empty());
+  EXPECT_TRUE(p["type"].is_string());
+  if (!type_suffix.empty()) {
+    EXPECT_EQ(p["type"], "urn:fosls:problem:" + type_suffix);
+  }
+}
+
+TEST(HttpApi, PostPollAndFetchResult) {
+  Service svc;
+  auto cli = svc.client();
+  auto res = post_json(cli, "/v1/jobs", R"({"name":"demo","mode":"ok","iterations":3})");
+  ASSERT_TRUE(res);
+  ASSERT_EQ(res->status, 202) << res->body;
+  const json job = json::parse(res->body);
+  const std::string location = res->get_header_value("Location");
+  EXPECT_EQ(location, "/v1/jobs/" + std::to_string(job["id"].get<std::int64_t>()));
+  EXPECT_EQ(job["name"], "demo");
+  EXPECT_EQ(job["state"], "queued");
+  EXPECT_EQ(job["attempts"], 0);
+  EXPECT_TRUE(job["started_at"].is_null());
+  EXPECT_EQ(job["created_at"].get<std::string>().back(), 'Z');
+
+  const json done = svc.wait_state(job["id"], "succeeded");
+  EXPECT_EQ(done["attempts"], 1);
+  EXPECT_EQ(done["progress"]["iteration"], 3);
+  EXPECT_TRUE(done["finished_at"].is_string());
+
+  auto result = cli.Get((location + "/result").c_str());
+  ASSERT_EQ(result->status, 200);
+  EXPECT_EQ(result->get_header_value("Content-Type"), "application/json");
+  EXPECT_EQ(json::parse(result->body)["echo"]["name"], "demo");
+  auto vtu = cli.Get((location + "/solution.vtu").c_str());
+  ASSERT_EQ(vtu->status, 200);
+  EXPECT_EQ(vtu->get_header_value("Content-Type"), "application/xml");
+  EXPECT_NE(vtu->body.find("UnstructuredGrid"), std::string::npos);
+
+  // Finished: cancel is a conflict, delete works once.
+  expect_problem(cli.Post((location + "/cancel").c_str()), 409, "job-finished");
+  auto del = cli.Delete(location.c_str());
+  EXPECT_EQ(del->status, 204);
+  expect_problem(cli.Get(location.c_str()), 404, "job-not-found");
+}
+
+TEST(HttpApi, BodyErrors) {
+  HttpApiOptions options;
+  options.max_body_bytes = 4096;
+  Service svc(options, false);
+  auto cli = svc.client();
+  // curl -d sends a form content type.
+  expect_problem(cli.Post("/v1/jobs", "{}", "application/x-www-form-urlencoded"), 415,
+                 "unsupported-media-type");
+  expect_problem(cli.Post("/v1/jobs", "{}", "text/plain"), 415);
+  expect_problem(post_json(cli, "/v1/jobs", "{\"name\": "), 400, "unparsable-json");
+  expect_problem(post_json(cli, "/v1/jobs", std::string(100, '[') + std::string(100, ']')), 400,
+                 "unparsable-json");
+  expect_problem(post_json(cli, "/v1/jobs", "{\"pad\":\"" + std::string(5000, 'x') + "\"}"), 413);
+
+  auto invalid = post_json(cli, "/v1/jobs", R"({"bad":1})");
+  expect_problem(invalid, 422, "invalid-case");
+  const json p = json::parse(invalid->body);
+  ASSERT_EQ(p["errors"].size(), 2u);
+  EXPECT_EQ(p["errors"][0]["pointer"], "/bad");
+  EXPECT_EQ(p["errors"][1]["pointer"], "/material/nu");
+  EXPECT_TRUE(p["errors"][1]["detail"].is_string());
+  expect_problem(post_json(cli, "/v1/jobs", "[1,2]"), 422, "invalid-case");
+  EXPECT_EQ(svc.store().count_by_state()[JobState::kQueued], 0);  // nothing was queued
+}
+
+TEST(HttpApi, ChunkedAndLengthlessBodiesAreRefusedWithoutReading) {
+  Service svc({}, false);
+  auto chunked = raw_http(svc.port(),
+                          "POST /v1/jobs HTTP/1.1\r\nHost: x\r\nContent-Type: application/json\r\n"
+                          "Transfer-Encoding: chunked\r\nConnection: close\r\n\r\n"
+                          "2\r\n{}\r\n0\r\n\r\n");
+  EXPECT_EQ(chunked.status, 411) << chunked.text;
+  EXPECT_NE(chunked.text.find("application/problem+json"), std::string::npos);
+  EXPECT_NE(raw_body(chunked).find("chunked"), std::string::npos);
+
+  auto lengthless =
+      raw_http(svc.port(),
+               "POST /v1/jobs HTTP/1.1\r\nHost: x\r\nContent-Type: application/json\r\n"
+               "Connection: close\r\n\r\n");
+  EXPECT_EQ(lengthless.status, 411) << lengthless.text;
+
+  // Expect: 100-continue with a body over the limit: refused before the body is sent.
+  auto expect = raw_http(svc.port(),
+                         "POST /v1/jobs HTTP/1.1\r\nHost: x\r\nContent-Type: application/json\r\n"
+                         "Content-Length: 999999999\r\nExpect: 100-continue\r\n"
+                         "Connection: close\r\n\r\n");
+  EXPECT_EQ(expect.status, 413) << expect.text;
+  // Without it, clients wait for the connection to close to know where the body ends.
+  EXPECT_NE(expect.text.find("Content-Length:"), std::string::npos) << expect.text;
+  EXPECT_EQ(svc.store().count_by_state()[JobState::kQueued], 0);
+}
+
+TEST(HttpApi, CancelAndDeleteWorkWithoutABody) {
+  Service svc({}, false);
+  auto cli = svc.client();
+  const auto a = json::parse(post_json(cli, "/v1/jobs", R"({"n":1})")->body)["id"].get<int>();
+  const auto b = json::parse(post_json(cli, "/v1/jobs", R"({"n":2})")->body)["id"].get<int>();
+  // What `curl -X POST .../cancel` sends: no Content-Length at all.
+  auto cancel =
+      raw_http(svc.port(), "POST /v1/jobs/" + std::to_string(a) +
+                               "/cancel HTTP/1.1\r\nHost: x\r\nConnection: close\r\n\r\n");
+  EXPECT_EQ(cancel.status, 200) << cancel.text;
+  EXPECT_EQ(json::parse(raw_body(cancel))["state"], "cancelled");
+  auto del = raw_http(svc.port(), "DELETE /v1/jobs/" + std::to_string(a) +
+                                      " HTTP/1.1\r\nHost: x\r\nConnection: close\r\n\r\n");
+  EXPECT_EQ(del.status, 204) << del.text;
+  auto busy = raw_http(svc.port(), "DELETE /v1/jobs/" + std::to_string(b) +
+                                       " HTTP/1.1\r\nHost: x\r\nConnection: close\r\n\r\n");
+  EXPECT_EQ(busy.status, 409) << busy.text;
+  // httplib's client sends Content-Length: 0.
+  auto cancel_b = cli.Post(("/v1/jobs/" + std::to_string(b) + "/cancel").c_str());
+  EXPECT_EQ(cancel_b->status, 200);
+}
+
+TEST(HttpApi, RunningJobs409UntilCancelledThenWorkerIsFree) {
+  Service svc;
+  auto cli = svc.client();
+  const json job = json::parse(post_json(cli, "/v1/jobs", R"({"mode":"until_cancel"})")->body);
+  const std::string path = "/v1/jobs/" + std::to_string(job["id"].get<int>());
+  svc.wait_state(job["id"], "running");
+  auto early = cli.Get((path + "/result").c_str());
+  expect_problem(early, 409, "job-not-finished");
+  EXPECT_EQ(json::parse(early->body)["state"], "running");
+  expect_problem(cli.Get((path + "/solution.vtu").c_str()), 409);
+  expect_problem(cli.Delete(path.c_str()), 409, "job-not-finished");
+
+  auto cancel = cli.Post((path + "/cancel").c_str());
+  ASSERT_EQ(cancel->status, 202);
+  EXPECT_TRUE(json::parse(cancel->body)["cancel_requested"].get<bool>());
+  svc.wait_state(job["id"], "cancelled");
+  auto result = cli.Get((path + "/result").c_str());
+  expect_problem(result, 409, "job-cancelled");
+
+  const json next = json::parse(post_json(cli, "/v1/jobs", R"({"mode":"ok"})")->body);
+  svc.wait_state(next["id"], "succeeded");  // the only worker is free again
+}
+
+TEST(HttpApi, FailedJobResultExplainsWhy) {
+  Service svc;
+  auto cli = svc.client();
+  const json job = json::parse(post_json(cli, "/v1/jobs", R"({"mode":"fail"})")->body);
+  const json failed = svc.wait_state(job["id"], "failed");
+  EXPECT_EQ(failed["error"], "/solver/tolerance: fake failure");
+  auto res = cli.Get(("/v1/jobs/" + std::to_string(job["id"].get<int>()) + "/result").c_str());
+  expect_problem(res, 409, "job-failed");
+  EXPECT_NE(json::parse(res->body)["detail"].get<std::string>().find("fake failure"),
+            std::string::npos);
+}
+
+TEST(HttpApi, UnknownIdsRoutesAndMethods) {
+  Service svc({}, false);
+  auto cli = svc.client();
+  expect_problem(cli.Get("/v1/jobs/12345"), 404, "job-not-found");
+  expect_problem(cli.Get("/v1/jobs/12345/result"), 404);
+  expect_problem(cli.Post("/v1/jobs/12345/cancel"), 404);
+  expect_problem(cli.Delete("/v1/jobs/12345"), 404);
+  expect_problem(cli.Get("/v1/jobs/abc"), 404);
+  expect_problem(cli.Get("/v1/jobs/99999999999999999999999"), 404);
+  expect_problem(cli.Get("/v1/nothing"), 404);
+  auto wrong = cli.Put("/v1/jobs", "{}", "application/json");
+  expect_problem(wrong, 405);
+  EXPECT_EQ(wrong->get_header_value("Allow"), "GET, POST");
+}
+
+TEST(HttpApi, IdempotencyKey) {
+  Service svc({}, false);
+  auto cli = svc.client();
+  const httplib::Headers key = {{"Idempotency-Key", "order-42"}};
+  auto first = post_json(cli, "/v1/jobs", R"({"a":1,"b":2})", key);
+  ASSERT_EQ(first->status, 202);
+  // Same case with keys in another order and other spacing: the same body.
+  auto again = post_json(cli, "/v1/jobs", R"({ "b": 2, "a": 1 })", key);
+  ASSERT_EQ(again->status, 200);
+  EXPECT_EQ(json::parse(again->body)["id"], json::parse(first->body)["id"]);
+  EXPECT_EQ(again->get_header_value("Location"), first->get_header_value("Location"));
+  auto conflict = post_json(cli, "/v1/jobs", R"({"a":2})", key);
+  expect_problem(conflict, 422, "idempotency-key-reused");
+  expect_problem(post_json(cli, "/v1/jobs", "{}", {{"Idempotency-Key", "has space"}}), 400,
+                 "invalid-idempotency-key");
+  EXPECT_EQ(svc.store().count_by_state()[JobState::kQueued], 1);
+}
+
+TEST(HttpApi, FullQueueAnswers503WithRetryAfter) {
+  HttpApiOptions options;
+  options.max_queue = 2;
+  Service svc(options, false);
+  auto cli = svc.client();
+  EXPECT_EQ(post_json(cli, "/v1/jobs", "{\"n\":1}")->status, 202);
+  EXPECT_EQ(post_json(cli, "/v1/jobs", "{\"n\":2}")->status, 202);
+  auto full = post_json(cli, "/v1/jobs", "{\"n\":3}");
+  expect_problem(full, 503, "queue-full");
+  EXPECT_EQ(full->get_header_value("Retry-After"), "5");
+}
+
+TEST(HttpApi, ListsWithFiltersAndPages) {
+  Service svc({}, false);
+  auto cli = svc.client();
+  for (int i = 0; i < 5; ++i) post_json(cli, "/v1/jobs", "{\"n\":" + std::to_string(i) + "}");
+  cli.Post("/v1/jobs/2/cancel");
+  std::vector<int> ids;
+  std::string token;
+  int pages = 0;
+  do {
+    std::string path = "/v1/jobs?page_size=2";
+    if (!token.empty()) path += "&page_token=" + token;
+    auto res = cli.Get(path.c_str());
+    ASSERT_EQ(res->status, 200);
+    json page = json::parse(res->body);
+    for (auto& j : page["jobs"]) ids.push_back(j["id"]);
+    token = page["next_page_token"].is_null() ? "" : page["next_page_token"].get<std::string>();
+    ++pages;
+  } while (!token.empty() && pages < 10);
+  EXPECT_EQ(ids, (std::vector<int>{5, 4, 3, 2, 1}));
+  EXPECT_EQ(pages, 3);
+  json cancelled = json::parse(cli.Get("/v1/jobs?state=cancelled")->body);
+  ASSERT_EQ(cancelled["jobs"].size(), 1u);
+  EXPECT_EQ(cancelled["jobs"][0]["id"], 2);
+  EXPECT_TRUE(cancelled["next_page_token"].is_null());
+  expect_problem(cli.Get("/v1/jobs?state=done"), 400, "invalid-parameter");
+  expect_problem(cli.Get("/v1/jobs?page_size=0"), 400);
+  expect_problem(cli.Get("/v1/jobs?page_size=101"), 400);
+  expect_problem(cli.Get("/v1/jobs?page_token=abc"), 400);
+}
+
+TEST(HttpApi, HealthMetricsAndLogLines) {
+  Service svc({}, false);
+  auto cli = svc.client();
+  post_json(cli, "/v1/jobs", "{}");
+  auto health = cli.Get("/healthz");
+  ASSERT_EQ(health->status, 200);
+  EXPECT_EQ(json::parse(health->body)["status"], "ok");
+  auto metrics = cli.Get("/metrics");
+  ASSERT_EQ(metrics->status, 200);
+  EXPECT_NE(metrics->body.find("fosls_jobs{state=\"queued\"} 1"), std::string::npos);
+  EXPECT_NE(metrics->body.find("fosls_queue_depth 1"), std::string::npos);
+  EXPECT_NE(metrics->body.find("fosls_http_requests_total{method=\"POST\",route=\"/v1/jobs\","
+                               "status=\"202\"} 1"),
+            std::string::npos);
+  EXPECT_NE(metrics->body.find("fosls_http_request_seconds_count"), std::string::npos);
+
+  // One JSON line per request with method, path, status and duration.
+  std::istringstream lines(svc.log());
+  std::string line;
+  int requests = 0;
+  while (std::getline(lines, line)) {
+    json event = json::parse(line);
+    if (event["event"] != "http_request") continue;
+    ++requests;
+    EXPECT_TRUE(event["method"].is_string());
+    EXPECT_TRUE(event["path"].is_string());
+    EXPECT_TRUE(event["status"].is_number());
+    EXPECT_TRUE(event["duration_ms"].is_number());
+  }
+  EXPECT_EQ(requests, 2);  // the /metrics request is logged after its response is written
+}
+
+TEST(HttpApi, StaticFilesStayInsideTheWebRoot) {
+  Service svc({}, false);
+  auto cli = svc.client();
+  auto index = cli.Get("/");
+  ASSERT_EQ(index->status, 200);
+  EXPECT_EQ(index->body, "<html>fosls</html>");
+  EXPECT_EQ(index->get_header_value("Content-Type"), "text/html; charset=utf-8");
+  auto js = cli.Get("/app.js");
+  ASSERT_EQ(js->status, 200);
+  EXPECT_EQ(js->get_header_value("Content-Type"), "text/javascript; charset=utf-8");
+  expect_problem(cli.Get("/missing.css"), 404);
+  for (const char* attack : {"/../secret.txt", "/%2e%2e/secret.txt", "/..%2fsecret.txt",
+                             "/web/../../secret.txt", "/.hidden"}) {
+    auto res = raw_http(svc.port(), std::string("GET ") + attack +
+                                        " HTTP/1.1\r\nHost: x\r\nConnection: close\r\n\r\n");
+    EXPECT_NE(res.status, 200) << attack;
+    EXPECT_EQ(res.text.find("outside the web root"), std::string::npos) << attack;
+  }
+}
+
+TEST(HttpApi, RouteTemplatesKeepMetricLabelsBounded) {
+  EXPECT_EQ(HttpApi::route_template("/v1/jobs"), "/v1/jobs");
+  EXPECT_EQ(HttpApi::route_template("/v1/jobs/17"), "/v1/jobs/{id}");
+  EXPECT_EQ(HttpApi::route_template("/v1/jobs/17/result"), "/v1/jobs/{id}/result");
+  EXPECT_EQ(HttpApi::route_template("/v1/jobs/17/solution.vtu"), "/v1/jobs/{id}/solution.vtu");
+  EXPECT_EQ(HttpApi::route_template("/v1/jobs/17/x"), "unknown");
+  EXPECT_EQ(HttpApi::route_template("/index.html"), "static");
+}
+
+}  // namespace
+}  // namespace fosls::service

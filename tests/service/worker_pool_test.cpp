@@ -1,0 +1,191 @@
+// Worker threads over a real SQLite store with a fake solver step: outcomes, exceptions,
+// cancellation, shutdown and progress throttling.
+
+#include "worker_pool.hpp"
+
+#include <gtest/gtest.h>
+
+#include <chrono>
+#include <functional>
+#include <sstream>
+#include <thread>
+
+#include "fake_job_runner.hpp"
+#include "request_checks.hpp"
+#include "sqlite_job_store.hpp"
+#include "temp_dir.hpp"
+
+namespace fosls::service {
+namespace {
+
+using testing::fake_job_runner;
+using testing::TempDir;
+
+/// Counts progress writes on the way to the real store.
+class CountingStore final : public JobStore {
+ public:
+  explicit CountingStore(JobStore& inner) : inner_(inner) {}
+  std::atomic<int> progress_writes{0};
+
+  SubmitOutcome submit(const NewJob& j, std::size_t m) override { return inner_.submit(j, m); }
+  std::optional<Job> find(std::int64_t id) override { return inner_.find(id); }
+  std::optional<std::string> result_json(std::int64_t id) override {
+    return inner_.result_json(id);
+  }
+  std::optional<std::string> vtu(std::int64_t id) override { return inner_.vtu(id); }
+  JobPage list(const JobListQuery& q) override { return inner_.list(q); }
+  CancelOutcome cancel(std::int64_t id) override { return inner_.cancel(id); }
+  DeleteOutcome remove(std::int64_t id) override { return inner_.remove(id); }
+  std::optional<ClaimedJob> claim_next() override { return inner_.claim_next(); }
+  void update_progress(std::int64_t id, int a, const JobProgress& p) override {
+    ++progress_writes;
+    inner_.update_progress(id, a, p);
+  }
+  bool complete_succeeded(std::int64_t id, int a, const std::string& r,
+                          const std::string& v) override {
+    return inner_.complete_succeeded(id, a, r, v);
+  }
+  bool complete_failed(std::int64_t id, int a, const std::string& e) override {
+    return inner_.complete_failed(id, a, e);
+  }
+  bool complete_cancelled(std::int64_t id, int a) override {
+    return inner_.complete_cancelled(id, a);
+  }
+  bool requeue(std::int64_t id, int a) override { return inner_.requeue(id, a); }
+  RecoveryReport recover_interrupted(int m) override { return inner_.recover_interrupted(m); }
+  int delete_finished_before(std::int64_t t) override { return inner_.delete_finished_before(t); }
+  std::map<JobState, std::int64_t> count_by_state() override { return inner_.count_by_state(); }
+  void ping() override { inner_.ping(); }
+
+ private:
+  JobStore& inner_;
+};
+
+class WorkerPoolTest : public ::testing::Test {
+ protected:
+  TempDir dir_;
+  SqliteJobStore store_{dir_.file("jobs.db")};
+  std::ostringstream log_text_;
+  EventLog log_{log_text_};
+  Metrics metrics_;
+
+  std::int64_t submit(const nlohmann::json& body) {
+    NewJob job;
+    job.name = "t";
+    job.case_json = body.dump();
+    job.body_hash = sha256_hex(job.case_json);
+    return store_.submit(job, 1000).job->id;
+  }
+
+  /// Polls until the job satisfies `done`; the bound only stops a broken test from hanging.
+  Job wait_for(JobStore& store, std::int64_t id, const std::function<bool(const Job&)>& done) {
+    const auto give_up = std::chrono::steady_clock::now() + std::chrono::seconds(20);
+    for (;;) {
+      auto job = store.find(id);
+      if (job && done(*job)) return *job;
+      if (std::chrono::steady_clock::now() > give_up) {
+        ADD_FAILURE() << "job " << id << " did not reach the expected state";
+        return job.value_or(Job{});
+      }
+      std::this_thread::sleep_for(std::chrono::milliseconds(5));
+    }
+  }
+  Job wait_state(std::int64_t id, JobState state) {
+    return wait_for(store_, id, [state](const Job& j) { return j.state == state; });
+  }
+
+  static WorkerPoolOptions options(int workers) {
+    WorkerPoolOptions o;
+    o.workers = workers;
+    o.idle_poll = std::chrono::milliseconds(50);
+    return o;
+  }
+};
+
+TEST_F(WorkerPoolTest, SolvesQueuedJobsAndStoresResults) {
+  const auto a = submit({{"mode", "ok"}, {"iterations", 4}});
+  const auto b = submit({{"mode", "ok"}, {"iterations", 2}});
+  WorkerPool pool(store_, fake_job_runner, log_, metrics_, options(2));
+  pool.start();
+  const Job ja = wait_state(a, JobState::kSucceeded);
+  wait_state(b, JobState::kSucceeded);
+  EXPECT_EQ(ja.attempts, 1);
+  ASSERT_TRUE(ja.progress);
+  EXPECT_EQ(ja.progress->iteration, 4);  // the last iteration is always written
+  auto result = nlohmann::json::parse(*store_.result_json(a));
+  EXPECT_EQ(result["iterations"], 4);
+  EXPECT_EQ(store_.vtu(a), "<VTKFile type=\"UnstructuredGrid\"/>");
+  pool.begin_shutdown();
+  pool.join();
+  EXPECT_NE(log_text_.str().find("\"to\":\"succeeded\""), std::string::npos);
+  MetricsSnapshot snapshot;
+  EXPECT_NE(metrics_.render(snapshot).find("fosls_job_run_seconds_count{outcome=\"succeeded\"} 2"),
+            std::string::npos);
+}
+
+TEST_F(WorkerPoolTest, ExceptionsAndFailuresFailTheJobNotTheWorker) {
+  const auto thrown = submit({{"mode", "throw"}});
+  const auto other = submit({{"mode", "throw_other"}});
+  const auto failed = submit({{"mode", "fail"}});
+  const auto ok = submit({{"mode", "ok"}});
+  WorkerPool pool(store_, fake_job_runner, log_, metrics_, options(1));
+  pool.start();
+  EXPECT_NE(wait_state(thrown, JobState::kFailed).error.find("boom from the fake solver"),
+            std::string::npos);
+  EXPECT_NE(wait_state(other, JobState::kFailed).error.find("unknown exception"),
+            std::string::npos);
+  EXPECT_EQ(wait_state(failed, JobState::kFailed).error, "/solver/tolerance: fake failure");
+  wait_state(ok, JobState::kSucceeded);  // the single worker survived all three
+}
+
+TEST_F(WorkerPoolTest, CancellingARunningJobFreesTheWorker) {
+  const auto endless = submit({{"mode", "until_cancel"}});
+  const auto next = submit({{"mode", "ok"}});
+  WorkerPool pool(store_, fake_job_runner, log_, metrics_, options(1));
+  pool.start();
+  wait_for(store_, endless, [](const Job& j) { return j.progress.has_value(); });
+  ASSERT_EQ(store_.cancel(endless).kind, CancelOutcome::Kind::kRequested);
+  pool.request_cancel(endless);
+  const Job cancelled = wait_state(endless, JobState::kCancelled);
+  EXPECT_TRUE(cancelled.finished_at_ms);
+  wait_state(next, JobState::kSucceeded);
+}
+
+TEST_F(WorkerPoolTest, CancelArrivingBeforeTheWorkerRegistersIsNotLost) {
+  const auto id = submit({{"mode", "until_cancel"}});
+  WorkerPool pool(store_, fake_job_runner, log_, metrics_, options(1));
+  // The HTTP thread saw the job running and asked to cancel before its worker registered it.
+  pool.request_cancel(id);
+  pool.start();
+  wait_state(id, JobState::kCancelled);
+}
+
+TEST_F(WorkerPoolTest, ShutdownPutsRunningJobsBackWithoutCountingTheAttempt) {
+  const auto id = submit({{"mode", "until_cancel"}});
+  {
+    WorkerPool pool(store_, fake_job_runner, log_, metrics_, options(1));
+    pool.start();
+    wait_for(store_, id, [](const Job& j) { return j.progress.has_value(); });
+    pool.begin_shutdown();
+    pool.join();
+  }
+  const Job job = *store_.find(id);
+  EXPECT_EQ(job.state, JobState::kQueued);
+  EXPECT_EQ(job.attempts, 0);
+  EXPECT_FALSE(job.started_at_ms);
+}
+
+TEST_F(WorkerPoolTest, ProgressWritesAreThrottled) {
+  CountingStore counting(store_);
+  const auto id = submit({{"mode", "ok"}, {"iterations", 5000}});
+  WorkerPoolOptions o = options(1);
+  o.progress_interval = std::chrono::hours(1);
+  WorkerPool pool(counting, fake_job_runner, log_, metrics_, o);
+  pool.start();
+  const Job job = wait_state(id, JobState::kSucceeded);
+  EXPECT_EQ(job.progress->iteration, 5000);
+  EXPECT_EQ(counting.progress_writes.load(), 2);  // the first iteration and the final one
+}
+
+}  // namespace
+}  // namespace fosls::service
