@@ -5,11 +5,15 @@
 //   fosls-serve --port 0 --db /tmp/jobs.db    # a free port, printed on stdout
 //   fosls-serve --host 0.0.0.0 --workers 2    # in a container
 
+#include <fcntl.h>
 #include <httplib.h>
 #include <signal.h>
+#include <sys/file.h>
+#include <unistd.h>
 
 #include <CLI/CLI.hpp>
 #include <algorithm>
+#include <atomic>
 #include <chrono>
 #include <csignal>
 #include <cstdlib>
@@ -50,6 +54,16 @@ int serve(const ServeOptions& o, const sigset_t& stop_signals) {
 
   const std::filesystem::path db_path(o.db);
   if (db_path.has_parent_path()) std::filesystem::create_directories(db_path.parent_path());
+  // Start-up recovery assumes this process owns every running job of the database; a
+  // second server on the same file would re-queue the first one's jobs. The kernel drops
+  // the lock when the process dies, also on kill -9. The descriptor stays open until exit.
+  const std::string lock_path = o.db + ".lock";
+  const int lock_fd = open(lock_path.c_str(), O_RDWR | O_CREAT | O_CLOEXEC, 0644);
+  if (lock_fd < 0 || flock(lock_fd, LOCK_EX | LOCK_NB) != 0) {
+    std::cerr << "fosls-serve: another fosls-serve is using " << o.db << " (lock " << lock_path
+              << ")\n";
+    return 1;
+  }
   SqliteJobStore store(o.db);
   const RecoveryReport recovery = store.recover_interrupted(o.max_attempts);
   for (auto id : recovery.requeued) {
@@ -84,6 +98,7 @@ int serve(const ServeOptions& o, const sigset_t& stop_signals) {
   const int http_threads = o.http_threads;
   server.new_task_queue = [http_threads] { return new httplib::ThreadPool(http_threads); };
   server.set_keep_alive_timeout(2);  // idle keep-alive connections delay shutdown this long
+  server.set_keep_alive_max_count(1000);
   api.install(server);
 
   const int port = o.port == 0 ? server.bind_to_any_port(o.host)
@@ -113,10 +128,11 @@ int serve(const ServeOptions& o, const sigset_t& stop_signals) {
     sweeper->start();
   }
 
+  std::atomic<bool> stopping{false};
   std::thread http([&] {
     if (!server.listen_after_bind()) log.write("http_error", {{"error", "listen failed"}});
-    // Wake the main thread if the server ended on its own.
-    kill(getpid(), SIGTERM);
+    // Wake the main thread if the server ended on its own (not through stop() below).
+    if (!stopping.load()) kill(getpid(), SIGTERM);
   });
 
   int signal_number = 0;
@@ -129,6 +145,7 @@ int serve(const ServeOptions& o, const sigset_t& stop_signals) {
     std::_Exit(128 + again);
   }).detach();
 
+  stopping = true;
   pool.begin_shutdown();  // running solves see their cancel flag and go back to the queue
   server.stop();          // stop accepting; finishes requests in progress
   http.join();

@@ -82,12 +82,13 @@ void WorkerPool::run_worker(int index) {
 }
 
 bool WorkerPool::with_retries(const char* what, std::int64_t job_id,
-                              const std::function<bool()>& write) {
-  auto delay = std::chrono::milliseconds(200);
+                              const std::function<bool()>& write, std::string& error) {
+  auto delay = options_.store_retry_delay;
   for (int attempt = 1;; ++attempt) {
     try {
       return write();
     } catch (const std::exception& e) {
+      error = e.what();
       log_.write("store_error",
                  {{"job_id", job_id}, {"step", what}, {"try", attempt}, {"error", e.what()}});
       if (attempt == 5) return false;
@@ -169,25 +170,39 @@ void WorkerPool::run_job(const ClaimedJob& claimed) {
 
   std::string to;
   bool stored = false;
+  std::string store_error;
   if (outcome.kind == JobRunOutcome::Kind::kSucceeded) {
     to = "succeeded";
-    stored = with_retries("store result", job.id, [&] {
-      return store_.complete_succeeded(job.id, attempt, outcome.result_json, outcome.vtu);
-    });
-    metrics_.record_run(JobState::kSucceeded, seconds);
+    stored = with_retries(
+        "store result", job.id,
+        [&] {
+          return store_.complete_succeeded(job.id, attempt, outcome.result_json, outcome.vtu);
+        },
+        store_error);
+    if (!stored && !store_error.empty()) {
+      // For example a VTU beyond SQLite's size limit: say so rather than stay "running".
+      outcome.kind = JobRunOutcome::Kind::kFailed;
+      outcome.error = "the solve finished but its result could not be stored: " + store_error;
+    } else {
+      metrics_.record_run(JobState::kSucceeded, seconds);
+    }
   } else if (outcome.kind == JobRunOutcome::Kind::kCancelled && stopping && !user_cancel) {
     // Interrupted by shutdown, not by its user: nothing is lost, it runs again next start.
     to = "queued";
-    stored = with_retries("requeue", job.id, [&] { return store_.requeue(job.id, attempt); });
+    stored = with_retries(
+        "requeue", job.id, [&] { return store_.requeue(job.id, attempt); }, store_error);
   } else if (outcome.kind == JobRunOutcome::Kind::kCancelled) {
     to = "cancelled";
-    stored = with_retries("store cancel", job.id,
-                          [&] { return store_.complete_cancelled(job.id, attempt); });
+    stored = with_retries(
+        "store cancel", job.id, [&] { return store_.complete_cancelled(job.id, attempt); },
+        store_error);
     metrics_.record_run(JobState::kCancelled, seconds);
-  } else {
+  }
+  if (outcome.kind == JobRunOutcome::Kind::kFailed) {
     to = "failed";
-    stored = with_retries("store failure", job.id,
-                          [&] { return store_.complete_failed(job.id, attempt, outcome.error); });
+    stored = with_retries(
+        "store failure", job.id,
+        [&] { return store_.complete_failed(job.id, attempt, outcome.error); }, store_error);
     metrics_.record_run(JobState::kFailed, seconds);
   }
   --busy_;

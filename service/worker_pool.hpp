@@ -26,6 +26,8 @@ struct WorkerPoolOptions {
   std::chrono::milliseconds progress_interval{500};
   /// How often idle workers look for jobs they were not told about.
   std::chrono::milliseconds idle_poll{1000};
+  /// First pause before retrying a failed store write (doubles; five tries in all).
+  std::chrono::milliseconds store_retry_delay{200};
 };
 
 /// A fixed set of worker threads over a JobStore.
@@ -66,8 +68,11 @@ class WorkerPool {
 
   void run_worker(int index);
   void run_job(const ClaimedJob& claimed);
-  /// Calls `write` until it succeeds or attempts run out (the store may be busy for a while).
-  bool with_retries(const char* what, std::int64_t job_id, const std::function<bool()>& write);
+  /// Calls `write` until it returns without throwing or attempts run out (the store may be
+  /// busy for a while); returns what `write` returned, false after the last failure, whose
+  /// message goes to `error`.
+  bool with_retries(const char* what, std::int64_t job_id, const std::function<bool()>& write,
+                    std::string& error);
 
   JobStore& store_;
   JobRunner runner_;

@@ -26,6 +26,7 @@ class CountingStore final : public JobStore {
  public:
   explicit CountingStore(JobStore& inner) : inner_(inner) {}
   std::atomic<int> progress_writes{0};
+  std::atomic<bool> fail_results{false};  ///< complete_succeeded throws, like a full disk
 
   SubmitOutcome submit(const NewJob& j, std::size_t m) override { return inner_.submit(j, m); }
   std::optional<Job> find(std::int64_t id) override { return inner_.find(id); }
@@ -43,6 +44,7 @@ class CountingStore final : public JobStore {
   }
   bool complete_succeeded(std::int64_t id, int a, const std::string& r,
                           const std::string& v) override {
+    if (fail_results) throw StoreError("string or blob too big");
     return inner_.complete_succeeded(id, a, r, v);
   }
   bool complete_failed(std::int64_t id, int a, const std::string& e) override {
@@ -185,6 +187,19 @@ TEST_F(WorkerPoolTest, ProgressWritesAreThrottled) {
   const Job job = wait_state(id, JobState::kSucceeded);
   EXPECT_EQ(job.progress->iteration, 5000);
   EXPECT_EQ(counting.progress_writes.load(), 2);  // the first iteration and the final one
+}
+
+TEST_F(WorkerPoolTest, AResultThatCannotBeStoredFailsTheJobInsteadOfLeavingItRunning) {
+  CountingStore failing(store_);
+  failing.fail_results = true;
+  const auto id = submit({{"mode", "ok"}});
+  WorkerPoolOptions o = options(1);
+  o.store_retry_delay = std::chrono::milliseconds(1);
+  WorkerPool pool(failing, fake_job_runner, log_, metrics_, o);
+  pool.start();
+  const Job job = wait_state(id, JobState::kFailed);
+  EXPECT_NE(job.error.find("could not be stored: string or blob too big"), std::string::npos);
+  EXPECT_FALSE(store_.result_json(id));
 }
 
 }  // namespace

@@ -1,0 +1,60 @@
+#!/usr/bin/env bash
+# Installs the Debian 12 packages this project needs, and only those that are missing:
+# `apt-get update` runs only when something has to be installed. Quiet; safe to re-run.
+#
+#   docker/install-deps.sh           # everything: build, tests, web tests, load tests
+#   docker/install-deps.sh --build   # only what compiling and the C++ tests need (Docker)
+#   docker/install-deps.sh --check   # list what is missing; exit 1 if anything is
+set -euo pipefail
+
+build_packages=(
+  build-essential cmake pkg-config
+  libeigen3-dev libsuitesparse-dev libcpp-httplib-dev nlohmann-json3-dev libsqlite3-dev
+  libgmsh-dev libmuparser-dev libcli11-dev libgtest-dev
+)
+tool_packages=(clang-format curl sqlite3 nodejs npm chromium wrk)
+
+check_only=0
+case "${1:-}" in
+  --build) packages=("${build_packages[@]}") ;;
+  --check) packages=("${build_packages[@]}" "${tool_packages[@]}") check_only=1 ;;
+  "") packages=("${build_packages[@]}" "${tool_packages[@]}") ;;
+  *)
+    echo "usage: $0 [--build | --check]" >&2
+    exit 2
+    ;;
+esac
+
+# A tool counts as present when its command is on PATH even if another package provides it
+# (e.g. NodeSource's nodejs bundles npm and conflicts with Debian's npm package).
+provides_command() {
+  case "$1" in
+    nodejs) command -v node >/dev/null ;;
+    npm | chromium | wrk | curl | sqlite3 | clang-format | cmake) command -v "$1" >/dev/null ;;
+    *) return 1 ;;
+  esac
+}
+
+missing=()
+for p in "${packages[@]}"; do
+  if ! dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" &&
+    ! provides_command "$p"; then
+    missing+=("$p")
+  fi
+done
+if [ ${#missing[@]} -eq 0 ]; then
+  exit 0
+fi
+if [ "$check_only" -eq 1 ]; then
+  echo "missing: ${missing[*]}"
+  exit 1
+fi
+
+as_root=()
+if [ "$(id -u)" -ne 0 ]; then
+  as_root=(sudo)
+fi
+echo "installing: ${missing[*]}"
+"${as_root[@]}" apt-get update -qq
+"${as_root[@]}" env DEBIAN_FRONTEND=noninteractive apt-get install -y -qq \
+  --no-install-recommends -o Dpkg::Use-Pty=0 "${missing[@]}" >/dev/null
