@@ -10,19 +10,9 @@
 #include "case/case_error.hpp"
 #include "case/case_reader.hpp"
 #include "case/case_spec.hpp"
+#include "solvers/iteration_record.hpp"
 
 namespace fosls {
-
-/// What the solver reports after every iteration (also one history entry of the result).
-struct IterationRecord {
-  int iteration = 0;
-  double energy = 0.0;        ///< J(x_k)
-  double correction = 0.0;    ///< energy norm of x_k − x_{k−1}
-  double kkt_residual = 0.0;  ///< ‖x − P_K(x − (Ax − b))‖
-  int active = 0;             ///< size of the active set
-  int changed = 0;            ///< DOFs whose active/inactive state changed
-  double time_s = 0.0;        ///< since the start of the solve
-};
 
 struct RunControl {
   /// Called after every iteration from the solving thread; keep it cheap.

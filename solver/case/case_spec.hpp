@@ -62,7 +62,7 @@ struct BoundaryCondition {
 struct Weights {
   double c1 = 1.0;
   double c2 = 1.0;
-  double c3 = 0.5;
+  double c3 = 0.1;
   double c4 = 0.0;
 };
 

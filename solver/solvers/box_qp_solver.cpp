@@ -1,0 +1,162 @@
+#include "solvers/box_qp_solver.hpp"
+
+#include <Eigen/SparseCholesky>
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+#include <vector>
+
+namespace fosls {
+
+namespace {
+
+/// The primal active-set iteration, generic in how the equality-constrained subproblem on the
+/// free set is solved: `solve_free(state, delta, y)` must return the minimiser y over the DOFs
+/// with state 0 while DOFs with state ±1 stay at their current (bound) value.
+template <class SolveFree, class Gradient>
+bool primal_active_set(int n, const Vector& lo, const Vector& hi, Vector& delta,
+                       SolveFree&& solve_free, Gradient&& gradient, double scale) {
+  // state: 0 free, -1 at lower bound, +1 at upper bound, 2 fixed (lo == hi).
+  std::vector<signed char> state(n, 0);
+  delta.setZero(n);
+  for (int i = 0; i < n; ++i) {
+    if (lo[i] == hi[i]) {
+      state[i] = 2;
+      delta[i] = lo[i];
+    } else if (hi[i] == 0.0) {
+      state[i] = 1;
+    } else if (lo[i] == 0.0) {
+      state[i] = -1;
+    }
+  }
+  Vector y(n), g(n);
+  const int max_steps = 4 * n + 50;
+  const double tol = 1e-13 * scale;
+  for (int step = 0; step < max_steps; ++step) {
+    if (!solve_free(state, delta, y)) return false;
+    double alpha = 1.0;
+    int blocking = -1;
+    for (int i = 0; i < n; ++i) {
+      if (state[i] != 0) continue;
+      const double d = y[i] - delta[i];
+      if (d > 0 && y[i] > hi[i]) {
+        double a = (hi[i] - delta[i]) / d;
+        if (a < alpha) alpha = a, blocking = i;
+      } else if (d < 0 && y[i] < lo[i]) {
+        double a = (lo[i] - delta[i]) / d;
+        if (a < alpha) alpha = a, blocking = i;
+      }
+    }
+    if (blocking >= 0) {
+      alpha = std::max(alpha, 0.0);
+      for (int i = 0; i < n; ++i)
+        if (state[i] == 0)
+          delta[i] = std::clamp(delta[i] + alpha * (y[i] - delta[i]), lo[i], hi[i]);
+      const bool upper = y[blocking] > hi[blocking];
+      state[blocking] = upper ? 1 : -1;
+      delta[blocking] = upper ? hi[blocking] : lo[blocking];
+      continue;
+    }
+    for (int i = 0; i < n; ++i)
+      if (state[i] == 0) delta[i] = y[i];
+    // Multipliers: at an upper bound the gradient must be ≤ 0, at a lower bound ≥ 0.
+    gradient(delta, g);
+    int release = -1;
+    double worst = tol;
+    for (int i = 0; i < n; ++i) {
+      double violation = state[i] == 1 ? g[i] : state[i] == -1 ? -g[i] : 0.0;
+      if (violation > worst) worst = violation, release = i;
+    }
+    if (release < 0) return true;
+    state[release] = 0;
+  }
+  return true;  // capped: delta is feasible and J did not increase
+}
+
+}  // namespace
+
+bool solve_box_qp_dense(const Eigen::MatrixXd& A, const Vector& r, const Vector& lo,
+                        const Vector& hi, Vector& delta) {
+  const int n = static_cast<int>(r.size());
+  bool definite = true;
+  auto solve_free = [&](const std::vector<signed char>& state, const Vector& d, Vector& y) {
+    std::vector<int> free;
+    for (int i = 0; i < n; ++i)
+      if (state[i] == 0) free.push_back(i);
+    y = d;
+    if (free.empty()) return true;
+    const int m = static_cast<int>(free.size());
+    Eigen::MatrixXd aff(m, m);
+    Vector rhs(m);
+    for (int a = 0; a < m; ++a) {
+      rhs[a] = r[free[a]];
+      for (int j = 0; j < n; ++j)
+        if (state[j] != 0) rhs[a] -= A(free[a], j) * d[j];
+      for (int b = 0; b < m; ++b) aff(a, b) = A(free[a], free[b]);
+    }
+    Eigen::LLT<Eigen::MatrixXd> llt(aff);
+    if (llt.info() != Eigen::Success) return definite = false;
+    Vector sol = llt.solve(rhs);
+    for (int a = 0; a < m; ++a) y[free[a]] = sol[a];
+    return true;
+  };
+  auto gradient = [&](const Vector& d, Vector& g) { g = A * d - r; };
+  const double scale = std::max(1e-300, r.lpNorm<Eigen::Infinity>());
+  primal_active_set(n, lo, hi, delta, solve_free, gradient, scale);
+  return definite;
+}
+
+struct CoarseBoxQpSolver::Factor {
+  Eigen::SimplicialLDLT<SparseMatrix> ldlt;
+};
+
+CoarseBoxQpSolver::CoarseBoxQpSolver(const SparseMatrix& A)
+    : A_(A), full_(std::make_shared<Factor>()) {
+  full_->ldlt.compute(A_);
+  bool ok = full_->ldlt.info() == Eigen::Success;
+  if (ok)
+    for (int i = 0; i < full_->ldlt.vectorD().size(); ++i) ok &= full_->ldlt.vectorD()[i] > 0;
+  if (!ok) throw std::runtime_error("the coarse-level matrix is not positive definite");
+}
+
+bool CoarseBoxQpSolver::solve(const Vector& r, const Vector& lo, const Vector& hi,
+                              Vector& delta) const {
+  const int n = static_cast<int>(r.size());
+  auto solve_free = [&](const std::vector<signed char>& state, const Vector& d, Vector& y) {
+    std::vector<int> free;
+    std::vector<int> index(n, -1);
+    for (int i = 0; i < n; ++i)
+      if (state[i] == 0) index[i] = static_cast<int>(free.size()), free.push_back(i);
+    y = d;
+    if (free.empty()) return true;
+    if (static_cast<int>(free.size()) == n) {
+      y = full_->ldlt.solve(r);
+      return true;
+    }
+    // rhs = r_F − A_FW d_W, and the free block.
+    Vector ad = Vector::Zero(n);
+    for (int j = 0; j < n; ++j)
+      if (state[j] != 0 && d[j] != 0.0)
+        for (SparseMatrix::InnerIterator it(A_, j); it; ++it) ad[it.row()] += it.value() * d[j];
+    const int m = static_cast<int>(free.size());
+    std::vector<Eigen::Triplet<double>> t;
+    Vector rhs(m);
+    for (int a = 0; a < m; ++a) {
+      rhs[a] = r[free[a]] - ad[free[a]];
+      for (SparseMatrix::InnerIterator it(A_, free[a]); it; ++it)
+        if (index[it.row()] >= 0) t.emplace_back(index[it.row()], a, it.value());
+    }
+    SparseMatrix aff(m, m);
+    aff.setFromTriplets(t.begin(), t.end());
+    Eigen::SimplicialLDLT<SparseMatrix> ldlt(aff);
+    if (ldlt.info() != Eigen::Success) return false;
+    Vector sol = ldlt.solve(rhs);
+    for (int a = 0; a < m; ++a) y[free[a]] = sol[a];
+    return true;
+  };
+  auto gradient = [&](const Vector& d, Vector& g) { g = A_ * d - r; };
+  const double scale = std::max(1e-300, r.lpNorm<Eigen::Infinity>());
+  return primal_active_set(n, lo, hi, delta, solve_free, gradient, scale);
+}
+
+}  // namespace fosls

@@ -1,0 +1,275 @@
+#include "solvers/contact_solver.hpp"
+
+#include <Eigen/CholmodSupport>
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <memory>
+#include <stdexcept>
+
+namespace fosls {
+
+const char* method_name(SolverMethod m) {
+  switch (m) {
+    case SolverMethod::kMmg:
+      return "mmg";
+    case SolverMethod::kTnnmg:
+      return "tnnmg";
+    case SolverMethod::kPdas:
+      return "pdas";
+    case SolverMethod::kPgs:
+      return "pgs";
+  }
+  return "?";
+}
+
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+/// Active set of an iterate: bounded DOFs at their bound.
+std::vector<char> active_set(const BoxQp& qp, const Vector& x) {
+  std::vector<char> a(x.size(), 0);
+  for (int i = 0; i < x.size(); ++i)
+    a[i] = (is_bounded_above(qp.upper[i]) && x[i] >= qp.upper[i]) ||
+           (is_bounded_below(qp.lower[i]) && x[i] <= qp.lower[i]);
+  return a;
+}
+
+/// One iteration of a method: x and r = b − A x in, the next iterate out.
+class Step {
+ public:
+  virtual ~Step() = default;
+  virtual void iterate(Vector& x, Vector& r) = 0;
+  virtual CycleStatistics statistics() const { return {}; }
+};
+
+class MmgStep : public Step {
+ public:
+  MmgStep(const BoxQp& qp, const LevelHierarchy& h, const MultilevelOptions& o)
+      : cycle_(qp, h, o) {}
+  void iterate(Vector& x, Vector& r) override { cycle_.nonlinear_cycle(x, r); }
+  CycleStatistics statistics() const override { return cycle_.statistics(); }
+  MultilevelCycle& cycle() { return cycle_; }
+
+ private:
+  MultilevelCycle cycle_;
+};
+
+class PgsStep : public Step {
+ public:
+  PgsStep(const BoxQp& qp, const LevelHierarchy& h, const MultilevelOptions& o) : qp_(qp) {
+    if (o.smoother == SmootherType::kPatch)
+      patch_ = std::make_unique<PatchSmoother>(qp.A, h.levels.back().patches);
+    else
+      point_ = std::make_unique<PointSmoother>(qp.A);
+  }
+  void iterate(Vector& x, Vector& r) override {
+    if (patch_)
+      patch_->sweep(x, r, qp_.lower, qp_.upper, true);
+    else
+      point_->sweep(x, r, qp_.lower, qp_.upper, true);
+  }
+
+ private:
+  const BoxQp& qp_;
+  std::unique_ptr<PatchSmoother> patch_;
+  std::unique_ptr<PointSmoother> point_;
+};
+
+/// Gräser & Kornhuber: non-linear smoothing, one truncated linear V-cycle on the inactive
+/// set, projection onto the bounds, exact line search on J.
+class TnnmgStep : public Step {
+ public:
+  TnnmgStep(const BoxQp& qp, const LevelHierarchy& h, const MultilevelOptions& o)
+      : qp_(qp), options_(o), cycle_(qp, h, o) {}
+  void iterate(Vector& x, Vector& r) override {
+    for (int s = 0; s < std::max(1, options_.pre_smoothing); ++s) cycle_.smooth(x, r, true);
+    const std::vector<char> frozen = active_set(qp_, x);
+    Vector c = Vector::Zero(x.size()), rc = r;
+    cycle_.linear_cycle(frozen, c, rc);
+    Vector d(x.size());
+    for (int i = 0; i < x.size(); ++i)
+      d[i] = std::clamp(x[i] + c[i], qp_.lower[i], qp_.upper[i]) - x[i];
+    Vector ad;
+    symmetric_multiply(qp_.A, d, ad);
+    const double curvature = d.dot(ad);
+    const double alpha = curvature > 0 ? std::clamp(r.dot(d) / curvature, 0.0, 1.0) : 0.0;
+    if (alpha > 0) {
+      for (int i = 0; i < x.size(); ++i)
+        x[i] = alpha == 1.0 ? x[i] + d[i]
+                            : std::clamp(x[i] + alpha * d[i], qp_.lower[i], qp_.upper[i]);
+      // Land exactly on bounds reached by the projection.
+      if (alpha == 1.0)
+        for (int i = 0; i < x.size(); ++i) x[i] = std::clamp(x[i], qp_.lower[i], qp_.upper[i]);
+      r -= alpha * ad;
+    }
+    for (int s = 0; s < options_.post_smoothing; ++s) cycle_.smooth(x, r, false);
+  }
+  CycleStatistics statistics() const override { return cycle_.statistics(); }
+
+ private:
+  const BoxQp& qp_;
+  MultilevelOptions options_;
+  MultilevelCycle cycle_;
+};
+
+/// Semismooth Newton / primal–dual active set with a CHOLMOD factorisation: the pattern is
+/// analysed once, the numeric factorisation is redone for every active set (rows and columns
+/// of active DOFs replaced by the identity, so the pattern never changes).
+class PdasStep : public Step {
+ public:
+  explicit PdasStep(const BoxQp& qp) : qp_(qp), m_(qp.A), diagonal_(qp.A.diagonal()) {
+    llt_.analyzePattern(m_);
+    if (llt_.info() != Eigen::Success)
+      throw std::runtime_error("CHOLMOD could not analyse the matrix");
+  }
+  void iterate(Vector& x, Vector& r) override {
+    const int n = qp_.size();
+    // Active-set test λ_i + c_i (x_i − ψ_i) > 0 with λ = b − A x on the current active set
+    // (zero elsewhere) and c_i = A_ii, which makes the test invariant to scaling of DOFs.
+    // The first iteration takes λ = b − A x everywhere as its multiplier estimate.
+    std::vector<char> active(n, 0);
+    for (int i = 0; i < n; ++i) {
+      if (!is_bounded_above(qp_.upper[i])) continue;
+      const double lambda = (first_ || current_[i]) ? r[i] : 0.0;
+      active[i] = lambda + diagonal_[i] * (x[i] - qp_.upper[i]) > 0;
+    }
+    first_ = false;
+    current_ = active;
+    // M = A with active rows/columns replaced by the identity; same pattern as A.
+    Vector rhs = qp_.b;
+    Vector psi = Vector::Zero(n);
+    for (int i = 0; i < n; ++i)
+      if (active[i]) psi[i] = qp_.upper[i];
+    Vector apsi;
+    symmetric_multiply(qp_.A, psi, apsi);
+    for (int i = 0; i < n; ++i) rhs[i] = active[i] ? psi[i] : rhs[i] - apsi[i];
+    const int* outer = qp_.A.outerIndexPtr();
+    const int* inner = qp_.A.innerIndexPtr();
+    const double* a = qp_.A.valuePtr();
+    double* m = m_.valuePtr();
+    for (int col = 0; col < n; ++col)
+      for (int k = outer[col]; k < outer[col + 1]; ++k) {
+        const int row = inner[k];
+        m[k] = (active[row] || active[col]) ? (row == col ? 1.0 : 0.0) : a[k];
+      }
+    llt_.factorize(m_);
+    if (llt_.info() != Eigen::Success)
+      throw std::runtime_error("CHOLMOD: the matrix is not positive definite");
+    x = llt_.solve(rhs);
+    for (int i = 0; i < n; ++i)
+      if (active[i]) x[i] = qp_.upper[i];
+    Vector ax;
+    symmetric_multiply(qp_.A, x, ax);
+    r = qp_.b - ax;
+  }
+
+ private:
+  const BoxQp& qp_;
+  SparseMatrix m_;
+  Vector diagonal_;
+  Eigen::CholmodSupernodalLLT<SparseMatrix> llt_;
+  std::vector<char> current_;
+  bool first_ = true;
+};
+
+}  // namespace
+
+SolverReport solve_contact(const BoxQp& qp, const LevelHierarchy& hierarchy,
+                           const SolverOptions& options, const SolverObserver& observer,
+                           Vector& x) {
+  SolverReport report;
+  const auto t_setup = Clock::now();
+  const int n = qp.size();
+  if (x.size() != n) x = Vector::Zero(n);
+  for (int i = 0; i < n; ++i) x[i] = std::clamp(x[i], qp.lower[i], qp.upper[i]);
+
+  std::unique_ptr<Step> step;
+  MultilevelCycle* cycle = nullptr;
+  switch (options.method) {
+    case SolverMethod::kMmg: {
+      auto s = std::make_unique<MmgStep>(qp, hierarchy, options.multilevel);
+      cycle = &s->cycle();
+      step = std::move(s);
+      break;
+    }
+    case SolverMethod::kTnnmg:
+      step = std::make_unique<TnnmgStep>(qp, hierarchy, options.multilevel);
+      break;
+    case SolverMethod::kPdas:
+      step = std::make_unique<PdasStep>(qp);
+      break;
+    case SolverMethod::kPgs:
+      step = std::make_unique<PgsStep>(qp, hierarchy, options.multilevel);
+      break;
+  }
+  if (cycle && observer.on_sweep)
+    cycle->set_sweep_hook([&](const Vector& xs, const Vector& rs) {
+      observer.on_sweep(qp.energy_from_residual(xs, rs));
+    });
+  report.setup_s = std::chrono::duration<double>(Clock::now() - t_setup).count();
+
+  const auto t0 = Clock::now();
+  Vector r;
+  symmetric_multiply(qp.A, x, r);
+  r = qp.b - r;
+  std::vector<char> active = active_set(qp, x);
+  auto record = [&](int k, double correction, int changed) {
+    IterationRecord rec;
+    rec.iteration = k;
+    rec.energy = qp.energy_from_residual(x, r);
+    rec.correction = correction;
+    rec.kkt_residual = qp.kkt_residual(x, r);
+    rec.active = static_cast<int>(std::count(active.begin(), active.end(), 1));
+    rec.changed = changed;
+    rec.time_s = std::chrono::duration<double>(Clock::now() - t0).count();
+    report.history.push_back(rec);
+    if (observer.on_iteration) observer.on_iteration(rec);
+    return rec;
+  };
+  report.initial_kkt = record(0, 0.0, 0).kkt_residual;
+  report.final_kkt = report.initial_kkt;
+  report.converged = report.initial_kkt == 0.0;
+  for (int k = 1; k <= options.max_iterations && !report.converged; ++k) {
+    if (observer.cancelled && observer.cancelled()) {
+      report.cancelled = true;
+      break;
+    }
+    const Vector x_old = x, r_old = r;
+    step->iterate(x, r);
+    // Recompute the residual so that rounding in the incremental updates cannot accumulate.
+    symmetric_multiply(qp.A, x, r);
+    r = qp.b - r;
+    const Vector dx = x - x_old;
+    const double correction = std::sqrt(std::max(0.0, dx.dot(r_old - r)));
+    const std::vector<char> now = active_set(qp, x);
+    int changed = 0;
+    for (int i = 0; i < n; ++i) changed += now[i] != active[i];
+    active = now;
+    const IterationRecord rec = record(k, correction, changed);
+    report.iterations = k;
+    report.final_kkt = rec.kkt_residual;
+    report.converged = rec.kkt_residual <= options.tolerance * report.initial_kkt;
+  }
+  report.active = static_cast<int>(std::count(active.begin(), active.end(), 1));
+  const int h = static_cast<int>(report.history.size());
+  if (h >= 2) {
+    const int span = std::min(5, h - 1);
+    const double a = report.history[h - 1 - span].kkt_residual,
+                 b = report.history[h - 1].kkt_residual;
+    report.asymptotic_rate = a > 0 && b > 0 ? std::pow(b / a, 1.0 / span) : 0.0;
+  }
+  report.solve_s = std::chrono::duration<double>(Clock::now() - t0).count();
+  report.cycle = step->statistics();
+  if (report.cancelled)
+    report.message = "cancelled after " + std::to_string(report.iterations) + " iterations";
+  else if (!report.converged)
+    report.message = "not converged: the KKT residual fell by a factor " +
+                     std::to_string(report.final_kkt / report.initial_kkt) + " in " +
+                     std::to_string(report.iterations) + " iterations, tolerance " +
+                     std::to_string(options.tolerance);
+  return report;
+}
+
+}  // namespace fosls

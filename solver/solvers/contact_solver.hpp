@@ -1,0 +1,54 @@
+#pragma once
+// The solve loop shared by every method: it owns the stopping rule (KKT residual relative to
+// the initial iterate's), the norms, the history and the observer; the methods are steps.
+
+#include <string>
+#include <vector>
+
+#include "core/box_qp.hpp"
+#include "core/level_hierarchy.hpp"
+#include "solvers/iteration_record.hpp"
+#include "solvers/multilevel_cycle.hpp"
+
+namespace fosls {
+
+enum class SolverMethod {
+  kMmg,    ///< monotone multilevel (the seed's method)
+  kTnnmg,  ///< truncated non-smooth Newton multigrid
+  kPdas,   ///< primal–dual active set on a CHOLMOD factorisation (direct reference)
+  kPgs,    ///< single-level projected Gauss–Seidel (pointwise or patch)
+};
+
+const char* method_name(SolverMethod m);
+
+struct SolverOptions {
+  SolverMethod method = SolverMethod::kMmg;
+  MultilevelOptions multilevel;  ///< smoother and smoothing steps are used by pgs and tnnmg too
+  double tolerance = 1e-8;       ///< on kkt_k / kkt_0
+  int max_iterations = 200;
+};
+
+struct SolverReport {
+  bool converged = false;
+  bool cancelled = false;
+  int iterations = 0;
+  double initial_kkt = 0.0;
+  double final_kkt = 0.0;
+  /// Geometric mean of the last (up to) 5 KKT reductions.
+  double asymptotic_rate = 0.0;
+  int active = 0;
+  /// Iteration 0 (the initial iterate) and every iteration after it.
+  std::vector<IterationRecord> history;
+  double setup_s = 0.0;
+  double solve_s = 0.0;
+  CycleStatistics cycle;
+  std::string message;
+};
+
+/// Minimises the QP from x (projected onto the bounds first). The hierarchy is needed by mmg
+/// and tnnmg only. Non-convergence is reported, not thrown; a matrix that is not positive
+/// definite throws std::runtime_error.
+SolverReport solve_contact(const BoxQp& qp, const LevelHierarchy& hierarchy,
+                           const SolverOptions& options, const SolverObserver& observer, Vector& x);
+
+}  // namespace fosls

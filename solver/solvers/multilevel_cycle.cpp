@@ -1,0 +1,242 @@
+#include "solvers/multilevel_cycle.hpp"
+
+#include <algorithm>
+#include <chrono>
+
+namespace fosls {
+
+namespace {
+double seconds_since(std::chrono::steady_clock::time_point t0) {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+}
+}  // namespace
+
+struct MultilevelCycle::LevelState {
+  SparseMatrix A;  ///< Galerkin matrix (coarse levels only)
+  std::unique_ptr<PatchSmoother> patch;
+  std::unique_ptr<PointSmoother> point;
+};
+
+MultilevelCycle::MultilevelCycle(const BoxQp& qp, const LevelHierarchy& hierarchy,
+                                 MultilevelOptions options)
+    : qp_(qp), hierarchy_(hierarchy), options_(options) {
+  const int nl = hierarchy.num_levels();
+  for (int j = 0; j < nl; ++j) levels_.push_back(std::make_unique<LevelState>());
+  set_truncation(std::vector<char>(qp.size(), 0));
+}
+
+MultilevelCycle::~MultilevelCycle() = default;
+
+const SparseMatrix& MultilevelCycle::matrix(int j) const {
+  return j == hierarchy_.num_levels() - 1 ? qp_.A : levels_[j]->A;
+}
+
+const SparseMatrix& MultilevelCycle::prolongation(int j) const {
+  return j == hierarchy_.num_levels() - 1 ? truncated_prolongation_
+                                          : hierarchy_.levels[j].prolongation;
+}
+
+void MultilevelCycle::set_truncation(const std::vector<char>& truncated) {
+  if (built_ && truncated == truncated_) return;
+  truncated_ = truncated;
+  const int top = hierarchy_.num_levels() - 1;
+  if (top > 0) {
+    // Truncated basis: coarse functions lose their component at active fine DOFs, i.e. the
+    // rows of P_J of those DOFs are zero.
+    truncated_prolongation_ = hierarchy_.levels[top].prolongation;
+    truncated_prolongation_.prune([this](int row, int, double) { return truncated_[row] == 0; });
+  }
+  rebuild_coarse_levels();
+  built_ = true;
+}
+
+void MultilevelCycle::rebuild_coarse_levels() {
+  const auto t0 = std::chrono::steady_clock::now();
+  const int top = hierarchy_.num_levels() - 1;
+  auto make_smoother = [this](int j) {
+    LevelState& s = *levels_[j];
+    s.patch.reset();
+    s.point.reset();
+    if (options_.smoother == SmootherType::kPatch)
+      s.patch = std::make_unique<PatchSmoother>(matrix(j), hierarchy_.levels[j].patches);
+    else
+      s.point = std::make_unique<PointSmoother>(matrix(j));
+  };
+  // The finest matrix never changes: its smoother is built once.
+  if (!built_) make_smoother(top);
+  for (int j = top - 1; j >= 0; --j) {
+    const SparseMatrix& p = prolongation(j + 1);
+    const SparseMatrix ap = matrix(j + 1) * p;
+    SparseMatrix& a = levels_[j]->A;
+    a = SparseMatrix(p.transpose()) * ap;
+    // A coarse DOF whose basis function was truncated away entirely has an empty row and
+    // column; a unit diagonal keeps the level definite and its correction (with zero
+    // restricted residual) exactly zero.
+    Vector diag = a.diagonal();
+    std::vector<Eigen::Triplet<double>> unit;
+    for (int i = 0; i < a.rows(); ++i)
+      if (diag[i] == 0.0) unit.emplace_back(i, i, 1.0);
+    if (!unit.empty()) {
+      SparseMatrix e(a.rows(), a.cols());
+      e.setFromTriplets(unit.begin(), unit.end());
+      a += e;
+    }
+    a.makeCompressed();
+    if (j > 0) make_smoother(j);
+  }
+  coarse_solver_ = std::make_unique<CoarseBoxQpSolver>(matrix(0));
+  ++stats_.galerkin_rebuilds;
+  stats_.galerkin_s += seconds_since(t0);
+}
+
+void MultilevelCycle::smooth_level(int j, Vector& c, Vector& r, const Vector& lo, const Vector& hi,
+                                   bool forward) {
+  const auto t0 = std::chrono::steady_clock::now();
+  const LevelState& s = *levels_[j];
+  if (s.patch)
+    s.patch->sweep(c, r, lo, hi, forward);
+  else
+    s.point->sweep(c, r, lo, hi, forward);
+  stats_.smoothing_s += seconds_since(t0);
+}
+
+void MultilevelCycle::smooth(Vector& x, Vector& r, bool forward) {
+  const int top = hierarchy_.num_levels() - 1;
+  smooth_level(top, x, r, qp_.lower, qp_.upper, forward);
+  if (sweep_hook_) sweep_hook_(x, r);
+}
+
+void MultilevelCycle::project_obstacle(int j, const Vector& c, const Vector& hi,
+                                       Vector& coarse_hi) const {
+  const bool top = j == hierarchy_.num_levels() - 1;
+  auto defect = [&](int i) {
+    if (i < 0 || !is_bounded_above(hi[i]) || (top && truncated_[i])) return kNoBound;
+    return std::max(0.0, hi[i] - c[i]);
+  };
+  for (const ContactLink& l : hierarchy_.levels[j].links) {
+    const double va = defect(l.fine_un_a), vm = defect(l.fine_un_mid), vb = defect(l.fine_un_b);
+    double ta = 0.0, tb = 0.0;
+    switch (options_.projection) {
+      case CoarseProjection::kA:
+        ta = std::min(va, std::max(vm, 2.0 * vm - vb));
+        tb = std::min(vb, std::max(vm, 2.0 * vm - va));
+        break;
+      case CoarseProjection::kB:
+        ta = std::min(va, vm);
+        tb = std::min(vb, vm);
+        break;
+      case CoarseProjection::kC:
+        ta = tb = std::min({va, vm, vb});
+        break;
+    }
+    if (l.coarse_un_a >= 0) coarse_hi[l.coarse_un_a] = std::min(coarse_hi[l.coarse_un_a], ta);
+    if (l.coarse_un_b >= 0) coarse_hi[l.coarse_un_b] = std::min(coarse_hi[l.coarse_un_b], tb);
+    if (l.coarse_sn >= 0) {
+      // Pressure: the coarse S_n may not exceed any child's defect, measured per unit of the
+      // prolongation weight (the minimum over the children of the σ_nn defects).
+      double bound = kNoBound;
+      for (int k = 0; k < 2; ++k) {
+        if (l.fine_sn[k] < 0) continue;
+        const double d = defect(l.fine_sn[k]);
+        bound = std::min(bound, l.sn_weight[k] > 0 ? d / l.sn_weight[k] : 0.0);
+      }
+      coarse_hi[l.coarse_sn] = std::min(coarse_hi[l.coarse_sn], bound);
+    }
+  }
+  for (int i = 0; i < coarse_hi.size(); ++i) coarse_hi[i] = std::max(0.0, coarse_hi[i]);
+}
+
+void MultilevelCycle::recurse(int j, Vector& c, Vector& r, const Vector& lo, const Vector& hi,
+                              bool constrained) {
+  const int top = hierarchy_.num_levels() - 1;
+  const SparseMatrix& A = matrix(j);
+  if (j == 0) {
+    const auto t0 = std::chrono::steady_clock::now();
+    const int n = static_cast<int>(c.size());
+    Vector dlo(n), dhi(n), delta;
+    for (int i = 0; i < n; ++i) {
+      dlo[i] = std::min(0.0, lo[i] - c[i]);
+      dhi[i] = std::max(0.0, hi[i] - c[i]);
+    }
+    coarse_solver_->solve(r, dlo, dhi, delta);
+    Vector change(n);
+    for (int i = 0; i < n; ++i) {
+      const double updated = std::clamp(c[i] + delta[i], lo[i], hi[i]);
+      change[i] = updated - c[i];
+      c[i] = updated;
+    }
+    r -= A * change;
+    stats_.coarse_s += seconds_since(t0);
+    if (j == top && sweep_hook_) sweep_hook_(c, r);
+    return;
+  }
+  for (int s = 0; s < options_.pre_smoothing; ++s) {
+    smooth_level(j, c, r, lo, hi, true);
+    if (j == top && sweep_hook_) sweep_hook_(c, r);
+  }
+  if (j == top && constrained) {
+    // N•: bounded fine DOFs at their bound after smoothing.
+    std::vector<char> active(c.size(), 0);
+    for (int i = 0; i < c.size(); ++i)
+      active[i] =
+          (is_bounded_above(hi[i]) && c[i] >= hi[i]) || (is_bounded_below(lo[i]) && c[i] <= lo[i]);
+    set_truncation(active);
+  }
+  const SparseMatrix& P = prolongation(j);
+  const int nc = static_cast<int>(P.cols());
+  Vector rc = P.transpose() * r;
+  Vector lo_c = Vector::Constant(nc, -kNoBound), hi_c = Vector::Constant(nc, kNoBound);
+  if (constrained) project_obstacle(j, c, hi, hi_c);
+  Vector cc = Vector::Zero(nc);
+  // γ = 1: V-cycle, γ = 2: W-cycle (the coarse problem is visited twice; its bounds are on the
+  // total coarse correction, so the second visit continues from the first).
+  const int visits = j - 1 > 0 ? options_.cycle_index : 1;
+  for (int g = 0; g < visits; ++g) recurse(j - 1, cc, rc, lo_c, hi_c, constrained);
+  Vector v = P * cc;
+  double alpha = 1.0;
+  if (constrained) {
+    // Safeguard: the projections make K_{j−1} ⊂ K_j exactly where contact normals agree
+    // between levels; on curved boundaries the shortened step keeps every iterate feasible,
+    // and J still decreases since J is convex and the coarse correction lowers it.
+    for (int i = 0; i < v.size(); ++i) {
+      if (v[i] > 0 && c[i] + v[i] > hi[i]) alpha = std::min(alpha, (hi[i] - c[i]) / v[i]);
+      if (v[i] < 0 && c[i] + v[i] < lo[i]) alpha = std::min(alpha, (lo[i] - c[i]) / v[i]);
+    }
+    alpha = std::max(alpha, 0.0);
+    if (alpha < 1.0) ++stats_.safeguard_reductions;
+  }
+  if (alpha > 0.0) {
+    Vector change(v.size());
+    for (int i = 0; i < v.size(); ++i) {
+      const double updated = std::clamp(c[i] + alpha * v[i], lo[i], hi[i]);
+      change[i] = updated - c[i];
+      c[i] = updated;
+    }
+    Vector ac;
+    symmetric_multiply(A, change, ac);
+    r -= ac;
+  }
+  if (j == top && sweep_hook_) sweep_hook_(c, r);
+  for (int s = 0; s < options_.post_smoothing; ++s) {
+    smooth_level(j, c, r, lo, hi, false);
+    if (j == top && sweep_hook_) sweep_hook_(c, r);
+  }
+}
+
+void MultilevelCycle::nonlinear_cycle(Vector& x, Vector& r) {
+  recurse(hierarchy_.num_levels() - 1, x, r, qp_.lower, qp_.upper, true);
+}
+
+void MultilevelCycle::linear_cycle(const std::vector<char>& frozen, Vector& c, Vector& r) {
+  const int n = qp_.size();
+  set_truncation(frozen);
+  Vector lo = Vector::Constant(n, -kNoBound), hi = Vector::Constant(n, kNoBound);
+  for (int i = 0; i < n; ++i)
+    if (frozen[i]) lo[i] = hi[i] = 0.0;
+  auto hook = std::move(sweep_hook_);
+  sweep_hook_ = nullptr;
+  recurse(hierarchy_.num_levels() - 1, c, r, lo, hi, false);
+  sweep_hook_ = std::move(hook);
+}
+
+}  // namespace fosls

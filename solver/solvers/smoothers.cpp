@@ -1,0 +1,109 @@
+#include "solvers/smoothers.hpp"
+
+#include <Eigen/Dense>
+#include <algorithm>
+#include <stdexcept>
+#include <string>
+
+#include "solvers/box_qp_solver.hpp"
+
+namespace fosls {
+
+PointSmoother::PointSmoother(const SparseMatrix& A) : A_(A), diagonal_(A.diagonal()) {}
+
+void PointSmoother::sweep(Vector& x, Vector& r, const Vector& lo, const Vector& hi,
+                          bool forward) const {
+  const int n = static_cast<int>(x.size());
+  for (int k = 0; k < n; ++k) {
+    const int i = forward ? k : n - 1 - k;
+    if (diagonal_[i] <= 0.0) continue;
+    const double xi = std::clamp(x[i] + r[i] / diagonal_[i], lo[i], hi[i]);
+    const double d = xi - x[i];
+    if (d == 0.0) continue;
+    x[i] = xi;
+    update_residual(A_, i, d, r);
+  }
+}
+
+PatchSmoother::PatchSmoother(const SparseMatrix& A, const std::vector<std::vector<int>>& patches)
+    : A_(A), patches_(patches) {
+  offset_.resize(patches.size() + 1, 0);
+  for (std::size_t p = 0; p < patches.size(); ++p)
+    offset_[p + 1] = offset_[p] + patches[p].size() * patches[p].size();
+  factors_.resize(offset_.back());
+  int failed = -1;
+#pragma omp parallel
+  {
+    std::vector<int> local(A.rows(), -1);
+#pragma omp for schedule(dynamic, 256)
+    for (std::size_t p = 0; p < patches.size(); ++p) {
+      const auto& idx = patches[p];
+      const int m = static_cast<int>(idx.size());
+      for (int a = 0; a < m; ++a) local[idx[a]] = a;
+      Eigen::Map<Eigen::MatrixXd> block(factors_.data() + offset_[p], m, m);
+      block.setZero();
+      for (int b = 0; b < m; ++b)
+        for (SparseMatrix::InnerIterator it(A, idx[b]); it; ++it)
+          if (int a = local[it.row()]; a >= 0) block(a, b) = it.value();
+      for (int a = 0; a < m; ++a) local[idx[a]] = -1;
+      Eigen::LLT<Eigen::Ref<Eigen::MatrixXd>> llt(block);  // in place: block becomes L
+      if (llt.info() != Eigen::Success) {
+#pragma omp critical
+        failed = static_cast<int>(p);
+      }
+    }
+  }
+  if (failed >= 0)
+    throw std::runtime_error("the local matrix of vertex patch " + std::to_string(failed) +
+                             " is not positive definite");
+}
+
+void PatchSmoother::solve_patch(int p, Vector& x, Vector& r, const Vector& lo,
+                                const Vector& hi) const {
+  const auto& idx = patches_[p];
+  const int m = static_cast<int>(idx.size());
+  Eigen::Map<const Eigen::MatrixXd> l(factors_.data() + offset_[p], m, m);
+  Vector rl(m), delta(m);
+  bool bounded = false;
+  for (int a = 0; a < m; ++a) {
+    rl[a] = r[idx[a]];
+    bounded |= is_bounded_above(hi[idx[a]]) || is_bounded_below(lo[idx[a]]);
+  }
+  if (!bounded) {
+    delta = l.triangularView<Eigen::Lower>().solve(rl);
+    l.transpose().triangularView<Eigen::Upper>().solveInPlace(delta);
+  } else {
+    const Eigen::MatrixXd lower = l.triangularView<Eigen::Lower>();
+    const Eigen::MatrixXd a = lower * lower.transpose();
+    Vector dlo(m), dhi(m);
+    for (int k = 0; k < m; ++k) {
+      dlo[k] = std::min(0.0, lo[idx[k]] - x[idx[k]]);
+      dhi[k] = std::max(0.0, hi[idx[k]] - x[idx[k]]);
+    }
+    solve_box_qp_dense(a, rl, dlo, dhi, delta);
+    // Land exactly on the bounds the local solve made active.
+    for (int k = 0; k < m; ++k) {
+      if (delta[k] >= dhi[k]) delta[k] = dhi[k];
+      if (delta[k] <= dlo[k]) delta[k] = dlo[k];
+    }
+  }
+  for (int a = 0; a < m; ++a) {
+    if (delta[a] == 0.0) continue;
+    const int j = idx[a];
+    const double target = x[j] + delta[a];
+    // Exactness of the bound: x_j + (hi_j − x_j) may differ from hi_j by rounding.
+    const double updated = (delta[a] > 0 && target >= hi[j])   ? hi[j]
+                           : (delta[a] < 0 && target <= lo[j]) ? lo[j]
+                                                               : target;
+    update_residual(A_, j, updated - x[j], r);
+    x[j] = updated;
+  }
+}
+
+void PatchSmoother::sweep(Vector& x, Vector& r, const Vector& lo, const Vector& hi,
+                          bool forward) const {
+  const int np = static_cast<int>(patches_.size());
+  for (int k = 0; k < np; ++k) solve_patch(forward ? k : np - 1 - k, x, r, lo, hi);
+}
+
+}  // namespace fosls
