@@ -2,7 +2,10 @@
 
 #include <unistd.h>
 
+#include <cerrno>
 #include <cstdio>
+#include <cstring>
+#include <filesystem>
 #include <fstream>
 #include <iostream>
 #include <memory>
@@ -57,10 +60,30 @@ class ProgressLine {
 
 bool write_file(const std::string& path, const std::string& text) {
   std::ofstream out(path, std::ios::binary | std::ios::trunc);
+  if (!out) {
+    std::cerr << "error: cannot write " << path << ": " << std::strerror(errno) << '\n';
+    return false;
+  }
   out << text;
   out.close();
   if (!out) {
     std::cerr << "error: cannot write " << path << '\n';
+    return false;
+  }
+  return true;
+}
+
+/// Checks an output path before solving, so that a long solve is not lost to a typo.
+bool output_folder_ok(const std::string& option, const std::string& path) {
+  if (path.empty()) return true;
+  std::error_code ec;
+  const auto folder = std::filesystem::absolute(path, ec).parent_path();
+  if (ec || !std::filesystem::is_directory(folder, ec)) {
+    std::cerr << "error: " << option << ": the folder " << folder.string() << " does not exist\n";
+    return false;
+  }
+  if (std::filesystem::is_directory(path, ec)) {
+    std::cerr << "error: " << option << ": " << path << " is a folder; give a file name\n";
     return false;
   }
   return true;
@@ -85,6 +108,8 @@ int run_solve(const SolveOptions& o) {
   CaseReadOptions read_options;
   read_options.allow_geo_file = true;  // a local file given by the user who runs the program
 
+  if (!output_folder_ok("--out", o.out_path) || !output_folder_ok("--vtu", o.vtu_path))
+    return kExitBadInput;
   CaseFile file = load_case_file(o.case_path, read_options.limits.max_case_bytes);
   if (!file.problem.empty()) {
     std::cerr << "error: " << o.case_path << ": " << file.problem << '\n';

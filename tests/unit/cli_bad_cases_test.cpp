@@ -275,6 +275,17 @@ TEST(CliBadCases, FolderTooLargeFileAndUsageErrors) {
             std::string::npos)
       << r.err;
 
+  // Output paths are checked before solving, so a long solve is not lost to a typo.
+  r = run_program({"solve", (work / "cases" / "case.json").string(), "--out",
+                   (work / "missing_folder" / "result.json").string()},
+                  work);
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_NE(r.err.find("error: --out: "), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("does not exist"), std::string::npos) << r.err;
+  r = run_program({"solve", (work / "cases" / "case.json").string(), "--vtu", work.string()}, work);
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_NE(r.err.find("is a folder"), std::string::npos) << r.err;
+
   r = run_program({"solve"}, work);
   EXPECT_EQ(r.exit_code, 2);
   r = run_program({"solve", "x.json", "--no-such-option"}, work);
