@@ -506,9 +506,15 @@ class CaseReader {
               groups_ok = false;
               continue;
             }
+            auto& owners = groups_of_curve[*index];
+            if (!owners.empty() && owners.back() == name) {
+              error(child(gp, i), "curve " + std::to_string(*index) +
+                                      " is listed twice in this group; list it once");
+              groups_ok = false;
+              continue;
+            }
             group.curves.push_back(*index);
-            if (*index < static_cast<int>(groups_of_curve.size()))
-              groups_of_curve[*index].push_back(name);
+            owners.push_back(name);
           }
           g.groups.push_back(std::move(group));
         }

@@ -245,7 +245,7 @@ TEST(ReadCase, GeometryErrors) {
                  {"type": "arc", "points": [1, 4], "center": 0},
                  {"type": "line", "points": [2, 9]},
                  {"type": "spline", "points": [2, 0]}],
-      "groups": {"a": [0, 1], "b": [1, 7]}}})");
+      "groups": {"a": [0, 1, 0], "b": [1, 7]}}})");
   const auto r = read_case(j);
   EXPECT_FALSE(r.spec);
   EXPECT_TRUE(has_error(r, "/mesh/geometry/curves/1", "half circle")) << dump_errors(r.errors);
@@ -253,6 +253,7 @@ TEST(ReadCase, GeometryErrors) {
   EXPECT_TRUE(has_error(r, "/mesh/geometry/curves/3/points/1", "from 0 to 4"));
   EXPECT_TRUE(has_error(r, "/mesh/geometry/curves/4/type", "line, arc"));
   EXPECT_TRUE(has_error(r, "/mesh/geometry/groups/b/1", "from 0 to 4"));
+  EXPECT_TRUE(has_error(r, "/mesh/geometry/groups/a/2", "listed twice"));
 }
 
 TEST(ReadCase, GeometryMustBeOneClosedLoopWithEveryCurveInOneGroup) {
