@@ -7,6 +7,7 @@
 
 #include <chrono>
 #include <fstream>
+#include <map>
 #include <memory>
 #include <sstream>
 #include <thread>
@@ -65,7 +66,13 @@ class Service {
   httplib::Client client() const { return httplib::Client("127.0.0.1", port_); }
   SqliteJobStore& store() { return store_; }
   WorkerPool& pool() { return pool_; }
-  std::string log() const { return log_text_.str(); }
+  /// The log so far (a file: server threads may be writing while the test reads).
+  std::string log() const {
+    std::ifstream in(dir_.file("service.log"));
+    std::stringstream ss;
+    ss << in.rdbuf();
+    return ss.str();
+  }
 
   json wait_state(std::int64_t id, const std::string& state) {
     auto cli = client();
@@ -98,8 +105,8 @@ class Service {
   }
 
   TempDir dir_;
-  std::ostringstream log_text_;
-  EventLog log_{log_text_};
+  std::ofstream log_file_{dir_.file("service.log")};
+  EventLog log_{log_file_};
   Metrics metrics_;
   SqliteJobStore store_;
   WorkerPool pool_;
@@ -356,29 +363,45 @@ TEST(HttpApi, HealthMetricsAndLogLines) {
   auto health = cli.Get("/healthz");
   ASSERT_EQ(health->status, 200);
   EXPECT_EQ(json::parse(health->body)["status"], "ok");
-  auto metrics = cli.Get("/metrics");
-  ASSERT_EQ(metrics->status, 200);
-  EXPECT_NE(metrics->body.find("fosls_jobs{state=\"queued\"} 1"), std::string::npos);
-  EXPECT_NE(metrics->body.find("fosls_queue_depth 1"), std::string::npos);
-  EXPECT_NE(metrics->body.find("fosls_http_requests_total{method=\"POST\",route=\"/v1/jobs\","
-                               "status=\"202\"} 1"),
-            std::string::npos);
-  EXPECT_NE(metrics->body.find("fosls_http_request_seconds_count"), std::string::npos);
-
-  // One JSON line per request with method, path, status and duration.
-  std::istringstream lines(svc.log());
-  std::string line;
-  int requests = 0;
-  while (std::getline(lines, line)) {
-    json event = json::parse(line);
-    if (event["event"] != "http_request") continue;
-    ++requests;
-    EXPECT_TRUE(event["method"].is_string());
-    EXPECT_TRUE(event["path"].is_string());
-    EXPECT_TRUE(event["status"].is_number());
-    EXPECT_TRUE(event["duration_ms"].is_number());
+  // Requests are counted when they are logged, just after their response is written.
+  const std::string posted =
+      "fosls_http_requests_total{method=\"POST\",route=\"/v1/jobs\",status=\"202\"} 1";
+  std::string metrics;
+  for (int i = 0; i < 1000; ++i) {
+    auto res = cli.Get("/metrics");
+    ASSERT_EQ(res->status, 200);
+    metrics = res->body;
+    if (metrics.find(posted) != std::string::npos) break;
+    std::this_thread::sleep_for(std::chrono::milliseconds(10));
   }
-  EXPECT_EQ(requests, 2);  // the /metrics request is logged after its response is written
+  EXPECT_NE(metrics.find(posted), std::string::npos) << metrics;
+  EXPECT_NE(metrics.find("fosls_jobs{state=\"queued\"} 1"), std::string::npos);
+  EXPECT_NE(metrics.find("fosls_queue_depth 1"), std::string::npos);
+  EXPECT_NE(metrics.find("fosls_http_request_seconds_count"), std::string::npos);
+
+  // One JSON line per request with method, path, status and duration. The logger runs
+  // after the response is written, so wait (bounded) for the lines of the two requests.
+  std::map<std::string, int> seen;
+  const auto give_up = std::chrono::steady_clock::now() + std::chrono::seconds(10);
+  while (seen["POST /v1/jobs 202"] == 0 || seen["GET /healthz 200"] == 0 ||
+         seen["GET /metrics 200"] == 0) {
+    ASSERT_LT(std::chrono::steady_clock::now(), give_up) << svc.log();
+    std::this_thread::sleep_for(std::chrono::milliseconds(5));
+    seen.clear();
+    std::istringstream lines(svc.log());
+    std::string line;
+    while (std::getline(lines, line)) {
+      json event = json::parse(line, nullptr, false);
+      if (event.is_discarded()) continue;  // a line being written right now
+      if (event["event"] != "http_request") continue;
+      EXPECT_TRUE(event["duration_ms"].is_number()) << line;
+      ++seen[event["method"].get<std::string>() + " " + event["path"].get<std::string>() + " " +
+             std::to_string(event["status"].get<int>())];
+    }
+  }
+  EXPECT_EQ(seen["POST /v1/jobs 202"], 1);
+  EXPECT_EQ(seen["GET /healthz 200"], 1);
+  EXPECT_GE(seen["GET /metrics 200"], 1);
 }
 
 TEST(HttpApi, StaticFilesStayInsideTheWebRoot) {
