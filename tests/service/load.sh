@@ -60,11 +60,13 @@ echo "machine: $(nproc) cores, $(sed -n 's/^model name[[:space:]]*: //p' /proc/c
 echo "while 2 workers solve (jobs ${ids[*]}), ${seconds}s per endpoint:"
 targets=("/v1/jobs/${ids[0]}" "/v1/jobs?page_size=20" "/healthz")
 if command -v wrk >/dev/null; then
-  for t in "${targets[@]}"; do
-    echo "== GET $t (wrk -t2 -c8)"
-    timeout $((seconds + 30)) wrk -t2 -c8 -d"${seconds}s" --latency "$base$t" |
-      grep -E 'Latency|50%|75%|90%|99%|Requests/sec|requests in|Non-2xx|Socket errors'
-  done
+  run_wrk() {  # threads connections path
+    echo "== GET $3 (wrk -t$1 -c$2)"
+    timeout $((seconds + 30)) wrk -t"$1" -c"$2" -d"${seconds}s" --latency "$base$3" |
+      grep -E '^ +(50|90|99)%|Requests/sec|Non-2xx|Socket errors'
+  }
+  run_wrk 1 1 "${targets[0]}"  # one client polling back to back
+  for t in "${targets[@]}"; do run_wrk 2 8 "$t"; done
 else
   for t in "${targets[@]}"; do
     echo "== GET $t (sequential curl)"
