@@ -94,7 +94,7 @@ Problem media_type_problem(const std::string& got) {
 std::string parse_error_message(const std::string& text) {
   try {
     [[maybe_unused]] const auto j = nlohmann::json::parse(text);
-  } catch (const nlohmann::json::parse_error& e) {
+  } catch (const nlohmann::json::exception& e) {  // parse_error, or out_of_range for 1e999
     return e.what();
   }
   return "unknown parse error";

@@ -182,6 +182,7 @@ TEST(HttpApi, BodyErrors) {
                  "unsupported-media-type");
   expect_problem(cli.Post("/v1/jobs", "{}", "text/plain"), 415);
   expect_problem(post_json(cli, "/v1/jobs", "{\"name\": "), 400, "unparsable-json");
+  expect_problem(post_json(cli, "/v1/jobs", "{\"size\": 1e999}"), 400, "unparsable-json");
   expect_problem(post_json(cli, "/v1/jobs", std::string(100, '[') + std::string(100, ']')), 400,
                  "unparsable-json");
   expect_problem(post_json(cli, "/v1/jobs", "{\"pad\":\"" + std::string(5000, 'x') + "\"}"), 413);
