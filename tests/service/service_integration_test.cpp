@@ -278,6 +278,17 @@ TEST(ServiceIntegration, ErrorPaths) {
   }
   EXPECT_TRUE(names_geo_file) << geo_res->body;
 
+  // Valid JSON but indefinite weights: only found while running (CaseException), so the job
+  // is accepted and then fails with the pointer and the reason.
+  json indefinite = small_case();
+  indefinite["weights"] = {{"c1", 1}, {"c2", 1}, {"c3", 1000}};
+  const auto doomed = svc.submit(indefinite);
+  const json failed = svc.wait_state(doomed, "failed");
+  EXPECT_NE(failed["error"].get<std::string>().find("/weights"), std::string::npos) << failed;
+  auto failed_result = cli.Get(("/v1/jobs/" + std::to_string(doomed) + "/result").c_str());
+  expect_problem(failed_result, 409);
+  EXPECT_NE(failed_result->body.find("/weights"), std::string::npos);
+
   // 404: unknown job, unknown route.
   expect_problem(cli.Get("/v1/jobs/424242"), 404);
   expect_problem(cli.Get("/v1/jobs/424242/result"), 404);
@@ -295,8 +306,8 @@ TEST(ServiceIntegration, ErrorPaths) {
   expect_problem(cancelled_result, 409);
   EXPECT_NE(cancelled_result->body.find("cancelled"), std::string::npos);
 
-  // Nothing above was queued except the cancelled job; no request crashed the server.
-  EXPECT_EQ(json::parse(cli.Get("/v1/jobs")->body)["jobs"].size(), 1u);
+  // Nothing above was queued except those two jobs; no request crashed the server.
+  EXPECT_EQ(json::parse(cli.Get("/v1/jobs")->body)["jobs"].size(), 2u);
   EXPECT_EQ(cli.Get("/healthz")->status, 200);
 }
 
