@@ -1,5 +1,7 @@
 #include "assembly/discretization.hpp"
 
+#include <algorithm>
+
 #include "fem/transfer.hpp"
 
 namespace fosls {
@@ -30,6 +32,40 @@ std::vector<std::vector<int>> vertex_patches(const FoslsSpace& space) {
   return patches;
 }
 
+std::vector<int> contact_strip(const FoslsSpace& space, int layers) {
+  const Mesh& mesh = space.mesh();
+  std::vector<char> on_contact(mesh.num_vertices(), 0);
+  for (int e = 0; e < mesh.num_edges(); ++e)
+    if (space.is_contact_edge(e))
+      for (int v : mesh.edge(e)) on_contact[v] = 1;
+  for (int layer = 1; layer < layers; ++layer) {
+    std::vector<char> next = on_contact;
+    for (int t = 0; t < mesh.num_triangles(); ++t) {
+      const auto& tri = mesh.triangle(t);
+      if (on_contact[tri[0]] || on_contact[tri[1]] || on_contact[tri[2]])
+        for (int v : tri) next[v] = 1;
+    }
+    on_contact = next;
+  }
+  std::vector<char> taken(space.num_free(), 0);
+  std::vector<int> strip;
+  auto take = [&](int full) {
+    const int f = space.free_index(full);
+    if (f >= 0 && !taken[f]) taken[f] = 1, strip.push_back(f);
+  };
+  for (int t = 0; t < mesh.num_triangles(); ++t) {
+    const auto& tri = mesh.triangle(t);
+    if (!on_contact[tri[0]] && !on_contact[tri[1]] && !on_contact[tri[2]]) continue;
+    for (int k = 0; k < 3; ++k)
+      for (int c = 0; c < 2; ++c) {
+        take(space.u_dof(tri[k], c));
+        take(space.sigma_dof(mesh.triangle_edge(t, k), c));
+      }
+  }
+  std::sort(strip.begin(), strip.end());
+  return strip;
+}
+
 LevelHierarchy Discretization::build_hierarchy() const {
   LevelHierarchy h;
   h.levels.resize(num_levels());
@@ -38,6 +74,7 @@ LevelHierarchy Discretization::build_hierarchy() const {
     Level& level = h.levels[j];
     level.num_dofs = fine.num_free();
     level.patches = vertex_patches(fine);
+    level.contact_strip = contact_strip(fine);
     if (j == 0) continue;
     const FoslsSpace& coarse = *spaces_[j - 1];
     const RefinementMaps& maps = meshes_.maps[j];

@@ -28,6 +28,8 @@ struct Level {
   std::vector<std::vector<int>> patches;
   /// Relation of the contact DOFs of level j−1 to those of level j.
   std::vector<ContactLink> links;
+  /// DOFs of the triangles touching the contact boundary: the block of the strip smoother.
+  std::vector<int> contact_strip;
 };
 
 /// Levels coarsest first; the finest level is the one of the BoxQp.

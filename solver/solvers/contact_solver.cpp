@@ -174,6 +174,61 @@ class PdasStep : public Step {
   bool first_ = true;
 };
 
+/// The Galerkin problem of level j−1 seen from the problem of level j at x = 0: A_{j−1} = PᵀAP,
+/// b_{j−1} = Pᵀb and upper bounds by the coarse-obstacle projection of the level-j bounds.
+BoxQp coarser_problem(const BoxQp& fine, const Level& level, CoarseProjection projection) {
+  const SparseMatrix& p = level.prolongation;
+  BoxQp c;
+  const SparseMatrix ap = fine.A * p;
+  c.A = SparseMatrix(p.transpose()) * ap;
+  c.A.makeCompressed();
+  c.b = p.transpose() * fine.b;
+  const int n = static_cast<int>(p.cols());
+  c.lower = Vector::Constant(n, -kNoBound);
+  c.upper = Vector::Constant(n, kNoBound);
+  Vector defect(fine.size());
+  for (int i = 0; i < fine.size(); ++i)
+    defect[i] = is_bounded_above(fine.upper[i]) ? fine.upper[i] : kNoBound;
+  project_defect(level, projection, defect, c.upper);
+  return c;
+}
+
+/// Nested iteration: the initial iterate of the finest level from solves on the coarser ones.
+/// Returns false (x untouched) when x = 0 is not feasible, e.g. for a negative gap.
+bool nested_initial_guess(const BoxQp& qp, const LevelHierarchy& h, const SolverOptions& options,
+                          Vector& x, SolverReport& report) {
+  const int top = h.num_levels() - 1;
+  if (top < 1) return false;
+  for (int i = 0; i < qp.size(); ++i)
+    if (qp.lower[i] > 0 || qp.upper[i] < 0) return false;
+  std::vector<BoxQp> problems(top);
+  for (int j = top; j >= 1; --j)
+    problems[j - 1] =
+        coarser_problem(j == top ? qp : problems[j], h.levels[j], options.multilevel.projection);
+  SolverOptions inner = options;
+  inner.nested = false;
+  inner.tolerance = options.nested_tolerance;
+  inner.max_iterations = options.nested_max_iterations;
+  Vector xc;
+  for (int j = 0; j < top; ++j) {
+    LevelHierarchy sub;
+    sub.levels.assign(h.levels.begin(), h.levels.begin() + j + 1);
+    if (j > 0) {
+      xc = h.levels[j].prolongation * xc;
+      for (int i = 0; i < xc.size(); ++i)
+        xc[i] = std::clamp(xc[i], problems[j].lower[i], problems[j].upper[i]);
+    }
+    // The coarsest level is solved exactly by the multilevel cycle's coarse solver.
+    if (j == 0) inner.method = SolverMethod::kMmg;
+    const SolverReport r = solve_contact(problems[j], sub, inner, {}, xc);
+    inner.method = options.method;
+    report.nested_iterations.push_back(r.iterations);
+  }
+  x = h.levels[top].prolongation * xc;
+  for (int i = 0; i < x.size(); ++i) x[i] = std::clamp(x[i], qp.lower[i], qp.upper[i]);
+  return true;
+}
+
 }  // namespace
 
 SolverReport solve_contact(const BoxQp& qp, const LevelHierarchy& hierarchy,
@@ -185,6 +240,13 @@ SolverReport solve_contact(const BoxQp& qp, const LevelHierarchy& hierarchy,
   if (x.size() != n) x = Vector::Zero(n);
   for (int i = 0; i < n; ++i) x[i] = std::clamp(x[i], qp.lower[i], qp.upper[i]);
 
+  const bool multilevel =
+      options.method == SolverMethod::kMmg || options.method == SolverMethod::kTnnmg;
+  if (multilevel && options.nested) {
+    const auto t_nested = Clock::now();
+    nested_initial_guess(qp, hierarchy, options, x, report);
+    report.nested_s = std::chrono::duration<double>(Clock::now() - t_nested).count();
+  }
   std::unique_ptr<Step> step;
   MultilevelCycle* cycle = nullptr;
   switch (options.method) {

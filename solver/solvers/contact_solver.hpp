@@ -26,6 +26,13 @@ struct SolverOptions {
   MultilevelOptions multilevel;  ///< smoother and smoothing steps are used by pgs and tnnmg too
   double tolerance = 1e-8;       ///< on kkt_k / kkt_0
   int max_iterations = 200;
+  /// Nested iteration (mmg and tnnmg): solve the Galerkin problems of the coarser levels
+  /// (coarse obstacles by the same projections) coarsest first, each to `nested_tolerance`,
+  /// and start the finest level from the prolongated solution, so that most of the search
+  /// for the active set happens where it is cheap.
+  bool nested = true;
+  double nested_tolerance = 1e-3;
+  int nested_max_iterations = 100;
 };
 
 struct SolverReport {
@@ -40,6 +47,10 @@ struct SolverReport {
   /// Iteration 0 (the initial iterate) and every iteration after it.
   std::vector<IterationRecord> history;
   double setup_s = 0.0;
+  /// Of setup_s: the nested iteration on the coarser levels.
+  double nested_s = 0.0;
+  /// Iterations spent on each coarser level by the nested iteration (coarsest first).
+  std::vector<int> nested_iterations;
   double solve_s = 0.0;
   CycleStatistics cycle;
   std::string message;

@@ -15,6 +15,7 @@ struct MultilevelCycle::LevelState {
   SparseMatrix A;  ///< Galerkin matrix (coarse levels only)
   std::unique_ptr<PatchSmoother> patch;
   std::unique_ptr<PointSmoother> point;
+  std::unique_ptr<StripSmoother> strip;
 };
 
 MultilevelCycle::MultilevelCycle(const BoxQp& qp, const LevelHierarchy& hierarchy,
@@ -61,6 +62,9 @@ void MultilevelCycle::rebuild_coarse_levels() {
       s.patch = std::make_unique<PatchSmoother>(matrix(j), hierarchy_.levels[j].patches);
     else
       s.point = std::make_unique<PointSmoother>(matrix(j));
+    s.strip.reset();
+    if (options_.strip && !hierarchy_.levels[j].contact_strip.empty())
+      s.strip = std::make_unique<StripSmoother>(matrix(j), hierarchy_.levels[j].contact_strip);
   };
   // The finest matrix never changes: its smoother is built once.
   if (!built_) make_smoother(top);
@@ -97,6 +101,7 @@ void MultilevelCycle::smooth_level(int j, Vector& c, Vector& r, const Vector& lo
     s.patch->sweep(c, r, lo, hi, forward);
   else
     s.point->sweep(c, r, lo, hi, forward);
+  if (s.strip) s.strip->solve(c, r, lo, hi);
   stats_.smoothing_s += seconds_since(t0);
 }
 
@@ -106,17 +111,13 @@ void MultilevelCycle::smooth(Vector& x, Vector& r, bool forward) {
   if (sweep_hook_) sweep_hook_(x, r);
 }
 
-void MultilevelCycle::project_obstacle(int j, const Vector& c, const Vector& hi,
-                                       Vector& coarse_hi) const {
-  const bool top = j == hierarchy_.num_levels() - 1;
-  auto defect = [&](int i) {
-    if (i < 0 || !is_bounded_above(hi[i]) || (top && truncated_[i])) return kNoBound;
-    return std::max(0.0, hi[i] - c[i]);
-  };
-  for (const ContactLink& l : hierarchy_.levels[j].links) {
-    const double va = defect(l.fine_un_a), vm = defect(l.fine_un_mid), vb = defect(l.fine_un_b);
+void project_defect(const Level& fine_level, CoarseProjection projection, const Vector& defect,
+                    Vector& coarse_hi) {
+  auto d = [&](int i) { return i < 0 ? kNoBound : defect[i]; };
+  for (const ContactLink& l : fine_level.links) {
+    const double va = d(l.fine_un_a), vm = d(l.fine_un_mid), vb = d(l.fine_un_b);
     double ta = 0.0, tb = 0.0;
-    switch (options_.projection) {
+    switch (projection) {
       case CoarseProjection::kA:
         ta = std::min(va, std::max(vm, 2.0 * vm - vb));
         tb = std::min(vb, std::max(vm, 2.0 * vm - va));
@@ -137,13 +138,22 @@ void MultilevelCycle::project_obstacle(int j, const Vector& c, const Vector& hi,
       double bound = kNoBound;
       for (int k = 0; k < 2; ++k) {
         if (l.fine_sn[k] < 0) continue;
-        const double d = defect(l.fine_sn[k]);
-        bound = std::min(bound, l.sn_weight[k] > 0 ? d / l.sn_weight[k] : 0.0);
+        bound = std::min(bound, l.sn_weight[k] > 0 ? d(l.fine_sn[k]) / l.sn_weight[k] : 0.0);
       }
       coarse_hi[l.coarse_sn] = std::min(coarse_hi[l.coarse_sn], bound);
     }
   }
   for (int i = 0; i < coarse_hi.size(); ++i) coarse_hi[i] = std::max(0.0, coarse_hi[i]);
+}
+
+void MultilevelCycle::project_obstacle(int j, const Vector& c, const Vector& hi,
+                                       Vector& coarse_hi) const {
+  const bool top = j == hierarchy_.num_levels() - 1;
+  Vector defect(c.size());
+  for (int i = 0; i < c.size(); ++i)
+    defect[i] = (!is_bounded_above(hi[i]) || (top && truncated_[i])) ? kNoBound
+                                                                     : std::max(0.0, hi[i] - c[i]);
+  project_defect(hierarchy_.levels[j], options_.projection, defect, coarse_hi);
 }
 
 void MultilevelCycle::recurse(int j, Vector& c, Vector& r, const Vector& lo, const Vector& hi,

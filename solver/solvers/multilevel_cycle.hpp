@@ -31,6 +31,9 @@ struct MultilevelOptions {
   /// rate grows with the number of levels (measured, see the README), the W-cycle's does not,
   /// and in 2D it costs at most twice the fine-level work of a V-cycle.
   int cycle_index = 2;
+  /// After every sweep, solve exactly on the strip of triangles along the contact boundary
+  /// (StripSmoother).
+  bool strip = true;
 };
 
 /// Counters for profiling and tests.
@@ -41,6 +44,13 @@ struct CycleStatistics {
   double smoothing_s = 0.0;
   double coarse_s = 0.0;
 };
+
+/// The coarse obstacle of method.md §4.3: from the defects d ≥ 0 of the bounded DOFs of level
+/// j (kNoBound where a DOF is unbounded or truncated) to upper bounds of level j−1 that keep
+/// every prolongated coarse correction below d (exactly where contact normals agree between
+/// the levels). `coarse_hi` must be initialised (e.g. to kNoBound); it is only lowered.
+void project_defect(const Level& fine_level, CoarseProjection projection, const Vector& defect,
+                    Vector& coarse_hi);
 
 class MultilevelCycle {
  public:

@@ -2,6 +2,7 @@
 // Monotone smoothers: successive exact minimisation of J over small subspaces within the
 // bounds (method.md §4.1). Both work on x and the residual r = b − A x, kept up to date.
 
+#include <memory>
 #include <vector>
 
 #include "core/box_qp.hpp"
@@ -35,6 +36,24 @@ class PatchSmoother {
   const std::vector<std::vector<int>>& patches_;
   std::vector<std::size_t> offset_;  ///< start of each patch's factor in factors_
   std::vector<double> factors_;      ///< lower Cholesky factor, column-major m × m
+};
+
+/// Exact minimisation over the strip of triangles along the contact boundary, within the
+/// bounds. Where neither U_n nor S_n is at its bound (at the edge of the contact zone) the
+/// functional only weakly controls the normal boundary data (through c3), so the error has
+/// modes a few elements wide along the boundary that neither vertex patches nor the coarse
+/// levels reach; one exact solve on the strip removes them. A monotone subspace step like the
+/// others.
+class StripSmoother {
+ public:
+  /// Throws std::runtime_error when the strip's matrix is not positive definite.
+  StripSmoother(const SparseMatrix& A, std::vector<int> strip);
+  void solve(Vector& x, Vector& r, const Vector& lo, const Vector& hi) const;
+
+ private:
+  const SparseMatrix& A_;
+  std::vector<int> strip_;
+  std::unique_ptr<class CoarseBoxQpSolver> solver_;
 };
 
 /// Subtracts A[:, j] · d from r (the residual update after x_j changed by d).
