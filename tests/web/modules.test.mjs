@@ -1,0 +1,178 @@
+// Unit tests of the page's pure modules (no browser): JSON pointer locations, the Hertz
+// formulas, the VTU reader and the mesh view's colour map and magnification.
+//   node --test tests/web/modules.test.mjs
+import { test } from 'node:test';
+import assert from 'node:assert/strict';
+import { readFileSync } from 'node:fs';
+import { fileURLToPath } from 'node:url';
+import { dirname, join } from 'node:path';
+
+import { locateJson, rangeForPointer, lineOfOffset, splitPointer } from '../../web/app/json_locations.js';
+import { contactModulus, hertzContact, hertzForCase, hertzPressure, lameParameters } from '../../web/app/hertz.js';
+import { parseVtu } from '../../web/app/vtu.js';
+import { autoMagnification, colourAt, maxDisplacement } from '../../web/app/mesh_view.js';
+
+const repo = join(dirname(fileURLToPath(import.meta.url)), '..', '..');
+const hertzText = readFileSync(join(repo, 'solver', 'examples', 'hertz.json'), 'utf8');
+
+const lineOf = (text, pointer) => {
+  const { locations } = locateJson(text);
+  const range = rangeForPointer(text, locations, pointer);
+  return range && { line: lineOfOffset(text, range.start) + 1, exact: range.exact, key: text.slice(range.start, range.end) };
+};
+
+test('pointers resolve to the line of their key in a shipped case', () => {
+  const lines = hertzText.split('\n');
+  const lineWith = (needle) => lines.findIndex((l) => l.includes(needle)) + 1;
+  assert.deepEqual(lineOf(hertzText, '/material/mu'), { line: lineWith('"material"'), exact: true, key: '"mu"' });
+  assert.deepEqual(lineOf(hertzText, '/mesh/refinements'), { line: lineWith('"refinements"'), exact: true, key: '"refinements"' });
+  assert.deepEqual(lineOf(hertzText, '/boundary/contact/obstacle/normal'), { line: lineWith('"normal"'), exact: true, key: '"normal"' });
+  // An array element: its value.
+  assert.deepEqual(lineOf(hertzText, '/boundary/top/displacement/1'), { line: lineWith('"displacement"'), exact: true, key: '-0.02' });
+});
+
+test('a missing field is shown on its nearest existing parent', () => {
+  const r = lineOf(hertzText, '/solver/smoother');
+  assert.equal(r.exact, false);
+  assert.equal(r.key, '"solver"');
+  const root = lineOf(hertzText, '/nothing/here');
+  assert.equal(root.exact, false);
+  assert.equal(root.line, 1);
+});
+
+test('escaped pointer tokens (~0, ~1) find keys with "~" and "/"', () => {
+  const text = '{\n "boundary": {\n  "a/b": {"type": "x"},\n  "c~d": 1\n }\n}';
+  assert.deepEqual(splitPointer('/boundary/a~1b'), ['boundary', 'a/b']);
+  assert.equal(lineOf(text, '/boundary/a~1b/type').line, 3);
+  assert.equal(lineOf(text, '/boundary/c~0d').line, 4);
+});
+
+test('a syntax error keeps the locations found before it', () => {
+  const text = '{\n "name": "x",\n "mesh": {"size": 0.1,, }\n}';
+  const { locations, error } = locateJson(text);
+  assert.ok(error);
+  assert.equal(lineOfOffset(text, error.offset) + 1, 3);
+  assert.ok(locations.has('/name'));
+  assert.ok(locations.has('/mesh/size'));
+});
+
+test('Hertz: E* from Lamé parameters, E and nu, and the incompressible limit', () => {
+  assert.equal(contactModulus({ mu: 1, lambda: Infinity }), 4);
+  assert.ok(Math.abs(contactModulus({ mu: 1, lambda: 1 }) - 8 / 3) < 1e-15);
+  // E = 2.6, nu = 0.3: E* = E/(1 − nu²).
+  const lame = lameParameters({ E: 2.6, nu: 0.3 });
+  assert.ok(Math.abs(contactModulus(lame) - 2.6 / (1 - 0.09)) < 1e-12);
+  assert.equal(lameParameters({ mu: 2, lambda: 'inf' }).lambda, Infinity);
+  assert.equal(lameParameters({ E: 3, nu: 0.5 }).lambda, Infinity);
+  assert.equal(lameParameters({ mu: -1, lambda: 1 }), null);
+});
+
+test('Hertz: a, p0 and the pressure integrate to the force', () => {
+  const F = 0.3, R = 1, lame = { mu: 1, lambda: 1 };
+  const h = hertzContact(F, R, lame);
+  assert.ok(Math.abs(h.a - Math.sqrt((4 * F * R) / (Math.PI * (8 / 3)))) < 1e-15);
+  assert.ok(Math.abs(h.p0 - (2 * F) / (Math.PI * h.a)) < 1e-15);
+  // ∫ p dx over [−a, a] = π a p0 / 2 = F (midpoint rule, 20000 cells).
+  const n = 20000;
+  let integral = 0;
+  for (let k = 0; k < n; k++) integral += hertzPressure(-h.a + ((k + 0.5) * 2 * h.a) / n, h) * ((2 * h.a) / n);
+  assert.ok(Math.abs(integral - F) < 1e-5 * F, `∫p = ${integral}`);
+  assert.equal(hertzPressure(1.01 * h.a, h), 0);
+});
+
+test('Hertz applies to the shipped hertz case only', () => {
+  const caseJson = JSON.parse(hertzText);
+  const result = { name: 'hertz', contact: { force: [0, -0.25] } };
+  const h = hertzForCase(caseJson, result);
+  assert.equal(h.F, 0.25);
+  assert.equal(h.R, 1);
+  assert.equal(hertzForCase({ ...caseJson, name: 'disk' }, result), null);
+  assert.equal(hertzForCase(caseJson, { contact: { force: [0, 0] } }), null);
+  const circle = structuredClone(caseJson);
+  circle.boundary.contact.obstacle = { type: 'circle', center: [0, -1], radius: 1 };
+  assert.equal(hertzForCase(circle, result), null);
+  const bigger = structuredClone(caseJson);
+  bigger.mesh.builtin.radius = 2;
+  assert.equal(hertzForCase(bigger, result).R, 2);
+});
+
+const twoTriangles = `<?xml version="1.0"?>
+<VTKFile type="UnstructuredGrid" version="0.1" byte_order="LittleEndian">
+<UnstructuredGrid>
+<Piece NumberOfPoints="4" NumberOfCells="2">
+<Points>
+<DataArray type="Float64" NumberOfComponents="3" format="ascii">
+0 0 0
+1 0 0
+1 1 0
+0 1 0
+</DataArray>
+</Points>
+<Cells>
+<DataArray type="Int32" Name="connectivity" format="ascii">
+0 1 2
+0 2 3
+</DataArray>
+<DataArray type="Int32" Name="offsets" format="ascii">
+3
+6
+</DataArray>
+<DataArray type="UInt8" Name="types" format="ascii">
+5
+5
+</DataArray>
+</Cells>
+<PointData Vectors="u">
+<DataArray type="Float64" Name="u" NumberOfComponents="3" format="ascii">
+0 0 0
+0.001 0 0
+0.001 -0.002 0
+0 -0.002 0
+</DataArray>
+</PointData>
+<CellData Scalars="von_mises">
+<DataArray type="Float64" Name="sigma" NumberOfComponents="4" format="ascii">
+1 0 0 1
+2 0 0 2
+</DataArray>
+<DataArray type="Float64" Name="von_mises" format="ascii">
+0.5
+1.5e-3
+</DataArray>
+</CellData>
+</Piece>
+</UnstructuredGrid>
+</VTKFile>
+`;
+
+test('the VTU reader returns points, triangles, point and cell data', () => {
+  const mesh = parseVtu(twoTriangles);
+  assert.deepEqual([...mesh.points], [0, 0, 1, 0, 1, 1, 0, 1]);
+  assert.deepEqual([...mesh.triangles], [0, 1, 2, 0, 2, 3]);
+  assert.equal(mesh.pointData.u.components, 3);
+  assert.deepEqual([...mesh.cellData.von_mises.values], [0.5, 1.5e-3]);
+  assert.equal(mesh.cellData.sigma.values.length, 8);
+  assert.ok(Math.abs(maxDisplacement(mesh) - Math.hypot(0.001, 0.002)) < 1e-15);
+});
+
+test('the VTU reader says what is wrong with a broken file', () => {
+  assert.throws(() => parseVtu('<html></html>'), /no <Piece>/);
+  assert.throws(() => parseVtu(twoTriangles.replace('0 2 3', '0 2 7')), /names point 7/);
+  assert.throws(() => parseVtu(twoTriangles.replace('0.5\n1.5e-3\n', '0.5\n')), /von_mises/);
+  assert.throws(() => parseVtu(twoTriangles.replace('Name="u" NumberOfComponents="3" format="ascii"', 'Name="u" NumberOfComponents="3" format="binary"')), /not ASCII/);
+});
+
+test('magnification makes the largest displacement about 8 % of the diagonal, never below 1', () => {
+  const mesh = parseVtu(twoTriangles);
+  // diagonal √2, |u|max = √5 · 1e-3: target 0.08·√2/(√5·1e-3) ≈ 50.6 → 50.
+  assert.equal(autoMagnification(mesh), 50);
+  const big = parseVtu(twoTriangles.replaceAll('0.001', '0.5'));
+  assert.equal(autoMagnification(big), 1);
+});
+
+test('the colour map runs from dark purple to yellow and clamps', () => {
+  assert.deepEqual(colourAt(0), [68, 1, 84]);
+  assert.deepEqual(colourAt(1), [253, 231, 37]);
+  assert.deepEqual(colourAt(-3), colourAt(0));
+  assert.deepEqual(colourAt(NaN), colourAt(0));
+});

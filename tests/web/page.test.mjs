@@ -1,0 +1,316 @@
+// End-to-end test of the web page: a real fosls-serve (free loopback port, temporary
+// database) and Debian's Chromium driven by playwright-core. Never downloads a browser.
+//
+//   FOSLS_SERVE=build/bin/fosls-serve node --test tests/web/page.test.mjs
+//
+// Environment: FOSLS_SERVE (required), FOSLS_WEB_ROOT (default web/), FOSLS_SCREENSHOTS
+// (default docs/screenshots), CHROMIUM (default /usr/bin/chromium).
+// Needs web/build.sh to have run (npm packages, web/dist).
+import { test, before, after } from 'node:test';
+import assert from 'node:assert/strict';
+import { spawn } from 'node:child_process';
+import { existsSync, mkdirSync, mkdtempSync, readFileSync, rmSync } from 'node:fs';
+import { createRequire } from 'node:module';
+import { tmpdir } from 'node:os';
+import { dirname, join, resolve } from 'node:path';
+import { fileURLToPath } from 'node:url';
+
+const repo = resolve(dirname(fileURLToPath(import.meta.url)), '..', '..');
+const webRoot = resolve(process.env.FOSLS_WEB_ROOT ?? join(repo, 'web'));
+const screenshots = resolve(process.env.FOSLS_SCREENSHOTS ?? join(repo, 'docs', 'screenshots'));
+const serveBinary = process.env.FOSLS_SERVE;
+const chromiumPath = process.env.CHROMIUM ?? '/usr/bin/chromium';
+const hertzText = readFileSync(join(repo, 'solver', 'examples', 'hertz.json'), 'utf8');
+
+// playwright-core lives in web/node_modules (installed by web/build.sh), not beside this file.
+const requireFromWeb = createRequire(join(webRoot, 'package.json'));
+
+let server;       // {process, url, log}
+let context;      // playwright persistent context (fresh profile folder)
+let page;
+let scratch;      // temporary folder: database and browser profile
+const consoleProblems = [];
+
+function startServer() {
+  return new Promise((resolvePromise, reject) => {
+    const child = spawn(
+      serveBinary,
+      ['--host', '127.0.0.1', '--port', '0', '--db', join(scratch, 'jobs.db'), '--workers', '1',
+        '--web-root', webRoot],
+      { stdio: ['ignore', 'pipe', 'pipe'] },
+    );
+    const log = [];
+    let stdout = '';
+    const timer = setTimeout(() => reject(new Error(`fosls-serve did not start:\n${log.join('')}`)), 15000);
+    child.stderr.on('data', (d) => log.push(d.toString()));  // keep draining: a full pipe blocks the server
+    child.stdout.on('data', (d) => {
+      stdout += d.toString();
+      const m = /listening on (http:\/\/\S+)/.exec(stdout);
+      if (m) {
+        clearTimeout(timer);
+        resolvePromise({ process: child, url: m[1], log });
+      }
+    });
+    child.on('exit', (code) => {
+      clearTimeout(timer);
+      reject(new Error(`fosls-serve exited with ${code}:\n${log.join('')}`));
+    });
+  });
+}
+
+function stopServer() {
+  if (!server || server.process.exitCode !== null) return Promise.resolve();
+  return new Promise((resolvePromise) => {
+    const kill = setTimeout(() => server.process.kill('SIGKILL'), 10000);
+    server.process.once('exit', () => {
+      clearTimeout(kill);
+      resolvePromise();
+    });
+    server.process.kill('SIGTERM');
+  });
+}
+
+/** Counts pixels of `canvasSelector` (first match, or the largest canvas inside it) within
+ *  `tolerance` of the colour `hex`, or (hex = null) pixels that are not transparent/white. */
+async function countPixels(selector, hex, tolerance = 40) {
+  return page.evaluate(
+    ({ selector, hex, tolerance }) => {
+      const root = document.querySelector(selector);
+      const canvases = root.tagName === 'CANVAS' ? [root] : [...root.querySelectorAll('canvas')];
+      const canvas = canvases.sort((a, b) => b.width * b.height - a.width * a.height)[0];
+      // Read a copy made for reading, so the page's own canvas is not switched to software.
+      const copy = document.createElement('canvas');
+      copy.width = canvas.width;
+      copy.height = canvas.height;
+      const ctx = copy.getContext('2d', { willReadFrequently: true });
+      ctx.drawImage(canvas, 0, 0);
+      const { data } = ctx.getImageData(0, 0, copy.width, copy.height);
+      const want = hex && [1, 3, 5].map((k) => parseInt(hex.slice(k, k + 2), 16));
+      let n = 0;
+      for (let i = 0; i < data.length; i += 4) {
+        if (data[i + 3] < 128) continue;
+        if (want) {
+          if (Math.abs(data[i] - want[0]) + Math.abs(data[i + 1] - want[1]) + Math.abs(data[i + 2] - want[2]) <= tolerance) n++;
+        } else if (data[i] + data[i + 1] + data[i + 2] < 3 * 235) {
+          n++;
+        }
+      }
+      return n;
+    },
+    { selector, hex, tolerance },
+  );
+}
+
+/** Waits (up to 10 s) until countPixels(selector, hex) exceeds `min`; returns the count. */
+async function expectPixels(selector, hex, min, what) {
+  let n = 0;
+  for (const deadline = Date.now() + 10000; Date.now() < deadline; await new Promise((r) => setTimeout(r, 100))) {
+    n = await countPixels(selector, hex);
+    if (n > min) return n;
+  }
+  assert.fail(`${what}: ${n} pixels of ${hex ?? 'non-background'} on ${selector}, expected more than ${min}`);
+}
+
+async function setEditorText(text) {
+  await page.locator('#case-text').fill(text);
+}
+
+async function submitAndWaitForRow(name) {
+  const before = await page.locator('#job-table tbody tr').count();
+  await page.getByRole('button', { name: 'Submit case' }).click();
+  await page.waitForFunction((n) => document.querySelectorAll('#job-table tbody tr').length > n, before);
+  const row = page.locator('#job-table tbody tr').first();
+  assert.equal(await row.locator('td').nth(1).innerText(), name);
+  return row;
+}
+
+before(async () => {
+  assert.ok(serveBinary && existsSync(serveBinary), `FOSLS_SERVE must name the fosls-serve program (got ${serveBinary})`);
+  assert.ok(existsSync(chromiumPath), `${chromiumPath} is missing: apt-get install chromium`);
+  assert.ok(existsSync(join(webRoot, 'dist', 'uPlot.esm.js')) && existsSync(join(webRoot, 'dist', 'examples.json')),
+    `${webRoot}/dist is incomplete: run web/build.sh`);
+  mkdirSync(screenshots, { recursive: true });
+  scratch = mkdtempSync(join(tmpdir(), 'fosls-web-test-'));
+  server = await startServer();
+
+  const { chromium } = requireFromWeb('playwright-core');
+  context = await chromium.launchPersistentContext(join(scratch, 'profile'), {
+    executablePath: chromiumPath,
+    headless: true,
+    args: ['--headless', '--no-sandbox', '--disable-gpu', '--disable-quic', '--no-first-run',
+      '--disable-background-networking', '--disable-component-update', '--disable-sync'],
+    viewport: { width: 1440, height: 900 },
+    deviceScaleFactor: 1,
+  });
+  page = context.pages()[0] ?? (await context.newPage());
+  page.setDefaultTimeout(30000);
+  page.on('console', (msg) => {
+    if (msg.type() === 'error' || msg.type() === 'warning') consoleProblems.push(`${msg.type()}: ${msg.text()} (${msg.location().url})`);
+  });
+  page.on('pageerror', (error) => consoleProblems.push(`uncaught: ${error.message}`));
+  page.on('requestfailed', (request) => consoleProblems.push(`request failed: ${request.url()} ${request.failure()?.errorText}`));
+  await page.goto(server.url + '/');
+});
+
+after(async () => {
+  await context?.close();  // before the server stops, so no poll meets a closed port
+  await stopServer();
+  if (scratch) rmSync(scratch, { recursive: true, force: true });
+});
+
+test('the page loads the shipped examples into the editor', async () => {
+  await page.locator('#example-select option[value="hertz"]').waitFor({ state: 'attached' });
+  await page.waitForFunction(() => document.querySelector('#case-text').value.length > 0);
+  const options = await page.locator('#example-select option').allInnerTexts();
+  for (const name of ['hertz', 'hertz_incompressible', 'signorini_square', 'linear_square']) {
+    assert.ok(options.includes(name), `example ${name} in ${options}`);
+  }
+  assert.equal(await page.locator('#example-select').inputValue(), 'hertz');
+  assert.equal(await page.locator('#case-text').inputValue(), hertzText);
+  assert.equal(await page.locator('#jobs-empty').isVisible(), true);
+});
+
+test('submitting the hertz case shows pressure with the Hertz curve, residuals and the mesh', async () => {
+  const row = await submitAndWaitForRow('hertz');
+  await row.locator('[data-state="succeeded"], .state-succeeded').waitFor();
+  await page.locator('#job-result').waitFor({ state: 'visible' });
+  await page.waitForFunction(() => Number(document.querySelector('#pressure-plot')?.dataset.points) > 0 &&
+    Number(document.querySelector('#residual-plot')?.dataset.points) > 0 &&
+    Number(document.querySelector('#mesh-canvas')?.dataset.triangles) > 0);
+
+  const jobId = Number(await row.getAttribute('data-job-id'));
+  // Requests of the test itself go from node, so the page's console shows only the page's own.
+  const result = await (await fetch(`${server.url}/v1/jobs/${jobId}/result`)).json();
+  assert.equal(result.converged, true);
+  assert.equal(await page.locator('#pressure-plot').getAttribute('data-points'), String(result.contact.x.length));
+  const positiveKkt = result.history.filter((h) => h.kkt_residual > 0).length;
+  assert.equal(await page.locator('#residual-plot').getAttribute('data-points'), String(positiveKkt));
+
+  // The curves are drawn: pixels of each series colour on the charts' canvases.
+  await expectPixels('#pressure-plot', '#1f5fbf', 100, 'FOSLS pressure line');
+  await expectPixels('#pressure-plot', '#c0392b', 50, 'Hertz curve');
+  await expectPixels('#residual-plot', '#1f5fbf', 100, 'KKT residual line');
+  const canvasArea = await page.evaluate(() => document.querySelector('#mesh-canvas').width * document.querySelector('#mesh-canvas').height);
+  await expectPixels('#mesh-canvas', null, 0.1 * canvasArea, 'mesh');
+
+  // The Hertz numbers follow from the result's force: E* = 4μ(λ+μ)/(λ+2μ) = 8/3 for μ = λ = 1.
+  const F = Math.abs(result.contact.force[1]);
+  const a = Math.sqrt((4 * F * 1) / (Math.PI * (8 / 3)));
+  const note = await page.locator('#hertz-note').innerText();
+  assert.match(note, new RegExp(`a = ${Number(a.toPrecision(4))}`.replace('.', '\\.')), note);
+  const numbers = await page.locator('#key-numbers').innerText();
+  assert.match(numbers, /Hertz 2a = /);
+  assert.match(numbers, new RegExp(`DOFs\\s+${result.dofs}`));
+  assert.match(numbers, new RegExp(`Iterations\\s+${result.iterations}`));
+  assert.match(await page.locator('#mesh-caption').innerText(), /magnified ×\d+/);
+
+  // Downloads point at the API and answer.
+  for (const [link, type] of [['#download-result', 'application/json'], ['#download-vtu', 'application/xml']]) {
+    const href = await page.locator(link).getAttribute('href');
+    const r = await fetch(new URL(href, server.url));
+    const status = `${r.status} ${r.headers.get('Content-Type')}`;
+    assert.equal(status, `200 ${type}`, href);
+  }
+
+  await page.screenshot({ path: join(screenshots, 'job-view.png'), fullPage: true });
+  await page.locator('.mesh-figure').screenshot({ path: join(screenshots, 'mesh.png') });
+});
+
+test('an invalid case shows each error next to its field', async () => {
+  const bad = hertzText.replace('"mu": 1', '"mu": -1').replace('"method": "mmg"', '"method": "bogus"');
+  assert.notEqual(bad, hertzText);
+  await setEditorText(bad);
+  const jobsBefore = await page.locator('#job-table tbody tr').count();
+  await page.getByRole('button', { name: 'Submit case' }).click();
+  await page.locator('#case-errors').waitFor({ state: 'visible' });
+
+  const items = await page.locator('#case-error-list li').allInnerTexts();
+  const mu = items.find((t) => t.startsWith('/material/mu'));
+  const method = items.find((t) => t.startsWith('/solver/method'));
+  assert.ok(mu, `an entry for /material/mu in ${JSON.stringify(items)}`);
+  assert.ok(method, `an entry for /solver/method in ${JSON.stringify(items)}`);
+  const lines = bad.split('\n');
+  const muLine = lines.findIndex((l) => l.includes('"mu": -1')) + 1;
+  assert.match(mu, new RegExp(`\\(line ${muLine}\\)`));
+
+  // In the editor: the key is marked, the message is written on its line, the gutter flags it.
+  const marked = await page.locator('#case-editor .backdrop mark').allInnerTexts();
+  assert.ok(marked.includes('"mu"') && marked.includes('"method"'), `marked keys ${marked}`);
+  const muNote = await page.locator('#case-editor .backdrop > div').nth(muLine - 1).locator('.note').innerText();
+  assert.match(muNote, />|must|positive|0/);
+  assert.equal(await page.locator('#case-editor .gutter div').nth(muLine - 1).getAttribute('class'), 'error-line');
+  assert.equal(await page.locator('#case-text').getAttribute('aria-invalid'), 'true');
+
+  // The pointer button selects the key in the textarea.
+  await page.locator('#case-error-list button', { hasText: '/material/mu' }).click();
+  const selected = await page.evaluate(() => {
+    const t = document.querySelector('#case-text');
+    return t.value.slice(t.selectionStart, t.selectionEnd);
+  });
+  assert.equal(selected, '"mu"');
+  assert.equal(await page.locator('#job-table tbody tr').count(), jobsBefore, 'nothing was queued');
+  await page.locator('.side').screenshot({ path: join(screenshots, 'case-errors.png') });
+
+  // Loading an example clears the errors.
+  await page.getByRole('button', { name: 'Load example' }).click();
+  assert.equal(await page.locator('#case-errors').isVisible(), false);
+});
+
+test('a running job can be cancelled and then deleted from the list', async () => {
+  // Projected Gauss–Seidel on a fine mesh with an unreachable tolerance runs for minutes.
+  const slow = JSON.parse(hertzText);
+  slow.name = 'slow_hertz';
+  slow.mesh.refinements = 5;
+  slow.solver = { method: 'pgs', tolerance: 1e-15, max_iterations: 100000 };
+  await setEditorText(JSON.stringify(slow, null, 2));
+  const row = await submitAndWaitForRow('slow_hertz');
+  // While it runs, the view plots the residuals the polls have seen.
+  await row.locator('.state-running').waitFor();
+  await page.waitForFunction(() => Number(document.querySelector('#live-plot')?.dataset.points) >= 2);
+  assert.match(await page.locator('#job-summary').innerText(), /^Running: iteration \d+, KKT residual/);
+  await page.screenshot({ path: join(screenshots, 'running.png') });
+  const cancel = row.getByRole('button', { name: /^Cancel job/ });
+  await cancel.click();
+  await row.locator('.state-cancelled').waitFor();
+  await page.locator('#job-summary', { hasText: 'Cancelled' }).waitFor();
+  assert.equal(await page.locator('#live-figure').isVisible(), false);
+
+  const id = await row.getAttribute('data-job-id');
+  await row.getByRole('button', { name: /^Delete job/ }).click();
+  await page.locator(`#job-table tbody tr[data-job-id="${id}"]`).waitFor({ state: 'detached' });
+  assert.equal((await fetch(`${server.url}/v1/jobs/${id}`)).status, 404);
+});
+
+test('the controls are reachable with the keyboard and show focus', async () => {
+  await page.locator('body').click({ position: { x: 5, y: 5 } });
+  const reached = [];
+  for (let k = 0; k < 12; k++) {
+    await page.keyboard.press('Tab');
+    const info = await page.evaluate(() => {
+      const el = document.activeElement;
+      const style = getComputedStyle(el);
+      return { id: el.id || el.textContent.trim().slice(0, 30), outline: style.outlineStyle, width: style.outlineWidth };
+    });
+    reached.push(info.id);
+    if (info.id === 'submit-case') {
+      assert.notEqual(info.outline, 'none', 'focus is visible on the submit button');
+      break;
+    }
+  }
+  assert.ok(reached.includes('example-select') && reached.includes('load-example') && reached.includes('submit-case'),
+    `tab order ${reached}`);
+  // Enter on a focused job name opens that job.
+  const view = page.locator('#job-table tbody [data-action="view"]').first();
+  await view.focus();
+  await page.keyboard.press('Enter');
+  await page.locator('#job-heading', { hasText: 'hertz' }).waitFor();
+});
+
+test('the page logged no console errors or warnings', async () => {
+  // Chromium reports every HTTP error response as a console error; the 422 of the invalid case
+  // above is expected, anything else is not.
+  const unexpected = consoleProblems.filter(
+    (m) => !/Failed to load resource: the server responded with a status of 422/.test(m),
+  );
+  assert.deepEqual(unexpected, []);
+});

@@ -1,0 +1,94 @@
+// Reads the ASCII VTK XML UnstructuredGrid that fosls-serve writes (solution.vtu): points,
+// triangles, point data (u) and cell data (sigma, von_mises, functional). Plain string
+// scanning rather than DOMParser, so the same code runs in the browser and under node.
+
+const dataArrayPattern = /<DataArray\b([^>]*?)(\/>|>([\s\S]*?)<\/DataArray>)/g;
+const attributePattern = /([A-Za-z_:][\w:.-]*)\s*=\s*"([^"]*)"/g;
+
+function attributes(text) {
+  const out = {};
+  for (const m of text.matchAll(attributePattern)) out[m[1]] = m[2];
+  return out;
+}
+
+function section(xml, tag) {
+  const open = new RegExp(`<${tag}\\b[^>]*>`).exec(xml);
+  if (!open) return '';
+  const close = xml.indexOf(`</${tag}>`, open.index);
+  return close < 0 ? '' : xml.slice(open.index + open[0].length, close);
+}
+
+function arrays(xml) {
+  const out = [];
+  for (const m of xml.matchAll(dataArrayPattern)) {
+    const attrs = attributes(m[1]);
+    if ((attrs.format ?? 'ascii') !== 'ascii') {
+      throw new Error(`DataArray "${attrs.Name ?? '?'}" is not ASCII (format="${attrs.format}")`);
+    }
+    const text = (m[3] ?? '').trim();
+    const values = text === '' ? new Float64Array(0) : Float64Array.from(text.split(/\s+/), Number);
+    out.push({ name: attrs.Name ?? '', components: Number(attrs.NumberOfComponents ?? 1), values });
+  }
+  return out;
+}
+
+/**
+ * Parses the VTU text. Returns {points: Float64Array (x,y pairs), triangles: Uint32Array
+ * (3 per cell), pointData: {name: {components, values}}, cellData: {...}}. Throws an Error
+ * saying what is missing or inconsistent.
+ */
+export function parseVtu(xml) {
+  const piece = /<Piece\b([^>]*)>/.exec(xml);
+  if (!piece) throw new Error('not a VTK UnstructuredGrid file (no <Piece>)');
+  const pieceAttrs = attributes(piece[1]);
+  const nPoints = Number(pieceAttrs.NumberOfPoints);
+  const nCells = Number(pieceAttrs.NumberOfCells);
+
+  const [pointArray] = arrays(section(xml, 'Points'));
+  if (!pointArray || pointArray.values.length !== nPoints * pointArray.components) {
+    throw new Error(`Points: expected ${nPoints} points`);
+  }
+  const points = new Float64Array(2 * nPoints);
+  for (let v = 0; v < nPoints; v++) {
+    points[2 * v] = pointArray.values[v * pointArray.components];
+    points[2 * v + 1] = pointArray.values[v * pointArray.components + 1];
+  }
+
+  const cells = Object.fromEntries(arrays(section(xml, 'Cells')).map((a) => [a.name, a]));
+  const connectivity = cells.connectivity?.values;
+  const offsets = cells.offsets?.values;
+  const types = cells.types?.values;
+  if (!connectivity || !offsets || offsets.length !== nCells) {
+    throw new Error(`Cells: expected connectivity and ${nCells} offsets`);
+  }
+  const triangles = new Uint32Array(3 * nCells);
+  let previous = 0;
+  for (let c = 0; c < nCells; c++) {
+    if (offsets[c] - previous !== 3 || (types && types[c] !== 5)) {
+      throw new Error(`cell ${c} is not a triangle`);
+    }
+    for (let k = 0; k < 3; k++) {
+      const v = connectivity[previous + k];
+      if (!(v >= 0 && v < nPoints)) throw new Error(`cell ${c} names point ${v}, beyond ${nPoints}`);
+      triangles[3 * c + k] = v;
+    }
+    previous = offsets[c];
+  }
+
+  const collect = (xmlPart, count, where) => {
+    const out = {};
+    for (const a of arrays(xmlPart)) {
+      if (a.values.length !== count * a.components) {
+        throw new Error(`${where} "${a.name}": expected ${count} × ${a.components} values`);
+      }
+      out[a.name] = { components: a.components, values: a.values };
+    }
+    return out;
+  };
+  return {
+    points,
+    triangles,
+    pointData: collect(section(xml, 'PointData'), nPoints, 'PointData'),
+    cellData: collect(section(xml, 'CellData'), nCells, 'CellData'),
+  };
+}
