@@ -213,7 +213,6 @@ test('submitting the hertz case shows pressure with the Hertz curve, residuals a
   }
 
   await page.screenshot({ path: join(screenshots, 'job-view.png'), fullPage: true });
-  await page.locator('.mesh-figure').screenshot({ path: join(screenshots, 'mesh.png') });
 });
 
 test('an invalid case shows each error next to its field', async () => {
