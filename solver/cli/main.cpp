@@ -5,6 +5,7 @@
 //   fosls-contact example hertz > hertz.json    prints one
 //   fosls-contact solve hertz.json --out result.json --vtu solution.vtu
 //   fosls-contact example hertz | fosls-contact solve - --quiet
+//   fosls-contact bench hertz --levels 2..5 --methods mmg,tnnmg,pdas
 //
 // Exit codes: 0 converged, 1 unexpected failure, 2 bad command line or invalid case,
 // 3 solved but not converged (the result is still written).
@@ -13,6 +14,7 @@
 #include <exception>
 #include <iostream>
 
+#include "cli/bench_command.hpp"
 #include "cli/example_command.hpp"
 #include "cli/exit_codes.hpp"
 #include "cli/solve_command.hpp"
@@ -26,6 +28,7 @@ int main(int argc, char** argv) {
     int exit_code = kExitOk;
     add_solve_command(app, exit_code);
     add_example_command(app, exit_code);
+    add_bench_command(app, exit_code);
     try {
       app.parse(argc, argv);
     } catch (const CLI::ParseError& e) {

@@ -24,6 +24,16 @@ inline ProblemData signorini_square(double lambda) {
   return d;
 }
 
+/// The seed's linear square: pressed by 0.05 onto the flat obstacle y = 0, so that the whole
+/// bottom is in contact.
+inline ProblemData flat_square(double lambda) {
+  ProblemData d = signorini_square(lambda);
+  d.groups[0].contact.obstacle.kind = Obstacle::Kind::kPlane;
+  d.groups[0].contact.obstacle.point = Point(0, 0);
+  d.groups[0].contact.obstacle.normal = Point(0, 1);
+  return d;
+}
+
 /// Half disk of radius 1 pressed onto the plane y = 0 by a displacement of the flat top.
 inline ProblemData hertz(double lambda, double press = 0.02) {
   ProblemData d;

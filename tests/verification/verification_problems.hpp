@@ -32,8 +32,7 @@ struct SmoothSolution {
   Eigen::Vector2d f(const Point& p) const { return 2.0 * M_PI * M_PI * mu * u(p); }
 
   ExactSolution exact() const {
-    return {[this](const Point& p) { return u(p); },
-            [this](const Point& p) { return grad_u(p); },
+    return {[this](const Point& p) { return u(p); }, [this](const Point& p) { return grad_u(p); },
             [this](const Point& p) { return sigma(p); },
             [this](const Point& p) -> Eigen::Vector2d { return -f(p); }};
   }

@@ -1,0 +1,189 @@
+#include "cli/bench_command.hpp"
+
+#include <sys/resource.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <cstdio>
+#include <fstream>
+#include <iostream>
+#include <memory>
+#include <sstream>
+
+#include "case/case_runner.hpp"
+#include "cli/case_file.hpp"
+#include "cli/exit_codes.hpp"
+#include "cli/shipped_examples.hpp"
+
+namespace fosls {
+
+namespace {
+
+struct BenchOptions {
+  std::string case_path;
+  std::string levels = "2..4";
+  std::string methods = "mmg,pdas";
+  std::string smoothers = "patch";
+  std::string coarse_obstacles = "a";
+  double tolerance = 1e-8;
+  int max_iterations = 500;
+  std::string json_path;
+};
+
+std::vector<std::string> split(const std::string& s) {
+  std::vector<std::string> out;
+  std::stringstream in(s);
+  std::string item;
+  while (std::getline(in, item, ','))
+    if (!item.empty()) out.push_back(item);
+  return out;
+}
+
+/// Runs one configuration in a child process, so that its peak memory is its own; the child
+/// writes one JSON line to the pipe.
+nlohmann::json run_isolated(const nlohmann::json& case_json) {
+  int fd[2];
+  if (pipe(fd) != 0) return {{"error", "pipe failed"}};
+  std::fflush(nullptr);
+  const pid_t pid = fork();
+  if (pid == 0) {
+    close(fd[0]);
+    nlohmann::json row;
+    try {
+      CaseReadResult read = read_case(case_json, {});
+      if (!read.errors.empty()) {
+        row["error"] = read.errors.front().pointer + ": " + read.errors.front().detail;
+      } else {
+        RunControl control;
+        control.want_vtu = false;
+        RunOutput out = run_case(*read.spec, control);
+        const auto& r = out.result;
+        row = {{"dofs", r["dofs"]},
+               {"levels", r["levels"]},
+               {"iterations", r["iterations"]},
+               {"converged", r["converged"]},
+               {"rate", r["asymptotic_rate"]},
+               {"setup_s", r["timing"]["mesh_s"].get<double>() +
+                               r["timing"]["assembly_s"].get<double>() +
+                               r["timing"]["setup_s"].get<double>()},
+               {"solve_s",
+                r["timing"]["solve_s"].get<double>() - r["timing"]["setup_s"].get<double>()}};
+      }
+    } catch (const std::exception& e) {
+      row["error"] = e.what();
+    }
+    rusage usage{};
+    getrusage(RUSAGE_SELF, &usage);
+    row["peak_mib"] = usage.ru_maxrss / 1024.0;
+    const std::string line = row.dump() + "\n";
+    if (write(fd[1], line.data(), line.size()) < 0) _exit(1);
+    close(fd[1]);
+    _exit(0);
+  }
+  close(fd[1]);
+  std::string text;
+  char buffer[4096];
+  ssize_t n;
+  while ((n = read(fd[0], buffer, sizeof buffer)) > 0) text.append(buffer, n);
+  close(fd[0]);
+  int status = 0;
+  waitpid(pid, &status, 0);
+  nlohmann::json row = nlohmann::json::parse(text, nullptr, false);
+  if (row.is_discarded())
+    return {{"error", "the run ended abnormally (status " + std::to_string(status) + ")"}};
+  return row;
+}
+
+int run_bench(const BenchOptions& o) {
+  nlohmann::json base;
+  bool found = false;
+  for (const auto& ex : shipped_examples())
+    if (ex.name == o.case_path) {
+      base = nlohmann::json::parse(ex.text);
+      found = true;
+    }
+  if (!found) {
+    CaseFile file = load_case_file(o.case_path, 16u << 20);
+    if (!file.problem.empty()) {
+      std::cerr << "error: " << o.case_path << ": " << file.problem << '\n';
+      return kExitBadInput;
+    }
+    base = file.json;
+  }
+  int first = 0, last = 0;
+  if (std::sscanf(o.levels.c_str(), "%d..%d", &first, &last) != 2) {
+    if (std::sscanf(o.levels.c_str(), "%d", &first) != 1) {
+      std::cerr << "error: --levels: expected A..B, e.g. 2..5\n";
+      return kExitBadInput;
+    }
+    last = first;
+  }
+  if (first < 1 || last < first || last > 12) {
+    std::cerr << "error: --levels: need 1 <= A <= B <= 12\n";
+    return kExitBadInput;
+  }
+  std::printf("%-5s %9s %-6s %-6s %-3s %6s %5s %8s %9s %9s %9s\n", "level", "dofs", "method",
+              "smooth", "obs", "iters", "conv", "rate", "setup_s", "solve_s", "peak_MiB");
+  nlohmann::json rows = nlohmann::json::array();
+  bool all_ok = true;
+  for (int level = first; level <= last; ++level)
+    for (const auto& method : split(o.methods))
+      for (const auto& smoother : split(o.smoothers))
+        for (const auto& obstacle : split(o.coarse_obstacles)) {
+          const bool multilevel = method == "mmg" || method == "tnnmg";
+          if (method == "pdas" &&
+              (smoother != split(o.smoothers)[0] || obstacle != split(o.coarse_obstacles)[0]))
+            continue;  // pdas uses neither
+          if (!multilevel && obstacle != split(o.coarse_obstacles)[0]) continue;
+          nlohmann::json c = base;
+          c["mesh"]["refinements"] = level - 1;
+          c["solver"]["method"] = method;
+          c["solver"]["smoother"] = smoother;
+          c["solver"]["coarse_obstacle"] = obstacle;
+          c["solver"]["tolerance"] = o.tolerance;
+          c["solver"]["max_iterations"] = o.max_iterations;
+          nlohmann::json row = run_isolated(c);
+          row["level"] = level;
+          row["method"] = method;
+          row["smoother"] = method == "pdas" ? "-" : smoother;
+          row["coarse_obstacle"] = multilevel ? obstacle : "-";
+          if (row.contains("error")) {
+            all_ok = false;
+            std::printf("%-5d %9s %-6s %-6s %-3s error: %s\n", level, "-", method.c_str(),
+                        row["smoother"].get<std::string>().c_str(),
+                        row["coarse_obstacle"].get<std::string>().c_str(),
+                        row["error"].get<std::string>().c_str());
+          } else {
+            std::printf("%-5d %9lld %-6s %-6s %-3s %6d %5s %8.4f %9.3f %9.3f %9.1f\n", level,
+                        row["dofs"].get<long long>(), method.c_str(),
+                        row["smoother"].get<std::string>().c_str(),
+                        row["coarse_obstacle"].get<std::string>().c_str(),
+                        row["iterations"].get<int>(), row["converged"].get<bool>() ? "yes" : "no",
+                        row["rate"].get<double>(), row["setup_s"].get<double>(),
+                        row["solve_s"].get<double>(), row["peak_mib"].get<double>());
+          }
+          std::fflush(stdout);
+          rows.push_back(row);
+        }
+  if (!o.json_path.empty()) std::ofstream(o.json_path) << rows.dump(2) << '\n';
+  return all_ok ? kExitOk : kExitInternal;
+}
+
+}  // namespace
+
+void add_bench_command(CLI::App& app, int& exit_code) {
+  auto o = std::make_shared<BenchOptions>();
+  auto* cmd = app.add_subcommand(
+      "bench", "Solve one case over several levels and methods and print a table");
+  cmd->add_option("case", o->case_path, "Case file, or the name of a shipped example")->required();
+  cmd->add_option("--levels", o->levels, "Levels A..B (levels = refinements + 1)");
+  cmd->add_option("--methods", o->methods, "Comma-separated: mmg,tnnmg,pdas,pgs");
+  cmd->add_option("--smoothers", o->smoothers, "Comma-separated: patch,point");
+  cmd->add_option("--coarse-obstacles", o->coarse_obstacles, "Comma-separated: a,b,c");
+  cmd->add_option("--tolerance", o->tolerance, "Relative KKT tolerance");
+  cmd->add_option("--max-iterations", o->max_iterations, "Iteration cap per run");
+  cmd->add_option("--json", o->json_path, "Also write the rows as JSON to this file");
+  cmd->callback([o, &exit_code] { exit_code = run_bench(*o); });
+}
+
+}  // namespace fosls
