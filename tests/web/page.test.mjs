@@ -265,8 +265,9 @@ test('a running job can be cancelled and then deleted from the list', async () =
   const row = await submitAndWaitForRow('slow_hertz');
   // While it runs, the view plots the residuals the polls have seen.
   await row.locator('.state-running').waitFor();
+  await page.locator('#job-summary', { hasText: /^Running: iteration \d+, KKT residual/ }).waitFor();
   await page.waitForFunction(() => Number(document.querySelector('#live-plot')?.dataset.points) >= 2);
-  assert.match(await page.locator('#job-summary').innerText(), /^Running: iteration \d+, KKT residual/);
+  assert.equal(await page.locator('#live-figure').isVisible(), true);
   await page.screenshot({ path: join(screenshots, 'running.png') });
   const cancel = row.getByRole('button', { name: /^Cancel job/ });
   await cancel.click();
