@@ -250,6 +250,13 @@ test('an invalid case shows each error next to its field', async () => {
   assert.equal(await page.locator('#job-table tbody tr').count(), jobsBefore, 'nothing was queued');
   await page.locator('.side').screenshot({ path: join(screenshots, 'case-errors.png') });
 
+  // Unparsable JSON (400): the parser's line is flagged.
+  await setEditorText('{\n  "name": "broken",\n  "mesh": }\n');
+  await page.getByRole('button', { name: 'Submit case' }).click();
+  await page.locator('#case-error-list li', { hasText: /parse error at line 3/ }).waitFor();
+  assert.equal(await page.locator('#case-editor .gutter div').nth(2).getAttribute('class'), 'error-line');
+  assert.match(await page.locator('#submit-status').innerText(), /^Not submitted: .*line 3/);
+
   // Loading an example clears the errors.
   await page.getByRole('button', { name: 'Load example' }).click();
   assert.equal(await page.locator('#case-errors').isVisible(), false);
@@ -265,8 +272,9 @@ test('a running job can be cancelled and then deleted from the list', async () =
   const row = await submitAndWaitForRow('slow_hertz');
   // While it runs, the view plots the residuals the polls have seen.
   await row.locator('.state-running').waitFor();
+  await page.locator('#job-summary', { hasText: /^Running: iteration \d+, KKT residual/ }).waitFor();
   await page.waitForFunction(() => Number(document.querySelector('#live-plot')?.dataset.points) >= 2);
-  assert.match(await page.locator('#job-summary').innerText(), /^Running: iteration \d+, KKT residual/);
+  assert.equal(await page.locator('#live-figure').isVisible(), true);
   await page.screenshot({ path: join(screenshots, 'running.png') });
   const cancel = row.getByRole('button', { name: /^Cancel job/ });
   await cancel.click();
@@ -306,10 +314,10 @@ test('the controls are reachable with the keyboard and show focus', async () => 
 });
 
 test('the page logged no console errors or warnings', async () => {
-  // Chromium reports every HTTP error response as a console error; the 422 of the invalid case
-  // above is expected, anything else is not.
+  // Chromium reports every HTTP error response as a console error; the 422 and 400 of the
+  // invalid cases above are expected, anything else is not.
   const unexpected = consoleProblems.filter(
-    (m) => !/Failed to load resource: the server responded with a status of 422/.test(m),
+    (m) => !/Failed to load resource: the server responded with a status of (422|400) .*\/v1\/jobs\)$/.test(m),
   );
   assert.deepEqual(unexpected, []);
 });

@@ -2,11 +2,21 @@
 import * as api from './api.js';
 import { CaseEditor } from './case_editor.js';
 import { hertzForCase } from './hertz.js';
-import { pressurePlot, residualPlot } from './plots.js';
 import { parseVtu } from './vtu.js';
 import { MESH_FIELDS, autoMagnification, colourGradientCss, drawMesh } from './mesh_view.js';
 
 const $ = (id) => document.getElementById(id);
+
+// The plots need uPlot from web/dist (web/build.sh). Loaded apart so that without it the
+// editor and the job list still work and the page says what is missing.
+let plots = null;
+const plotsReady = import('./plots.js')
+  .then((module) => {
+    plots = module;
+  })
+  .catch(() => {
+    setStatus($('service-status'), 'The plotting library is missing on the server: run web/build.sh.', 'error');
+  });
 
 const POLL_ACTIVE_MS = 1000;   // while a job is queued or running
 const POLL_IDLE_MS = 5000;     // to notice jobs submitted elsewhere (curl, another tab)
@@ -19,6 +29,7 @@ const state = {
   selectedId: null,
   view: null,  // {id, state, result, mesh, charts: []} of the job shown
   pollTimer: 0,
+  unreachable: false,  // the last poll failed: its message is in #service-status
 };
 
 const editor = new CaseEditor({
@@ -44,7 +55,8 @@ function seconds(v) {
 
 function setStatus(element, text, kind = '') {
   element.textContent = text;
-  element.className = kind;
+  element.classList.toggle('ok', kind === 'ok');
+  element.classList.toggle('error', kind === 'error');
 }
 
 // The service keeps the case but does not return it with the job, so the browser remembers
@@ -216,8 +228,26 @@ function renderJobs() {
   }
 }
 
-async function refreshJobs() {
-  clearTimeout(state.pollTimer);
+// One poll at a time: a refresh asked for while one is in flight runs once after it (its
+// answer may predate the change the caller made), and only the last poll arms the timer.
+let pollInFlight = null;
+let pollQueued = null;
+
+function refreshJobs() {
+  if (!pollInFlight) {
+    pollInFlight = pollJobs().finally(() => {
+      pollInFlight = null;
+    });
+    return pollInFlight;
+  }
+  pollQueued ??= pollInFlight.then(() => {
+    pollQueued = null;
+    return refreshJobs();
+  });
+  return pollQueued;
+}
+
+async function pollJobs() {
   try {
     const response = await api.listJobs();
     if (response.ok) {
@@ -230,15 +260,18 @@ async function refreshJobs() {
       }
       const selected = state.jobs.find((j) => j.id === state.selectedId);
       if (selected) showJob(selected);
-      setStatus($('service-status'), '');
+      if (state.unreachable) setStatus($('service-status'), '');
+      state.unreachable = false;
     } else {
       $('jobs-error').hidden = false;
       $('jobs-error').textContent = `Cannot list jobs: ${api.problemMessage(response)}`;
     }
   } catch {
+    state.unreachable = true;
     setStatus($('service-status'), 'The service does not answer; retrying…', 'error');
   }
   const delay = state.jobs.some(isActive) ? POLL_ACTIVE_MS : POLL_IDLE_MS;
+  clearTimeout(state.pollTimer);
   state.pollTimer = setTimeout(refreshJobs, delay);
 }
 
@@ -303,6 +336,8 @@ function destroyLiveChart() {
   state.view?.liveChart?.destroy();
   if (state.view) state.view.liveChart = null;
   $('live-figure').hidden = true;
+  $('live-plot').innerHTML = '';
+  $('live-plot').dataset.points = '0';
 }
 
 // While a job runs the service reports only its latest iteration; the samples seen by the
@@ -314,11 +349,11 @@ function updateLiveChart(job) {
   if (job.progress && (!last || job.progress.iteration > last.iteration)) {
     samples.push({ iteration: job.progress.iteration, kkt_residual: job.progress.kkt_residual });
   }
-  if (samples.length === 0 || (view.liveChart && view.liveDrawn === samples.length)) return;
+  if (!plots || samples.length === 0 || (view.liveChart && view.liveDrawn === samples.length)) return;
   $('live-figure').hidden = false;
   view.liveChart?.destroy();
   $('live-plot').innerHTML = '';
-  view.liveChart = residualPlot($('live-plot'), samples, { correction: false });
+  view.liveChart = plots.residualPlot($('live-plot'), samples, { correction: false });
   view.liveDrawn = samples.length;
 }
 
@@ -368,7 +403,7 @@ function showJob(job) {
 async function loadResult(job) {
   const view = state.view;
   try {
-    const [resultResponse, vtuResponse] = await Promise.all([api.getResult(job.id), api.getSolution(job.id)]);
+    const [resultResponse, vtuResponse] = await Promise.all([api.getResult(job.id), api.getSolution(job.id), plotsReady]);
     if (state.view !== view) return;  // another job was chosen meanwhile
     if (!resultResponse.ok) {
       $('job-summary').textContent = `The result cannot be loaded: ${api.problemMessage(resultResponse)}`;
@@ -470,12 +505,16 @@ function drawCharts(view) {
   pressureBox.innerHTML = '';
   residualBox.innerHTML = '';
   const note = $('hertz-note');
+  if (!plots) {
+    pressureBox.textContent = residualBox.textContent = 'No plots: the plotting library is missing.';
+    return;
+  }
   if (!contact.x?.length) {
     pressureBox.textContent = 'This case has no contact boundary.';
     pressureBox.dataset.points = '0';
     note.textContent = '';
   } else {
-    view.charts.push(pressurePlot(pressureBox, contact, view.hertz, abscissa));
+    view.charts.push(plots.pressurePlot(pressureBox, contact, view.hertz, abscissa));
     const name = String(view.result.name ?? '');
     if (view.hertz) {
       note.textContent = `Dashed: plane-strain Hertz pressure for F = |Fy| = ${fmt(view.hertz.F)}, ` +
@@ -488,7 +527,7 @@ function drawCharts(view) {
     }
   }
   const history = view.result.history ?? [];
-  if (history.length) view.charts.push(residualPlot(residualBox, history));
+  if (history.length) view.charts.push(plots.residualPlot(residualBox, history));
   else {
     residualBox.textContent = 'No iterations were recorded.';
     residualBox.dataset.points = '0';
