@@ -10,9 +10,9 @@ set -euo pipefail
 build_packages=(
   build-essential cmake pkg-config
   libeigen3-dev libsuitesparse-dev libcpp-httplib-dev nlohmann-json3-dev libsqlite3-dev
-  libgmsh-dev libmuparser-dev libcli11-dev libgtest-dev
+  libgmsh-dev libmuparser-dev libcli11-dev libgtest-dev libopenblas-dev
 )
-tool_packages=(clang-format curl sqlite3 nodejs npm chromium wrk)
+tool_packages=(clang-format curl sqlite3 nodejs npm chromium wrk python3 python3-matplotlib python3-numpy)
 
 check_only=0
 case "${1:-}" in
@@ -30,7 +30,7 @@ esac
 provides_command() {
   case "$1" in
     nodejs) command -v node >/dev/null ;;
-    npm | chromium | wrk | curl | sqlite3 | clang-format | cmake) command -v "$1" >/dev/null ;;
+    npm | chromium | wrk | curl | sqlite3 | clang-format | cmake | python3) command -v "$1" >/dev/null ;;
     *) return 1 ;;
   esac
 }

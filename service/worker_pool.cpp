@@ -1,5 +1,9 @@
 #include "worker_pool.hpp"
 
+#include <omp.h>
+
+#include <algorithm>
+
 #include <exception>
 #include <string>
 
@@ -59,6 +63,9 @@ void WorkerPool::join() {
 }
 
 void WorkerPool::run_worker(int index) {
+  // Share the cores between the workers: a solve in each of N workers with all cores each
+  // would oversubscribe the machine, and OpenMP's barriers then wait on descheduled threads.
+  omp_set_num_threads(std::max(1, omp_get_num_procs() / std::max(1, options_.workers)));
   for (;;) {
     std::uint64_t seen = 0;
     {

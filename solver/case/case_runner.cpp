@@ -246,6 +246,16 @@ RunOutput run_case(const CaseSpec& spec, const RunControl& control, const CaseLi
                      {"contact", parts.contact},
                      {"asymmetry", parts.asymmetry},
                      {"units", "stresses scaled by mu"}};
+  // What a viewer needs to compare with a reference (e.g. the Hertz radius and moduli).
+  r["material"] = {
+      {"mu", spec.material.mu},
+      {"lambda", spec.material.incompressible() ? nlohmann::json("inf")
+                                                : nlohmann::json(spec.material.lambda)}};
+  if (spec.mesh.kind == MeshSpec::Kind::kBuiltin)
+    r["mesh"] = {{"builtin", spec.mesh.builtin},
+                 {"params", spec.mesh.params},
+                 {"size", spec.mesh.size},
+                 {"refinements", spec.mesh.refinements}};
   r["weights"] = {{"c1", spec.weights.c1},
                   {"c2", spec.weights.c2},
                   {"c3", spec.weights.c3},

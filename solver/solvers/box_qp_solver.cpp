@@ -3,6 +3,7 @@
 #include <Eigen/SparseCholesky>
 #include <algorithm>
 #include <cmath>
+#include <mutex>
 #include <stdexcept>
 #include <vector>
 
@@ -108,10 +109,12 @@ bool solve_box_qp_dense(const Eigen::MatrixXd& A, const Vector& r, const Vector&
 
 struct CoarseBoxQpSolver::Factor {
   Eigen::SimplicialLDLT<SparseMatrix> ldlt;
+  std::vector<int> free;  ///< the free set `ldlt` factorises (cache of the last one)
+  std::mutex mutex;
 };
 
 CoarseBoxQpSolver::CoarseBoxQpSolver(const SparseMatrix& A)
-    : A_(A), full_(std::make_shared<Factor>()) {
+    : A_(A), full_(std::make_shared<Factor>()), last_(std::make_shared<Factor>()) {
   full_->ldlt.compute(A_);
   bool ok = full_->ldlt.info() == Eigen::Success;
   if (ok)
@@ -139,17 +142,26 @@ bool CoarseBoxQpSolver::solve(const Vector& r, const Vector& lo, const Vector& h
       if (state[j] != 0 && d[j] != 0.0)
         for (SparseMatrix::InnerIterator it(A_, j); it; ++it) ad[it.row()] += it.value() * d[j];
     const int m = static_cast<int>(free.size());
-    std::vector<Eigen::Triplet<double>> t;
     Vector rhs(m);
-    for (int a = 0; a < m; ++a) {
-      rhs[a] = r[free[a]] - ad[free[a]];
-      for (SparseMatrix::InnerIterator it(A_, free[a]); it; ++it)
-        if (index[it.row()] >= 0) t.emplace_back(index[it.row()], a, it.value());
+    for (int a = 0; a < m; ++a) rhs[a] = r[free[a]] - ad[free[a]];
+    // The same free set comes back call after call once the active set has settled (the
+    // linear phase): keep the factorisation of the last one.
+    std::lock_guard<std::mutex> lock(last_->mutex);
+    if (last_->free != free) {
+      std::vector<Eigen::Triplet<double>> t;
+      for (int a = 0; a < m; ++a)
+        for (SparseMatrix::InnerIterator it(A_, free[a]); it; ++it)
+          if (index[it.row()] >= 0) t.emplace_back(index[it.row()], a, it.value());
+      SparseMatrix aff(m, m);
+      aff.setFromTriplets(t.begin(), t.end());
+      last_->ldlt.compute(aff);
+      last_->free = free;
+      if (last_->ldlt.info() != Eigen::Success) {
+        last_->free.clear();
+        return false;
+      }
     }
-    SparseMatrix aff(m, m);
-    aff.setFromTriplets(t.begin(), t.end());
-    Eigen::SimplicialLDLT<SparseMatrix> ldlt(aff);
-    if (ldlt.info() != Eigen::Success) return false;
+    const Eigen::SimplicialLDLT<SparseMatrix>& ldlt = last_->ldlt;
     Vector sol = ldlt.solve(rhs);
     for (int a = 0; a < m; ++a) y[free[a]] = sol[a];
     return true;

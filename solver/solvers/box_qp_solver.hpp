@@ -32,6 +32,7 @@ class CoarseBoxQpSolver {
   SparseMatrix A_;
   struct Factor;
   std::shared_ptr<Factor> full_;
+  std::shared_ptr<Factor> last_;
 };
 
 }  // namespace fosls

@@ -101,8 +101,12 @@ void MultilevelCycle::smooth_level(int j, Vector& c, Vector& r, const Vector& lo
     s.patch->sweep(c, r, lo, hi, forward);
   else
     s.point->sweep(c, r, lo, hi, forward);
-  if (s.strip) s.strip->solve(c, r, lo, hi);
   stats_.smoothing_s += seconds_since(t0);
+  if (s.strip) {
+    const auto t1 = std::chrono::steady_clock::now();
+    s.strip->solve(c, r, lo, hi);
+    stats_.strip_s += seconds_since(t1);
+  }
 }
 
 void MultilevelCycle::smooth(Vector& x, Vector& r, bool forward) {

@@ -41,7 +41,8 @@ struct CycleStatistics {
   int galerkin_rebuilds = 0;
   int safeguard_reductions = 0;  ///< prolongated corrections that had to be shortened
   double galerkin_s = 0.0;
-  double smoothing_s = 0.0;
+  double smoothing_s = 0.0;  ///< vertex-patch or pointwise sweeps
+  double strip_s = 0.0;      ///< contact-strip solves
   double coarse_s = 0.0;
 };
 

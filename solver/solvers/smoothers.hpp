@@ -27,15 +27,22 @@ class PatchSmoother {
  public:
   /// Throws std::runtime_error naming the patch when a local matrix is not positive definite.
   PatchSmoother(const SparseMatrix& A, const std::vector<std::vector<int>>& patches);
+  /// One Gauss–Seidel sweep over the patches. On large levels the patches are processed colour
+  /// by colour on all cores: patches of one colour have no matrix coupling between their DOFs,
+  /// so each one's exact local minimisation sees the same data in any order.
   void sweep(Vector& x, Vector& r, const Vector& lo, const Vector& hi, bool forward) const;
 
  private:
-  void solve_patch(int p, Vector& x, Vector& r, const Vector& lo, const Vector& hi) const;
+  /// Minimises over patch p given its current local residual; returns the change of x there.
+  void solve_patch(int p, const Vector& r_local, Vector& x, const Vector& lo, const Vector& hi,
+                   Vector& change) const;
+  void colour_patches();
 
   const SparseMatrix& A_;
   const std::vector<std::vector<int>>& patches_;
-  std::vector<std::size_t> offset_;  ///< start of each patch's factor in factors_
-  std::vector<double> factors_;      ///< lower Cholesky factor, column-major m × m
+  std::vector<std::size_t> offset_;        ///< start of each patch's factor in factors_
+  std::vector<double> factors_;            ///< lower Cholesky factor, column-major m × m
+  std::vector<std::vector<int>> colours_;  ///< empty: sequential sweeps
 };
 
 /// Exact minimisation over the strip of triangles along the contact boundary, within the
