@@ -93,13 +93,14 @@ TEST(ReadCase, CasesInTheDocumentationRead) {
 }
 
 TEST(ReadCase, SignoriniSquareExample) {
-  const auto r = read_case(load_example("signorini_square"));
+  const nlohmann::json j = load_example("signorini_square");
+  const auto r = read_case(j);
   ASSERT_TRUE(r.spec) << dump_errors(r.errors);
   const CaseSpec& s = *r.spec;
   EXPECT_EQ(s.mesh.kind, MeshSpec::Kind::kBuiltin);
   EXPECT_EQ(s.mesh.builtin, "square");
-  EXPECT_EQ(s.mesh.size, 0.25);
-  EXPECT_EQ(s.mesh.refinements, 3);
+  EXPECT_EQ(s.mesh.size, j["mesh"]["size"].get<double>());
+  EXPECT_EQ(s.mesh.refinements, j["mesh"]["refinements"].get<int>());
   EXPECT_EQ(s.mesh.params.at("width"), 1.0);
   EXPECT_EQ(s.material.mu, 1.0);
   EXPECT_FALSE(s.material.incompressible());
@@ -111,20 +112,22 @@ TEST(ReadCase, SignoriniSquareExample) {
   EXPECT_EQ(bottom.direction, ContactDirection::kBodyNormal);
   const auto& top = s.boundary.at("top");
   EXPECT_EQ(top.type, BoundaryCondition::Type::kDirichlet);
-  EXPECT_EQ(top.values[1].value, -0.05);
+  EXPECT_EQ(top.values[1].value, j["boundary"]["top"]["displacement"][1].get<double>());
   EXPECT_TRUE(
       read_case(load_example("signorini_square_incompressible")).spec->material.incompressible());
 }
 
 TEST(ReadCase, HertzExample) {
-  const auto r = read_case(load_example("hertz"));
+  // The shipped file is tuned by the validation work: compare with what it says, not with
+  // numbers copied from it.
+  const nlohmann::json j = load_example("hertz");
+  const auto r = read_case(j);
   ASSERT_TRUE(r.spec) << dump_errors(r.errors);
   const CaseSpec& s = *r.spec;
   EXPECT_EQ(s.mesh.builtin, "hertz");
-  EXPECT_EQ(s.mesh.params.at("radius"), 1.0);
-  EXPECT_EQ(s.mesh.params.at("contact_fraction"), 0.5);
-  EXPECT_EQ(s.mesh.params.at("grading"), 7.0);
-  EXPECT_EQ(s.mesh.size, 0.1);
+  for (const char* p : {"radius", "contact_fraction", "grading"})
+    EXPECT_EQ(s.mesh.params.at(p), j["mesh"]["builtin"][p].get<double>()) << p;
+  EXPECT_EQ(s.mesh.size, j["mesh"]["size"].get<double>());
   const auto& contact = s.boundary.at("contact");
   EXPECT_EQ(contact.obstacle.kind, Obstacle::Kind::kPlane);
   EXPECT_EQ(contact.obstacle.normal, Point(0, 1));
