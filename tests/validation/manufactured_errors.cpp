@@ -1,0 +1,215 @@
+// The FOSLS functional as an error estimator, measured against the true error of a
+// manufactured solution (docs/validation.md, "Error estimator").
+//
+// Unit square, u = (sin πx cos πy, −cos πx sin πy), σ = 2μ ε(u), f = −div σ = 2π²μ u: the
+// exact solution for every λ including λ = ∞ (div u = 0), Dirichlet data on the left and
+// bottom sides, Neumann data t = σn on the right and top sides (the same problem as
+// tests/validation/manufactured_square.json, which the CLI solves). For each level the
+// program solves the discrete problem with CHOLMOD (no contact: a linear problem) and
+// compares, triangle by triangle, the functional η_T² (the estimator the solver reports) with
+// the true error e_T² = ‖u − u_h‖²_H¹(T) + ‖σ − σ_h‖²_L²(T) + ‖div(σ − σ_h)‖²_L²(T).
+//
+// Usage: validation_manufactured_errors [--lambda 1|inf] [--levels N] [--size H]
+//                                       [--elements R]
+// Prints one JSON object with a row per level; the row of refinement R also lists η_T² and
+// e_T² of every triangle.
+#include <Eigen/CholmodSupport>
+#include <algorithm>
+#include <cmath>
+#include <cstdlib>
+#include <iostream>
+#include <limits>
+#include <nlohmann/json.hpp>
+#include <string>
+#include <vector>
+
+#include "assembly/discretization.hpp"
+#include "mesh/builtin_meshes.hpp"
+#include "post/fe_field.hpp"
+
+namespace {
+
+using fosls::Point;
+
+/// The manufactured solution and its data.
+struct SmoothSolution {
+  double mu = 1.0;
+
+  Eigen::Vector2d u(const Point& p) const {
+    const double x = M_PI * p.x(), y = M_PI * p.y();
+    return {std::sin(x) * std::cos(y), -std::cos(x) * std::sin(y)};
+  }
+  Eigen::Matrix2d grad_u(const Point& p) const {
+    const double x = M_PI * p.x(), y = M_PI * p.y();
+    Eigen::Matrix2d g;
+    g << M_PI * std::cos(x) * std::cos(y), -M_PI * std::sin(x) * std::sin(y),
+        M_PI * std::sin(x) * std::sin(y), -M_PI * std::cos(x) * std::cos(y);
+    return g;
+  }
+  Eigen::Matrix2d sigma(const Point& p) const {
+    const Eigen::Matrix2d g = grad_u(p);
+    return mu * (g + g.transpose());
+  }
+  Eigen::Vector2d f(const Point& p) const { return 2.0 * M_PI * M_PI * mu * u(p); }
+
+  /// Groups of make_square: bottom, right, top, left.
+  fosls::ProblemData problem(double lambda) const {
+    fosls::ProblemData d;
+    d.material.mu = mu;
+    d.material.lambda = lambda;
+    for (int i = 0; i < 2; ++i)
+      d.body_force[i] = [this, i](double x, double y) { return f({x, y})[i]; };
+    d.groups.resize(4);
+    const Point normals[4] = {Point(0, -1), Point(1, 0), Point(0, 1), Point(-1, 0)};
+    for (int g = 0; g < 4; ++g) {
+      const bool dirichlet = g == 0 || g == 3;
+      d.groups[g].role = dirichlet ? fosls::GroupRole::kDirichlet : fosls::GroupRole::kNeumann;
+      const Point n = normals[g];
+      for (int i = 0; i < 2; ++i) {
+        if (dirichlet)
+          d.groups[g].values[i] = [this, i](double x, double y) { return u({x, y})[i]; };
+        else
+          d.groups[g].values[i] = [this, i, n](double x, double y) {
+            return (sigma({x, y}) * n)[i];
+          };
+      }
+    }
+    return d;
+  }
+};
+
+/// Dunavant's 7-point rule, exact for degree 5: barycentric points and weights (sum 1).
+constexpr double kA1 = 0.059715871789770, kB1 = 0.470142064105115;
+constexpr double kA2 = 0.797426985353087, kB2 = 0.101286507323456;
+constexpr double kBary[7][3] = {{1. / 3, 1. / 3, 1. / 3}, {kA1, kB1, kB1}, {kB1, kA1, kB1},
+                                {kB1, kB1, kA1},          {kA2, kB2, kB2}, {kB2, kA2, kB2},
+                                {kB2, kB2, kA2}};
+constexpr double kWeight[7] = {0.225,
+                               0.132394152788506,
+                               0.132394152788506,
+                               0.132394152788506,
+                               0.125939180544827,
+                               0.125939180544827,
+                               0.125939180544827};
+
+/// Squared true error of one triangle, split as [u L², ∇u L², σ L², div σ L²].
+std::array<double, 4> element_error(const fosls::FeField& field, const SmoothSolution& exact,
+                                    int t) {
+  const fosls::Mesh& mesh = field.space().mesh();
+  const auto& tri = mesh.triangle(t);
+  const double area = mesh.triangle_area(t);
+  const Eigen::Vector2d div_h = field.div_sigma(t);
+  const Eigen::Matrix2d grad_h = field.grad_u(t, Point::Zero());
+  std::array<double, 4> e = {0, 0, 0, 0};
+  for (int q = 0; q < 7; ++q) {
+    const Point x = kBary[q][0] * mesh.vertex(tri[0]) + kBary[q][1] * mesh.vertex(tri[1]) +
+                    kBary[q][2] * mesh.vertex(tri[2]);
+    const double w = kWeight[q] * area;
+    e[0] += w * (exact.u(x) - field.u(t, x)).squaredNorm();
+    e[1] += w * (exact.grad_u(x) - grad_h).squaredNorm();
+    e[2] += w * (exact.sigma(x) - field.sigma(t, x)).squaredNorm();
+    e[3] += w * (-exact.f(x) - div_h).squaredNorm();
+  }
+  return e;
+}
+
+double quantile(std::vector<double> v, double q) {
+  std::sort(v.begin(), v.end());
+  const double pos = q * (v.size() - 1);
+  const auto i = static_cast<std::size_t>(pos);
+  if (i + 1 >= v.size()) return v.back();
+  return v[i] + (pos - i) * (v[i + 1] - v[i]);
+}
+
+nlohmann::json level_row(const SmoothSolution& sol, double lambda, double size, int refinements,
+                         bool with_elements) {
+  fosls::Discretization disc(
+      fosls::build_hierarchy(fosls::make_square({.size = size}), refinements), sol.problem(lambda));
+  const auto& p = disc.problem();
+  Eigen::CholmodSupernodalLLT<fosls::SparseMatrix> llt(p.qp.A);
+  if (llt.info() != Eigen::Success) throw std::runtime_error("CHOLMOD factorisation failed");
+  const fosls::Vector x = llt.solve(p.qp.b);
+  const fosls::Vector full = disc.assembler().full_vector(p, x);
+  const fosls::FunctionalParts parts = disc.assembler().functional(full);
+  const fosls::FeField field(disc.finest_space(), full, p.stress_scale);
+  const fosls::Mesh& mesh = disc.meshes().finest();
+
+  std::array<double, 4> total = {0, 0, 0, 0};
+  std::vector<double> ratio(mesh.num_triangles()), true_error(mesh.num_triangles());
+  for (int t = 0; t < mesh.num_triangles(); ++t) {
+    const auto e = element_error(field, sol, t);
+    for (int k = 0; k < 4; ++k) total[k] += e[k];
+    true_error[t] = e[0] + e[1] + e[2] + e[3];
+    // Local efficiency η_T / e_T: bounded above by the norm equivalence, not below (the
+    // estimator's reliability is global), so its spread is part of the picture.
+    ratio[t] = std::sqrt(parts.element[t] / (e[0] + e[1] + e[2] + e[3]));
+  }
+  const double error = std::sqrt(total[0] + total[1] + total[2] + total[3]);
+  const double j = parts.total();
+  nlohmann::json row = {
+      {"refinements", refinements},
+      {"dofs", p.qp.size()},
+      {"triangles", mesh.num_triangles()},
+      {"h_max", mesh.edge_length_range().second},
+      {"functional",
+       {{"total", j}, {"momentum", parts.momentum}, {"constitutive", parts.constitutive}}},
+      {"error",
+       {{"u_l2", std::sqrt(total[0])},
+        {"grad_u_l2", std::sqrt(total[1])},
+        {"sigma_l2", std::sqrt(total[2])},
+        {"div_sigma_l2", std::sqrt(total[3])},
+        {"norm", error}}},
+      {"efficiency", std::sqrt(j) / error},
+      {"local_efficiency",
+       {{"min", quantile(ratio, 0.0)},
+        {"p05", quantile(ratio, 0.05)},
+        {"median", quantile(ratio, 0.5)},
+        {"p95", quantile(ratio, 0.95)},
+        {"max", quantile(ratio, 1.0)}}}};
+  if (with_elements) {
+    row["element_functional"] = parts.element;  // η_T²
+    row["element_error"] = true_error;          // e_T²
+  }
+  return row;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  double lambda = 1.0, size = 0.25;
+  int levels = 5, elements = -1;
+  for (int i = 1; i < argc; ++i) {
+    const std::string arg = argv[i];
+    if (i + 1 >= argc) {
+      std::cerr << "usage: " << argv[0]
+                << " [--lambda 1|inf] [--levels N] [--size H] [--elements R]\n";
+      return 2;
+    }
+    const std::string value = argv[++i];
+    if (arg == "--lambda")
+      lambda = value == "inf" ? std::numeric_limits<double>::infinity() : std::stod(value);
+    else if (arg == "--levels")
+      levels = std::stoi(value);
+    else if (arg == "--size")
+      size = std::stod(value);
+    else if (arg == "--elements")
+      elements = std::stoi(value);
+    else {
+      std::cerr << "unknown option " << arg << '\n';
+      return 2;
+    }
+  }
+  if (levels < 1 || levels > 8 || !(size > 0) || !(lambda >= 0)) {
+    std::cerr << "need 1 <= levels <= 8, size > 0, lambda >= 0\n";
+    return 2;
+  }
+  const SmoothSolution sol;
+  nlohmann::json out = {
+      {"lambda", std::isinf(lambda) ? nlohmann::json("inf") : nlohmann::json(lambda)},
+      {"size", size},
+      {"rows", nlohmann::json::array()}};
+  for (int r = 0; r < levels; ++r)
+    out["rows"].push_back(level_row(sol, lambda, size, r, r == elements));
+  std::cout << out.dump(1) << '\n';
+  return 0;
+}

@@ -1,0 +1,242 @@
+#!/usr/bin/env python3
+"""Regression tests of the validation (docs/validation.md): the coarse levels of its tables,
+recomputed and compared with the recorded numbers within tolerances that a loss of accuracy
+would exceed. Standard library only.
+
+    python3 tests/validation/test_validation.py --bin build/bin/fosls-contact \
+        --estimator build/bin/validation_manufactured_errors [TestClass ...]
+
+ctest runs one class per test (tests/validation/tests.cmake, label `validation`).
+"""
+
+import argparse
+import copy
+import json
+import math
+import os
+import subprocess
+import sys
+import unittest
+
+sys.dont_write_bytecode = True  # no __pycache__ in the source tree
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+import validation_lib as vl  # noqa: E402
+
+BIN = None
+ESTIMATOR = None
+
+# Recorded by run_validation.py (docs/validation.md, section 1): refinement →
+# (F, err a, err p0, L2 err p).
+HERTZ_RECORDED = {
+    1: {1: (0.012765, 0.1112, -0.0331, 0.2425),
+        2: (0.012626, 0.0869, -0.0000, 0.1090),
+        3: (0.012554, 0.0384, 0.0108, 0.0679)},
+    "inf": {1: (0.021006, 0.0832, -0.0371, 0.2330),
+            2: (0.021344, 0.0570, -0.0048, 0.1181),
+            3: (0.021432, 0.0170, 0.0025, 0.0638)},
+}
+# Section 2, refinement 3: (λ, direction, top displacement) → err p0.
+FINITE_BODY_RECORDED = {
+    (1, "body_normal", 0.0025): 0.0032,
+    (1, "body_normal", 0.04): 0.0377,
+    (1, "obstacle_normal", 0.0025): -0.0067,
+    (1, "obstacle_normal", 0.04): -0.0157,
+}
+# Section 3: iterations on refinements 1, 2, 3.
+ITERATIONS_RECORDED = {
+    (1, "mmg"): (26, 27, 27), (1, "tnnmg"): (24, 21, 19), (1, "pdas"): (4, 6, 8),
+    ("inf", "mmg"): (49, 39, 36), ("inf", "tnnmg"): (46, 36, 32), ("inf", "pdas"): (4, 5, 8),
+}
+PGS_RECORDED = 11522  # λ = 1, refinement 0
+# Section 4: refinement → (F_y, contact zone of edge midpoints).
+SIGNORINI_RECORDED = {
+    "signorini_square": {1: (0.090711, (0.1875, 0.8125)),
+                         2: (0.085988, (0.21875, 0.78125)),
+                         3: (0.084140, (0.265625, 0.734375))},
+    "signorini_square_incompressible": {1: (0.131160, (0.1875, 0.8125)),
+                                        2: (0.134243, (0.28125, 0.71875)),
+                                        3: (0.135844, (0.265625, 0.734375))},
+}
+# Section 5: efficiency index on refinements 0..3.
+EFFICIENCY_RECORDED = {"1": (0.8912, 0.8688, 0.8806, 0.9034),
+                       "inf": (0.8933, 0.8888, 0.8985, 0.9069)}
+
+
+class HertzLevels:
+    """Refinements 1–3 of the Hertz table for one λ."""
+    lam = None
+
+    def test_levels_against_recorded_table(self):
+        rows = []
+        for r, (force, err_a, err_p0, err_l2) in sorted(HERTZ_RECORDED[self.lam].items()):
+            case = vl.hertz_case(self.lam, r)
+            result = vl.solve(BIN, case)
+            m = vl.hertz_measures(result, case)
+            rows.append(m)
+            with self.subTest(refinements=r):
+                self.assertTrue(m["converged"])
+                # The force is fixed by the discretisation (solver tolerance ~1e-7 relative).
+                self.assertAlmostEqual(m["force"] / force, 1.0, delta=1e-3)
+                self.assertAlmostEqual(m["force_from_pressure"] / m["force"], 1.0, delta=1e-9)
+                self.assertAlmostEqual(m["err_a"], err_a, delta=0.005)
+                self.assertAlmostEqual(m["err_p0"], err_p0, delta=0.003)
+                self.assertAlmostEqual(m["err_l2"] / err_l2, 1.0, delta=0.05)
+        # Accuracy improves with h.
+        for coarse, fine in zip(rows, rows[1:]):
+            self.assertLess(fine["err_l2"], 0.8 * coarse["err_l2"])
+            self.assertLess(abs(fine["err_a"]), abs(coarse["err_a"]))
+        # Refinement 3 (the shipped case) is already close to Hertz.
+        self.assertLess(abs(rows[-1]["err_p0"]), 0.02)
+        self.assertLess(abs(rows[-1]["err_a"]), 0.05)
+
+
+class HertzCompressible(HertzLevels, unittest.TestCase):
+    lam = 1
+
+
+class HertzIncompressible(HertzLevels, unittest.TestCase):
+    lam = "inf"
+
+
+class FiniteBody(unittest.TestCase):
+    def test_peak_pressure_error_grows_with_a_over_r(self):
+        base = vl.load_example("hertz")
+        d0 = -base["boundary"]["top"]["displacement"][1]
+        size0, grading0 = base["mesh"]["size"], base["mesh"]["builtin"]["grading"]
+        got = {}
+        for (lam, direction, d), err_p0 in FINITE_BODY_RECORDED.items():
+            size = size0 * math.sqrt(d / d0)
+            case = vl.hertz_case(lam, 3, displacement=d, size=size, direction=direction)
+            case["mesh"]["builtin"]["grading"] = min(100.0, grading0 * size0 / size)
+            m = vl.hertz_measures(vl.solve(BIN, case), case)
+            got[(lam, direction, d)] = m
+            with self.subTest(direction=direction, displacement=d):
+                self.assertAlmostEqual(m["err_p0"], err_p0, delta=0.003)
+        small, large = (got[(1, "body_normal", d)] for d in (0.0025, 0.04))
+        self.assertGreater(large["a_over_R"], 4 * small["a_over_R"])
+        self.assertGreater(large["err_p0"] - small["err_p0"], 0.025)
+        # The body-normal constraint: an error of first order in a/R.
+        for d in (0.0025, 0.04):
+            body, obstacle = got[(1, "body_normal", d)], got[(1, "obstacle_normal", d)]
+            self.assertAlmostEqual((body["err_p0"] - obstacle["err_p0"]) / body["a_over_R"], 0.30,
+                                   delta=0.05)
+
+
+class SolverIterations(unittest.TestCase):
+    def test_iterations_stay_level_independent_and_methods_agree(self):
+        for lam in (1, "inf"):
+            forces = {}
+            for method in ("mmg", "tnnmg", "pdas"):
+                recorded = ITERATIONS_RECORDED[(lam, method)]
+                for r, its in zip((1, 2, 3), recorded):
+                    result = vl.solve(BIN, vl.hertz_case(lam, r, method=method))
+                    forces[(method, r)] = abs(result["contact"]["force"][1])
+                    with self.subTest(lam=lam, method=method, refinements=r):
+                        self.assertTrue(result["converged"])
+                        self.assertLessEqual(result["iterations"], int(1.2 * its) + 2)
+            for r in (1, 2, 3):
+                for method in ("tnnmg", "pdas"):
+                    self.assertAlmostEqual(forces[(method, r)] / forces[("mmg", r)], 1.0,
+                                           delta=1e-5)
+        # The single-level baseline converges to the same answer, slowly.
+        result = vl.solve(BIN, vl.hertz_case(1, 0, method="pgs", max_iterations=20000))
+        self.assertTrue(result["converged"])
+        self.assertGreater(result["iterations"], 0.8 * PGS_RECORDED)
+        self.assertLess(result["iterations"], 1.2 * PGS_RECORDED)
+        mmg = vl.solve(BIN, vl.hertz_case(1, 0))
+        self.assertAlmostEqual(result["contact"]["force"][1] / mmg["contact"]["force"][1], 1.0,
+                               delta=1e-5)
+
+
+class ErrorEstimator(unittest.TestCase):
+    def test_efficiency_index_and_rates(self):
+        tool = {}
+        for lam, recorded in EFFICIENCY_RECORDED.items():
+            text = subprocess.run([ESTIMATOR, "--lambda", lam, "--levels", str(len(recorded))],
+                                  check=True, capture_output=True, text=True).stdout
+            rows = json.loads(text)["rows"]
+            tool[lam] = rows
+            for row, eff in zip(rows, recorded):
+                with self.subTest(lam=lam, refinements=row["refinements"]):
+                    self.assertAlmostEqual(row["efficiency"], eff, delta=0.01)
+                    self.assertLessEqual(row["local_efficiency"]["max"], 1.02)
+                    self.assertGreater(row["local_efficiency"]["p05"], 0.5)
+            for coarse, fine in zip(rows, rows[1:]):
+                h = math.log(coarse["h_max"] / fine["h_max"])
+                order_j = 0.5 * math.log(coarse["functional"]["total"]
+                                         / fine["functional"]["total"]) / h
+                order_e = math.log(coarse["error"]["norm"] / fine["error"]["norm"]) / h
+                self.assertAlmostEqual(order_j, 1.0, delta=0.1)
+                self.assertAlmostEqual(order_e, 1.0, delta=0.1)
+        # The case JSON with expressions, through the CLI: the same discrete problem.
+        path = os.path.join(os.path.dirname(os.path.abspath(__file__)),
+                            "manufactured_square.json")
+        with open(path) as f:
+            case = json.load(f)
+        result = vl.solve(BIN, case)
+        r = case["mesh"]["refinements"]
+        self.assertAlmostEqual(result["functional"]["total"]
+                               / tool["1"][r]["functional"]["total"], 1.0, delta=1e-8)
+
+
+class SignoriniSquare(unittest.TestCase):
+    def test_levels_against_recorded_table(self):
+        for name, levels in SIGNORINI_RECORDED.items():
+            for r, (force, zone) in sorted(levels.items()):
+                results = {}
+                for method in ("mmg", "pdas"):
+                    case = copy.deepcopy(vl.load_example(name))
+                    case["mesh"]["refinements"] = r
+                    case["solver"]["method"] = method
+                    results[method] = vl.solve(BIN, case)
+                with self.subTest(case=name, refinements=r):
+                    got = results["mmg"]["contact"]["force"][1]
+                    self.assertAlmostEqual(got / force, 1.0, delta=1e-4)
+                    self.assertAlmostEqual(results["pdas"]["contact"]["force"][1] / got, 1.0,
+                                           delta=1e-6)
+                    lo, hi = vl.contact_zone(results["mmg"]["contact"])
+                    self.assertAlmostEqual(lo, zone[0], delta=1e-9)
+                    self.assertAlmostEqual(hi, zone[1], delta=1e-9)
+
+
+class ShippedBenchmarks(unittest.TestCase):
+    def test_cases_run_as_shipped(self):
+        recorded_force = {"hertz": HERTZ_RECORDED[1][3][0],
+                          "hertz_incompressible": HERTZ_RECORDED["inf"][3][0],
+                          "signorini_square": SIGNORINI_RECORDED["signorini_square"][3][0],
+                          "signorini_square_incompressible":
+                              SIGNORINI_RECORDED["signorini_square_incompressible"][3][0]}
+        for name, force in recorded_force.items():
+            case = vl.load_example(name)
+            with self.subTest(case=name):
+                self.assertEqual(case["mesh"]["refinements"], 3)
+                result = vl.solve(BIN, case)
+                self.assertTrue(result["converged"])
+                self.assertLessEqual(result["iterations"], 60)
+                self.assertAlmostEqual(abs(result["contact"]["force"][1]) / force, 1.0,
+                                       delta=1e-3)
+
+    def test_hertz_coarse_mesh_is_graded_as_in_the_seed(self):
+        for lam in (1, "inf"):
+            result = vl.solve(BIN, vl.hertz_case(lam, 0), vtu=True)
+            h_min, h_max = vl.edge_length_range(result["vtu"]["points"],
+                                                result["vtu"]["triangles"])
+            self.assertGreaterEqual(h_max / h_min, 6.5)
+            self.assertLessEqual(h_max / h_min, 7.5)
+
+
+def main():
+    global BIN, ESTIMATOR
+    root = vl.ROOT
+    parser = argparse.ArgumentParser(add_help=False)
+    parser.add_argument("--bin", default=os.path.join(root, "build", "bin", "fosls-contact"))
+    parser.add_argument("--estimator",
+                        default=os.path.join(root, "build", "bin",
+                                             "validation_manufactured_errors"))
+    args, rest = parser.parse_known_args()
+    BIN, ESTIMATOR = args.bin, args.estimator
+    unittest.main(argv=[sys.argv[0]] + rest, verbosity=2)
+
+
+if __name__ == "__main__":
+    main()

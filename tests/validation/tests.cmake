@@ -1,0 +1,21 @@
+# Validation against analytic and discrete references (docs/validation.md), label
+# `validation`. The full regeneration of the tables and figures is
+# tests/validation/run_validation.py (needs python3-numpy and python3-matplotlib); the tests
+# below re-check the coarse levels of those tables with the standard library only.
+set(VALIDATION_DIR ${CMAKE_CURRENT_LIST_DIR})
+
+# Element-wise functional against the true error of a manufactured solution.
+add_executable(validation_manufactured_errors ${VALIDATION_DIR}/manufactured_errors.cpp)
+target_link_libraries(validation_manufactured_errors PRIVATE fosls nlohmann_json::nlohmann_json)
+
+find_package(Python3 COMPONENTS Interpreter)
+if(Python3_Interpreter_FOUND)
+  foreach(check ShippedBenchmarks HertzCompressible HertzIncompressible FiniteBody
+                SolverIterations ErrorEstimator SignoriniSquare)
+    add_test(NAME validation_${check}
+             COMMAND ${Python3_EXECUTABLE} ${VALIDATION_DIR}/test_validation.py
+                     --bin $<TARGET_FILE:fosls-contact>
+                     --estimator $<TARGET_FILE:validation_manufactured_errors> ${check})
+    set_tests_properties(validation_${check} PROPERTIES LABELS validation TIMEOUT 120)
+  endforeach()
+endif()
