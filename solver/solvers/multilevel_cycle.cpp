@@ -51,6 +51,49 @@ void MultilevelCycle::set_truncation(const std::vector<char>& truncated) {
   built_ = true;
 }
 
+SparseMatrix MultilevelCycle::truncated_galerkin() {
+  // P̃ = P − E with E = the rows of P at the truncated DOFs T, so
+  //   P̃ᵀAP̃ = PᵀAP − EᵀAP − (EᵀAP)ᵀ + EᵀAE,
+  // where PᵀAP and AP are computed once and the corrections involve only the rows in T (the
+  // contact boundary): the fine-level product is not redone for every new active set.
+  const int top = hierarchy_.num_levels() - 1;
+  const SparseMatrix& p = hierarchy_.levels[top].prolongation;
+  if (!galerkin_cache_) {
+    galerkin_cache_ = std::make_unique<GalerkinCache>();
+    const SparseMatrix ap = qp_.A * p;
+    galerkin_cache_->ap_rows = ap;
+    galerkin_cache_->p_rows = p;
+    galerkin_cache_->full = SparseMatrix(p.transpose()) * ap;
+  }
+  const GalerkinCache& g = *galerkin_cache_;
+  std::vector<int> rows;
+  for (int i = 0; i < static_cast<int>(truncated_.size()); ++i)
+    if (truncated_[i]) rows.push_back(i);
+  if (rows.empty()) return g.full;
+  const int m = static_cast<int>(rows.size()), nc = static_cast<int>(p.cols());
+  std::vector<int> local(truncated_.size(), -1);
+  for (int k = 0; k < m; ++k) local[rows[k]] = k;
+  std::vector<Eigen::Triplet<double>> tp, tap, taa;
+  for (int k = 0; k < m; ++k) {
+    for (RowMajorMatrix::InnerIterator it(g.p_rows, rows[k]); it; ++it)
+      tp.emplace_back(k, static_cast<int>(it.col()), it.value());
+    for (RowMajorMatrix::InnerIterator it(g.ap_rows, rows[k]); it; ++it)
+      tap.emplace_back(k, static_cast<int>(it.col()), it.value());
+    for (SparseMatrix::InnerIterator it(qp_.A, rows[k]); it; ++it)
+      if (int l = local[it.row()]; l >= 0) taa.emplace_back(l, k, it.value());
+  }
+  SparseMatrix rp(m, nc), rap(m, nc), att(m, m);
+  rp.setFromTriplets(tp.begin(), tp.end());
+  rap.setFromTriplets(tap.begin(), tap.end());
+  att.setFromTriplets(taa.begin(), taa.end());
+  const SparseMatrix rpt = rp.transpose();
+  const SparseMatrix cross = rpt * rap;  // EᵀAP
+  const SparseMatrix inner = rpt * (att * rp);
+  SparseMatrix a = g.full - cross - SparseMatrix(cross.transpose()) + inner;
+  a.prune(0.0);
+  return a;
+}
+
 void MultilevelCycle::rebuild_coarse_levels() {
   const auto t0 = std::chrono::steady_clock::now();
   const int top = hierarchy_.num_levels() - 1;
@@ -69,10 +112,14 @@ void MultilevelCycle::rebuild_coarse_levels() {
   // The finest matrix never changes: its smoother is built once.
   if (!built_) make_smoother(top);
   for (int j = top - 1; j >= 0; --j) {
-    const SparseMatrix& p = prolongation(j + 1);
-    const SparseMatrix ap = matrix(j + 1) * p;
     SparseMatrix& a = levels_[j]->A;
-    a = SparseMatrix(p.transpose()) * ap;
+    if (j == top - 1) {
+      a = truncated_galerkin();
+    } else {
+      const SparseMatrix& p = prolongation(j + 1);
+      const SparseMatrix ap = matrix(j + 1) * p;
+      a = SparseMatrix(p.transpose()) * ap;
+    }
     // A coarse DOF whose basis function was truncated away entirely has an empty row and
     // column; a unit diagonal keeps the level definite and its correction (with zero
     // restricted residual) exactly zero.

@@ -83,6 +83,7 @@ class MultilevelCycle {
   void smooth_level(int j, Vector& c, Vector& r, const Vector& lo, const Vector& hi, bool forward);
   void project_obstacle(int j, const Vector& c, const Vector& hi, Vector& coarse_hi) const;
   const SparseMatrix& matrix(int j) const;
+  SparseMatrix truncated_galerkin();
   const SparseMatrix& prolongation(int j) const;
 
   const BoxQp& qp_;
@@ -93,6 +94,13 @@ class MultilevelCycle {
   bool built_ = false;
   SparseMatrix truncated_prolongation_;
   std::unique_ptr<CoarseBoxQpSolver> coarse_solver_;
+  using RowMajorMatrix = Eigen::SparseMatrix<double, Eigen::RowMajor, int>;
+  /// A P_J (row-major), P_J (row-major) and P_JᵀAP_J without truncation.
+  struct GalerkinCache {
+    RowMajorMatrix ap_rows, p_rows;
+    SparseMatrix full;
+  };
+  std::unique_ptr<GalerkinCache> galerkin_cache_;
   std::function<void(const Vector&, const Vector&)> sweep_hook_;
   CycleStatistics stats_;
 };

@@ -58,34 +58,6 @@ PatchSmoother::PatchSmoother(const SparseMatrix& A, const std::vector<std::vecto
   if (failed >= 0)
     throw std::runtime_error("the local matrix of vertex patch " + std::to_string(failed) +
                              " is not positive definite");
-  // Colouring pays where a sweep is long enough to share between threads.
-  if (omp_get_max_threads() > 1 && patches.size() >= 4000) colour_patches();
-}
-
-void PatchSmoother::colour_patches() {
-  // Greedy colouring: two patches conflict when a DOF of one couples (A_ij ≠ 0) to a DOF of
-  // the other. Then a patch's local residual b − A x involves no DOF another patch of its
-  // colour changes.
-  const int n = static_cast<int>(A_.rows());
-  std::vector<std::vector<int>> patches_of(n);
-  for (std::size_t p = 0; p < patches_.size(); ++p)
-    for (int i : patches_[p]) patches_of[i].push_back(static_cast<int>(p));
-  std::vector<int> colour(patches_.size(), -1);
-  std::vector<int> seen_at;  // colour → last patch that saw it as taken
-  for (std::size_t p = 0; p < patches_.size(); ++p) {
-    for (int i : patches_[p])
-      for (SparseMatrix::InnerIterator it(A_, i); it; ++it)
-        for (int q : patches_of[it.row()])
-          if (colour[q] >= 0) {
-            if (colour[q] >= static_cast<int>(seen_at.size())) seen_at.resize(colour[q] + 1, -1);
-            seen_at[colour[q]] = static_cast<int>(p);
-          }
-    int c = 0;
-    while (c < static_cast<int>(seen_at.size()) && seen_at[c] == static_cast<int>(p)) ++c;
-    colour[p] = c;
-    if (c >= static_cast<int>(colours_.size())) colours_.resize(c + 1);
-    colours_[c].push_back(static_cast<int>(p));
-  }
 }
 
 void PatchSmoother::solve_patch(int p, const Vector& rl, Vector& x, const Vector& lo,
@@ -128,48 +100,16 @@ void PatchSmoother::solve_patch(int p, const Vector& rl, Vector& x, const Vector
 void PatchSmoother::sweep(Vector& x, Vector& r, const Vector& lo, const Vector& hi,
                           bool forward) const {
   const int np = static_cast<int>(patches_.size());
-  if (colours_.empty()) {
-    Vector rl, change;
-    for (int k = 0; k < np; ++k) {
-      const int p = forward ? k : np - 1 - k;
-      const auto& idx = patches_[p];
-      rl.resize(idx.size());
-      for (std::size_t a = 0; a < idx.size(); ++a) rl[a] = r[idx[a]];
-      solve_patch(p, rl, x, lo, hi, change);
-      for (std::size_t a = 0; a < idx.size(); ++a)
-        if (change[a] != 0.0) update_residual(A_, idx[a], change[a], r);
-    }
-    return;
+  Vector rl, change;
+  for (int k = 0; k < np; ++k) {
+    const int p = forward ? k : np - 1 - k;
+    const auto& idx = patches_[p];
+    rl.resize(idx.size());
+    for (std::size_t a = 0; a < idx.size(); ++a) rl[a] = r[idx[a]];
+    solve_patch(p, rl, x, lo, hi, change);
+    for (std::size_t a = 0; a < idx.size(); ++a)
+      if (change[a] != 0.0) update_residual(A_, idx[a], change[a], r);
   }
-  // Coloured: local residuals from b − A x (rows of a symmetric A are its columns).
-  Vector ax;
-  symmetric_multiply(A_, x, ax);
-  const Vector b = r + ax;
-  const int nc = static_cast<int>(colours_.size());
-  const int* outer = A_.outerIndexPtr();
-  const int* inner = A_.innerIndexPtr();
-  const double* val = A_.valuePtr();
-  for (int k = 0; k < nc; ++k) {
-    const auto& patches = colours_[forward ? k : nc - 1 - k];
-#pragma omp parallel
-    {
-      Vector rl, change;
-#pragma omp for schedule(static)
-      for (std::size_t q = 0; q < patches.size(); ++q) {
-        const auto& idx = patches_[patches[q]];
-        rl.resize(idx.size());
-        for (std::size_t a = 0; a < idx.size(); ++a) {
-          const int i = idx[a];
-          double s = b[i];
-          for (int t = outer[i]; t < outer[i + 1]; ++t) s -= val[t] * x[inner[t]];
-          rl[a] = s;
-        }
-        solve_patch(patches[q], rl, x, lo, hi, change);
-      }
-    }
-  }
-  symmetric_multiply(A_, x, ax);
-  r = b - ax;
 }
 
 }  // namespace fosls
