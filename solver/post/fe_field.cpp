@@ -53,41 +53,48 @@ Eigen::Vector2d FeField::div_sigma(int t) const {
   return d;
 }
 
+namespace {
+// Dunavant degree-5 rule: barycentric points and weights (sum 1).
+constexpr double kA1 = 0.059715871789770, kB1 = 0.470142064105115;
+constexpr double kA2 = 0.797426985353087, kB2 = 0.101286507323456;
+constexpr double kBary[7][3] = {{1. / 3, 1. / 3, 1. / 3}, {kA1, kB1, kB1}, {kB1, kA1, kB1},
+                                {kB1, kB1, kA1},          {kA2, kB2, kB2}, {kB2, kA2, kB2},
+                                {kB2, kB2, kA2}};
+constexpr double kWeight[7] = {0.225,
+                               0.132394152788506,
+                               0.132394152788506,
+                               0.132394152788506,
+                               0.125939180544827,
+                               0.125939180544827,
+                               0.125939180544827};
+}  // namespace
+
+std::array<double, 4> element_error(const FeField& field, const ExactSolution& exact, int t) {
+  const Mesh& mesh = field.space().mesh();
+  const auto& tri = mesh.triangle(t);
+  const double area = mesh.triangle_area(t);
+  const Eigen::Vector2d divh = field.div_sigma(t);
+  const Eigen::Matrix2d gradh = field.grad_u(t, Point::Zero());
+  std::array<double, 4> e = {0, 0, 0, 0};
+  for (int q = 0; q < 7; ++q) {
+    const Point x = kBary[q][0] * mesh.vertex(tri[0]) + kBary[q][1] * mesh.vertex(tri[1]) +
+                    kBary[q][2] * mesh.vertex(tri[2]);
+    const double w = kWeight[q] * area;
+    e[0] += w * (exact.u(x) - field.u(t, x)).squaredNorm();
+    e[1] += w * (exact.grad_u(x) - gradh).squaredNorm();
+    e[2] += w * (exact.sigma(x) - field.sigma(t, x)).squaredNorm();
+    e[3] += w * (exact.div_sigma(x) - divh).squaredNorm();
+  }
+  return e;
+}
+
 ErrorNorms error_norms(const FeField& field, const ExactSolution& exact) {
-  // Dunavant degree-5 rule: barycentric points and weights (sum 1).
-  static const double a1 = 0.059715871789770, b1 = 0.470142064105115;
-  static const double a2 = 0.797426985353087, b2 = 0.101286507323456;
-  static const double bary[7][3] = {{1. / 3, 1. / 3, 1. / 3},
-                                    {a1, b1, b1},
-                                    {b1, a1, b1},
-                                    {b1, b1, a1},
-                                    {a2, b2, b2},
-                                    {b2, a2, b2},
-                                    {b2, b2, a2}};
-  static const double w[7] = {0.225,
-                              0.132394152788506,
-                              0.132394152788506,
-                              0.132394152788506,
-                              0.125939180544827,
-                              0.125939180544827,
-                              0.125939180544827};
   const Mesh& mesh = field.space().mesh();
   double ul2 = 0, ugrad = 0, sl2 = 0, sdiv = 0;
 #pragma omp parallel for reduction(+ : ul2, ugrad, sl2, sdiv) schedule(static)
   for (int t = 0; t < mesh.num_triangles(); ++t) {
-    const auto& tri = mesh.triangle(t);
-    const double area = mesh.triangle_area(t);
-    const Eigen::Vector2d divh = field.div_sigma(t);
-    const Eigen::Matrix2d gradh = field.grad_u(t, Point::Zero());
-    for (int q = 0; q < 7; ++q) {
-      Point x = bary[q][0] * mesh.vertex(tri[0]) + bary[q][1] * mesh.vertex(tri[1]) +
-                bary[q][2] * mesh.vertex(tri[2]);
-      const double wq = w[q] * area;
-      ul2 += wq * (exact.u(x) - field.u(t, x)).squaredNorm();
-      ugrad += wq * (exact.grad_u(x) - gradh).squaredNorm();
-      sl2 += wq * (exact.sigma(x) - field.sigma(t, x)).squaredNorm();
-      sdiv += wq * (exact.div_sigma(x) - divh).squaredNorm();
-    }
+    const auto e = element_error(field, exact, t);
+    ul2 += e[0], ugrad += e[1], sl2 += e[2], sdiv += e[3];
   }
   ErrorNorms e;
   e.u_l2 = std::sqrt(ul2);

@@ -2,6 +2,7 @@
 // Point evaluation of a discrete solution (u_h, σ_h) and error norms against exact fields.
 
 #include <Eigen/Core>
+#include <array>
 #include <functional>
 
 #include "core/box_qp.hpp"
@@ -43,7 +44,11 @@ struct ErrorNorms {
   double sigma_l2 = 0, sigma_hdiv = 0;  ///< ‖σ − σ_h‖_L2, ‖σ − σ_h‖_H(div)
 };
 
-/// Errors by a 7-point quadrature of degree 5 on every triangle.
+/// Squared errors of one triangle by a 7-point quadrature of degree 5:
+/// ‖u − u_h‖², ‖∇(u − u_h)‖², ‖σ − σ_h‖², ‖div(σ − σ_h)‖² on T.
+std::array<double, 4> element_error(const FeField& field, const ExactSolution& exact, int t);
+
+/// The element errors summed over the mesh.
 ErrorNorms error_norms(const FeField& field, const ExactSolution& exact);
 
 }  // namespace fosls

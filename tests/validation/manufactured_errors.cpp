@@ -26,92 +26,13 @@
 #include "assembly/discretization.hpp"
 #include "mesh/builtin_meshes.hpp"
 #include "post/fe_field.hpp"
+#include "verification/verification_problems.hpp"
 
 namespace {
 
 using fosls::Point;
 
-/// The manufactured solution and its data.
-struct SmoothSolution {
-  double mu = 1.0;
-
-  Eigen::Vector2d u(const Point& p) const {
-    const double x = M_PI * p.x(), y = M_PI * p.y();
-    return {std::sin(x) * std::cos(y), -std::cos(x) * std::sin(y)};
-  }
-  Eigen::Matrix2d grad_u(const Point& p) const {
-    const double x = M_PI * p.x(), y = M_PI * p.y();
-    Eigen::Matrix2d g;
-    g << M_PI * std::cos(x) * std::cos(y), -M_PI * std::sin(x) * std::sin(y),
-        M_PI * std::sin(x) * std::sin(y), -M_PI * std::cos(x) * std::cos(y);
-    return g;
-  }
-  Eigen::Matrix2d sigma(const Point& p) const {
-    const Eigen::Matrix2d g = grad_u(p);
-    return mu * (g + g.transpose());
-  }
-  Eigen::Vector2d f(const Point& p) const { return 2.0 * M_PI * M_PI * mu * u(p); }
-
-  /// Groups of make_square: bottom, right, top, left.
-  fosls::ProblemData problem(double lambda) const {
-    fosls::ProblemData d;
-    d.material.mu = mu;
-    d.material.lambda = lambda;
-    for (int i = 0; i < 2; ++i)
-      d.body_force[i] = [this, i](double x, double y) { return f({x, y})[i]; };
-    d.groups.resize(4);
-    const Point normals[4] = {Point(0, -1), Point(1, 0), Point(0, 1), Point(-1, 0)};
-    for (int g = 0; g < 4; ++g) {
-      const bool dirichlet = g == 0 || g == 3;
-      d.groups[g].role = dirichlet ? fosls::GroupRole::kDirichlet : fosls::GroupRole::kNeumann;
-      const Point n = normals[g];
-      for (int i = 0; i < 2; ++i) {
-        if (dirichlet)
-          d.groups[g].values[i] = [this, i](double x, double y) { return u({x, y})[i]; };
-        else
-          d.groups[g].values[i] = [this, i, n](double x, double y) {
-            return (sigma({x, y}) * n)[i];
-          };
-      }
-    }
-    return d;
-  }
-};
-
-/// Dunavant's 7-point rule, exact for degree 5: barycentric points and weights (sum 1).
-constexpr double kA1 = 0.059715871789770, kB1 = 0.470142064105115;
-constexpr double kA2 = 0.797426985353087, kB2 = 0.101286507323456;
-constexpr double kBary[7][3] = {{1. / 3, 1. / 3, 1. / 3}, {kA1, kB1, kB1}, {kB1, kA1, kB1},
-                                {kB1, kB1, kA1},          {kA2, kB2, kB2}, {kB2, kA2, kB2},
-                                {kB2, kB2, kA2}};
-constexpr double kWeight[7] = {0.225,
-                               0.132394152788506,
-                               0.132394152788506,
-                               0.132394152788506,
-                               0.125939180544827,
-                               0.125939180544827,
-                               0.125939180544827};
-
-/// Squared true error of one triangle, split as [u L², ∇u L², σ L², div σ L²].
-std::array<double, 4> element_error(const fosls::FeField& field, const SmoothSolution& exact,
-                                    int t) {
-  const fosls::Mesh& mesh = field.space().mesh();
-  const auto& tri = mesh.triangle(t);
-  const double area = mesh.triangle_area(t);
-  const Eigen::Vector2d div_h = field.div_sigma(t);
-  const Eigen::Matrix2d grad_h = field.grad_u(t, Point::Zero());
-  std::array<double, 4> e = {0, 0, 0, 0};
-  for (int q = 0; q < 7; ++q) {
-    const Point x = kBary[q][0] * mesh.vertex(tri[0]) + kBary[q][1] * mesh.vertex(tri[1]) +
-                    kBary[q][2] * mesh.vertex(tri[2]);
-    const double w = kWeight[q] * area;
-    e[0] += w * (exact.u(x) - field.u(t, x)).squaredNorm();
-    e[1] += w * (exact.grad_u(x) - grad_h).squaredNorm();
-    e[2] += w * (exact.sigma(x) - field.sigma(t, x)).squaredNorm();
-    e[3] += w * (-exact.f(x) - div_h).squaredNorm();
-  }
-  return e;
-}
+using SmoothSolution = fosls::testing::SmoothSolution;
 
 double quantile(std::vector<double> v, double q) {
   std::sort(v.begin(), v.end());
@@ -136,8 +57,9 @@ nlohmann::json level_row(const SmoothSolution& sol, double lambda, double size, 
 
   std::array<double, 4> total = {0, 0, 0, 0};
   std::vector<double> ratio(mesh.num_triangles()), true_error(mesh.num_triangles());
+  const fosls::ExactSolution exact = sol.exact();
   for (int t = 0; t < mesh.num_triangles(); ++t) {
-    const auto e = element_error(field, sol, t);
+    const auto e = fosls::element_error(field, exact, t);
     for (int k = 0; k < 4; ++k) total[k] += e[k];
     true_error[t] = e[0] + e[1] + e[2] + e[3];
     // Local efficiency η_T / e_T: bounded above by the norm equivalence, not below (the
