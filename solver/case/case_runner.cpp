@@ -239,6 +239,13 @@ RunOutput run_case(const CaseSpec& spec, const RunControl& control, const CaseLi
     obstacle_normal |= bc.type == BoundaryCondition::Type::kContact &&
                        bc.direction == ContactDirection::kObstacleNormal;
   c["direction"] = obstacle_normal ? "obstacle_normal" : "body_normal";
+  nlohmann::json obstacles = nlohmann::json::object();
+  for (const auto& [name, bc] : spec.boundary)
+    if (bc.type == BoundaryCondition::Type::kContact)
+      obstacles[name] = bc.obstacle.kind == Obstacle::Kind::kPlane    ? "plane"
+                        : bc.obstacle.kind == Obstacle::Kind::kCircle ? "circle"
+                                                                      : "gap";
+  c["obstacles"] = obstacles;
   r["contact"] = c;
   r["functional"] = {{"total", parts.total()},
                      {"momentum", parts.momentum},

@@ -177,3 +177,18 @@ test('the colour map runs from dark purple to yellow and clamps', () => {
   assert.deepEqual(colourAt(-3), colourAt(0));
   assert.deepEqual(colourAt(NaN), colourAt(0));
 });
+
+test('the Hertz comparison can be rebuilt from a result alone', async () => {
+  const { caseFromResult, hertzForCase } = await import('../../web/app/hertz.js');
+  const result = {
+    name: 'hertz',
+    material: { mu: 1, lambda: 'inf' },
+    mesh: { builtin: 'hertz', params: { radius: 2, contact_fraction: 0.5, grading: 9 } },
+    contact: { force: [0, 0.02], obstacles: { contact: 'plane' }, x: [0], pressure: [0.1] },
+  };
+  const h = hertzForCase(caseFromResult(result), result);
+  assert.equal(h.R, 2);
+  assert.equal(h.Estar, 4);
+  assert.ok(Math.abs(h.a - Math.sqrt((4 * 0.02 * 2) / (Math.PI * 4))) < 1e-12);
+  assert.equal(caseFromResult({ name: 'x' }), null);
+});

@@ -44,6 +44,24 @@ export function hertzPressure(x, { a, p0 }) {
 }
 
 /**
+ * The parts of a case that hertzForCase reads, rebuilt from a result (which carries the
+ * material, the builtin mesh and the obstacle type of each contact group), for jobs this
+ * browser did not submit. Null when the result lacks them.
+ */
+export function caseFromResult(result) {
+  if (!result?.material || !result?.mesh?.builtin || !result?.contact?.obstacles) return null;
+  const boundary = {};
+  for (const [group, type] of Object.entries(result.contact.obstacles))
+    boundary[group] = { type: 'contact', obstacle: { type } };
+  return {
+    name: result.name,
+    mesh: { builtin: { name: result.mesh.builtin, ...(result.mesh.params ?? {}) } },
+    material: result.material,
+    boundary,
+  };
+}
+
+/**
  * The Hertz comparison for a case and its result, or null when it does not apply: the case
  * name contains "hertz", the mesh is the builtin "hertz" half disk (radius R, default 1) and a
  * contact boundary has a plane obstacle. F = |force_y| of the result.

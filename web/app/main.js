@@ -1,7 +1,7 @@
 // The page: wires the case editor, the job list and the job view to the service's API.
 import * as api from './api.js';
 import { CaseEditor } from './case_editor.js';
-import { hertzForCase } from './hertz.js';
+import { caseFromResult, hertzForCase } from './hertz.js';
 import { parseVtu } from './vtu.js';
 import { MESH_FIELDS, autoMagnification, colourGradientCss, drawMesh } from './mesh_view.js';
 
@@ -448,7 +448,7 @@ function addNumber(dl, term, value, title) {
 function renderResult(job, view) {
   const r = view.result;
   const contact = r.contact ?? { x: [], s: [], pressure: [], active: [], force: [0, 0] };
-  view.hertz = hertzForCase(view.caseJson, r);
+  view.hertz = hertzForCase(view.caseJson ?? caseFromResult(r), r);
 
   const summary = $('job-summary');
   summary.className = r.converged ? 'ok' : 'error';
