@@ -1,6 +1,5 @@
 #include "assembly/definiteness.hpp"
 
-#include <Eigen/CholmodSupport>
 #include <Eigen/SparseCholesky>
 
 namespace fosls {
@@ -43,17 +42,6 @@ bool contact_layer_is_definite(const FoslsSpace& space, const BoxQp& qp) {
   Eigen::SimplicialLDLT<SparseMatrix> ldlt(sub);
   if (ldlt.info() != Eigen::Success) return false;
   return (ldlt.vectorD().array() > 0).all();
-}
-
-bool galerkin_is_definite(const SparseMatrix& A, const LevelHierarchy& hierarchy, int max_dofs) {
-  SparseMatrix a = A;
-  for (int j = hierarchy.num_levels() - 1; j > 0 && a.rows() > max_dofs; --j) {
-    const SparseMatrix& p = hierarchy.levels[j].prolongation;
-    const SparseMatrix ap = a * p;
-    a = SparseMatrix(p.transpose()) * ap;
-  }
-  Eigen::CholmodSupernodalLLT<SparseMatrix> llt(a);
-  return llt.info() == Eigen::Success;
 }
 
 }  // namespace fosls

@@ -180,10 +180,6 @@ RunOutput run_case(const CaseSpec& spec, const RunControl& control, const CaseLi
   const SolverOptions options = solver_options(spec.solver);
   const LevelHierarchy hierarchy =
       options.method == SolverMethod::kPdas ? LevelHierarchy{} : disc.build_hierarchy();
-  // pdas factorises A itself and reports indefiniteness from there.
-  if (has_contact(spec) && options.method != SolverMethod::kPdas &&
-      !galerkin_is_definite(problem.qp.A, hierarchy))
-    throw indefinite(spec.weights);
   const auto t_assembly = Clock::now();
 
   SolverObserver observer;

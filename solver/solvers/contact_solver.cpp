@@ -9,6 +9,14 @@
 
 namespace fosls {
 
+bool chain_is_definite(const GalerkinChain& chain, int max_dofs) {
+  int level = 0;
+  for (int j = 0; j < static_cast<int>(chain.matrices.size()); ++j)
+    if (chain.matrices[j].rows() <= max_dofs) level = j;
+  Eigen::CholmodSupernodalLLT<SparseMatrix> llt(chain.matrices[level]);
+  return llt.info() == Eigen::Success;
+}
+
 const char* method_name(SolverMethod m) {
   switch (m) {
     case SolverMethod::kMmg:
@@ -46,8 +54,9 @@ class Step {
 
 class MmgStep : public Step {
  public:
-  MmgStep(const BoxQp& qp, const LevelHierarchy& h, const MultilevelOptions& o)
-      : cycle_(qp, h, o) {}
+  MmgStep(const BoxQp& qp, const LevelHierarchy& h, const MultilevelOptions& o,
+          std::shared_ptr<const GalerkinChain> chain)
+      : cycle_(qp, h, o, std::move(chain)) {}
   void iterate(Vector& x, Vector& r) override { cycle_.nonlinear_cycle(x, r); }
   CycleStatistics statistics() const override { return cycle_.statistics(); }
   MultilevelCycle& cycle() { return cycle_; }
@@ -81,8 +90,9 @@ class PgsStep : public Step {
 /// set, projection onto the bounds, exact line search on J.
 class TnnmgStep : public Step {
  public:
-  TnnmgStep(const BoxQp& qp, const LevelHierarchy& h, const MultilevelOptions& o)
-      : qp_(qp), options_(o), cycle_(qp, h, o) {}
+  TnnmgStep(const BoxQp& qp, const LevelHierarchy& h, const MultilevelOptions& o,
+            std::shared_ptr<const GalerkinChain> chain)
+      : qp_(qp), options_(o), cycle_(qp, h, o, std::move(chain)) {}
   void iterate(Vector& x, Vector& r) override {
     for (int s = 0; s < std::max(1, options_.pre_smoothing); ++s) cycle_.smooth(x, r, true);
     const std::vector<char> frozen = active_set(qp_, x);
@@ -174,14 +184,14 @@ class PdasStep : public Step {
   bool first_ = true;
 };
 
-/// The Galerkin problem of level j−1 seen from the problem of level j at x = 0: A_{j−1} = PᵀAP,
-/// b_{j−1} = Pᵀb and upper bounds by the coarse-obstacle projection of the level-j bounds.
-BoxQp coarser_problem(const BoxQp& fine, const Level& level, CoarseProjection projection) {
+/// The Galerkin problem of level j−1 seen from the problem of level j at x = 0: A_{j−1} = PᵀAP
+/// (from the chain), b_{j−1} = Pᵀb and upper bounds by the coarse-obstacle projection of the
+/// level-j bounds.
+BoxQp coarser_problem(const BoxQp& fine, const Level& level, const SparseMatrix& coarse_matrix,
+                      CoarseProjection projection) {
   const SparseMatrix& p = level.prolongation;
   BoxQp c;
-  const SparseMatrix ap = fine.A * p;
-  c.A = SparseMatrix(p.transpose()) * ap;
-  c.A.makeCompressed();
+  c.A = coarse_matrix;
   c.b = p.transpose() * fine.b;
   const int n = static_cast<int>(p.cols());
   c.lower = Vector::Constant(n, -kNoBound);
@@ -195,16 +205,21 @@ BoxQp coarser_problem(const BoxQp& fine, const Level& level, CoarseProjection pr
 
 /// Nested iteration: the initial iterate of the finest level from solves on the coarser ones.
 /// Returns false (x untouched) when x = 0 is not feasible, e.g. for a negative gap.
+SolverReport solve_with_chain(const BoxQp& qp, const LevelHierarchy& hierarchy,
+                              const SolverOptions& options, const SolverObserver& observer,
+                              Vector& x, std::shared_ptr<const GalerkinChain> chain);
+
 bool nested_initial_guess(const BoxQp& qp, const LevelHierarchy& h, const SolverOptions& options,
-                          Vector& x, SolverReport& report) {
+                          const std::shared_ptr<const GalerkinChain>& chain, Vector& x,
+                          SolverReport& report) {
   const int top = h.num_levels() - 1;
   if (top < 1) return false;
   for (int i = 0; i < qp.size(); ++i)
     if (qp.lower[i] > 0 || qp.upper[i] < 0) return false;
   std::vector<BoxQp> problems(top);
   for (int j = top; j >= 1; --j)
-    problems[j - 1] =
-        coarser_problem(j == top ? qp : problems[j], h.levels[j], options.multilevel.projection);
+    problems[j - 1] = coarser_problem(j == top ? qp : problems[j], h.levels[j],
+                                      chain->matrices[j - 1], options.multilevel.projection);
   SolverOptions inner = options;
   inner.nested = false;
   inner.tolerance = options.nested_tolerance;
@@ -213,6 +228,9 @@ bool nested_initial_guess(const BoxQp& qp, const LevelHierarchy& h, const Solver
   for (int j = 0; j < top; ++j) {
     LevelHierarchy sub;
     sub.levels.assign(h.levels.begin(), h.levels.begin() + j + 1);
+    auto sub_chain = std::make_shared<GalerkinChain>();
+    sub_chain->matrices.assign(chain->matrices.begin(), chain->matrices.begin() + j + 1);
+    sub_chain->ap.assign(chain->ap.begin(), chain->ap.begin() + j + 1);
     if (j > 0) {
       xc = h.levels[j].prolongation * xc;
       for (int i = 0; i < xc.size(); ++i)
@@ -220,7 +238,7 @@ bool nested_initial_guess(const BoxQp& qp, const LevelHierarchy& h, const Solver
     }
     // The coarsest level is solved exactly by the multilevel cycle's coarse solver.
     if (j == 0) inner.method = SolverMethod::kMmg;
-    const SolverReport r = solve_contact(problems[j], sub, inner, {}, xc);
+    const SolverReport r = solve_with_chain(problems[j], sub, inner, {}, xc, sub_chain);
     inner.method = options.method;
     report.nested_iterations.push_back(r.iterations);
   }
@@ -234,6 +252,26 @@ bool nested_initial_guess(const BoxQp& qp, const LevelHierarchy& h, const Solver
 SolverReport solve_contact(const BoxQp& qp, const LevelHierarchy& hierarchy,
                            const SolverOptions& options, const SolverObserver& observer,
                            Vector& x) {
+  const bool multilevel =
+      options.method == SolverMethod::kMmg || options.method == SolverMethod::kTnnmg;
+  const auto t0 = Clock::now();
+  std::shared_ptr<const GalerkinChain> chain;
+  if (multilevel) {
+    chain = std::make_shared<const GalerkinChain>(galerkin_chain(qp.A, hierarchy));
+    if (!chain_is_definite(*chain))
+      throw std::runtime_error("the FOSLS matrix is not positive definite");
+  }
+  const double chain_s = std::chrono::duration<double>(Clock::now() - t0).count();
+  SolverReport report = solve_with_chain(qp, hierarchy, options, observer, x, chain);
+  report.setup_s += chain_s;
+  return report;
+}
+
+namespace {
+
+SolverReport solve_with_chain(const BoxQp& qp, const LevelHierarchy& hierarchy,
+                              const SolverOptions& options, const SolverObserver& observer,
+                              Vector& x, std::shared_ptr<const GalerkinChain> chain) {
   SolverReport report;
   const auto t_setup = Clock::now();
   const int n = qp.size();
@@ -242,22 +280,24 @@ SolverReport solve_contact(const BoxQp& qp, const LevelHierarchy& hierarchy,
 
   const bool multilevel =
       options.method == SolverMethod::kMmg || options.method == SolverMethod::kTnnmg;
+  if (multilevel && !chain)
+    chain = std::make_shared<const GalerkinChain>(galerkin_chain(qp.A, hierarchy));
   if (multilevel && options.nested) {
     const auto t_nested = Clock::now();
-    nested_initial_guess(qp, hierarchy, options, x, report);
+    nested_initial_guess(qp, hierarchy, options, chain, x, report);
     report.nested_s = std::chrono::duration<double>(Clock::now() - t_nested).count();
   }
   std::unique_ptr<Step> step;
   MultilevelCycle* cycle = nullptr;
   switch (options.method) {
     case SolverMethod::kMmg: {
-      auto s = std::make_unique<MmgStep>(qp, hierarchy, options.multilevel);
+      auto s = std::make_unique<MmgStep>(qp, hierarchy, options.multilevel, chain);
       cycle = &s->cycle();
       step = std::move(s);
       break;
     }
     case SolverMethod::kTnnmg:
-      step = std::make_unique<TnnmgStep>(qp, hierarchy, options.multilevel);
+      step = std::make_unique<TnnmgStep>(qp, hierarchy, options.multilevel, chain);
       break;
     case SolverMethod::kPdas:
       step = std::make_unique<PdasStep>(qp);
@@ -333,5 +373,7 @@ SolverReport solve_contact(const BoxQp& qp, const LevelHierarchy& hierarchy,
                      std::to_string(options.tolerance);
   return report;
 }
+
+}  // namespace
 
 }  // namespace fosls

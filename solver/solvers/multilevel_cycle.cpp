@@ -18,10 +18,29 @@ struct MultilevelCycle::LevelState {
   std::unique_ptr<StripSmoother> strip;
 };
 
+GalerkinChain galerkin_chain(const SparseMatrix& A, const LevelHierarchy& hierarchy) {
+  const int top = hierarchy.num_levels() - 1;
+  GalerkinChain c;
+  c.matrices.resize(top + 1);
+  c.ap.resize(top + 1);
+  c.matrices[top] = A;
+  for (int j = top; j >= 1; --j) {
+    const SparseMatrix& p = hierarchy.levels[j].prolongation;
+    const SparseMatrix ap = c.matrices[j] * p;
+    c.matrices[j - 1] = SparseMatrix(p.transpose()) * ap;
+    c.matrices[j - 1].makeCompressed();
+    c.ap[j] = ap;
+  }
+  return c;
+}
+
 MultilevelCycle::MultilevelCycle(const BoxQp& qp, const LevelHierarchy& hierarchy,
-                                 MultilevelOptions options)
-    : qp_(qp), hierarchy_(hierarchy), options_(options) {
+                                 MultilevelOptions options,
+                                 std::shared_ptr<const GalerkinChain> chain)
+    : qp_(qp), hierarchy_(hierarchy), options_(options), chain_(std::move(chain)) {
   const int nl = hierarchy.num_levels();
+  if (!chain_) chain_ = std::make_shared<const GalerkinChain>(galerkin_chain(qp.A, hierarchy));
+  if (nl > 1) top_prolongation_rows_ = hierarchy.levels[nl - 1].prolongation;
   for (int j = 0; j < nl; ++j) levels_.push_back(std::make_unique<LevelState>());
   set_truncation(std::vector<char>(qp.size(), 0));
 }
@@ -58,26 +77,20 @@ SparseMatrix MultilevelCycle::truncated_galerkin() {
   // contact boundary): the fine-level product is not redone for every new active set.
   const int top = hierarchy_.num_levels() - 1;
   const SparseMatrix& p = hierarchy_.levels[top].prolongation;
-  if (!galerkin_cache_) {
-    galerkin_cache_ = std::make_unique<GalerkinCache>();
-    const SparseMatrix ap = qp_.A * p;
-    galerkin_cache_->ap_rows = ap;
-    galerkin_cache_->p_rows = p;
-    galerkin_cache_->full = SparseMatrix(p.transpose()) * ap;
-  }
-  const GalerkinCache& g = *galerkin_cache_;
+  const SparseMatrix& full = chain_->matrices[top - 1];
+  const RowMajorMatrix& ap_rows = chain_->ap[top];
   std::vector<int> rows;
   for (int i = 0; i < static_cast<int>(truncated_.size()); ++i)
     if (truncated_[i]) rows.push_back(i);
-  if (rows.empty()) return g.full;
+  if (rows.empty()) return full;
   const int m = static_cast<int>(rows.size()), nc = static_cast<int>(p.cols());
   std::vector<int> local(truncated_.size(), -1);
   for (int k = 0; k < m; ++k) local[rows[k]] = k;
   std::vector<Eigen::Triplet<double>> tp, tap, taa;
   for (int k = 0; k < m; ++k) {
-    for (RowMajorMatrix::InnerIterator it(g.p_rows, rows[k]); it; ++it)
+    for (RowMajorMatrix::InnerIterator it(top_prolongation_rows_, rows[k]); it; ++it)
       tp.emplace_back(k, static_cast<int>(it.col()), it.value());
-    for (RowMajorMatrix::InnerIterator it(g.ap_rows, rows[k]); it; ++it)
+    for (RowMajorMatrix::InnerIterator it(ap_rows, rows[k]); it; ++it)
       tap.emplace_back(k, static_cast<int>(it.col()), it.value());
     for (SparseMatrix::InnerIterator it(qp_.A, rows[k]); it; ++it)
       if (int l = local[it.row()]; l >= 0) taa.emplace_back(l, k, it.value());
@@ -89,7 +102,7 @@ SparseMatrix MultilevelCycle::truncated_galerkin() {
   const SparseMatrix rpt = rp.transpose();
   const SparseMatrix cross = rpt * rap;  // EᵀAP
   const SparseMatrix inner = rpt * (att * rp);
-  SparseMatrix a = g.full - cross - SparseMatrix(cross.transpose()) + inner;
+  SparseMatrix a = full - cross - SparseMatrix(cross.transpose()) + inner;
   a.prune(0.0);
   return a;
 }
@@ -111,9 +124,12 @@ void MultilevelCycle::rebuild_coarse_levels() {
   };
   // The finest matrix never changes: its smoother is built once.
   if (!built_) make_smoother(top);
+  const bool truncating = std::find(truncated_.begin(), truncated_.end(), 1) != truncated_.end();
   for (int j = top - 1; j >= 0; --j) {
     SparseMatrix& a = levels_[j]->A;
-    if (j == top - 1) {
+    if (!truncating) {
+      a = chain_->matrices[j];
+    } else if (j == top - 1) {
       a = truncated_galerkin();
     } else {
       const SparseMatrix& p = prolongation(j + 1);

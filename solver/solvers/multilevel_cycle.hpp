@@ -46,6 +46,17 @@ struct CycleStatistics {
   double coarse_s = 0.0;
 };
 
+using RowMajorMatrix = Eigen::SparseMatrix<double, Eigen::RowMajor, int>;
+
+/// The untruncated Galerkin matrices A_j = P_{j+1}ᵀ A_{j+1} P_{j+1} of every coarser level and
+/// the products A_j P_j (row-major, for the truncation corrections), computed once per solve
+/// and shared by the nested iteration, the cycles of every level and the definiteness check.
+struct GalerkinChain {
+  std::vector<SparseMatrix> matrices;  ///< A_0 … A_J (A_J is the problem's matrix)
+  std::vector<RowMajorMatrix> ap;      ///< ap[j] = A_j P_j for j ≥ 1 (ap[0] empty)
+};
+GalerkinChain galerkin_chain(const SparseMatrix& A, const LevelHierarchy& hierarchy);
+
 /// The coarse obstacle of method.md §4.3: from the defects d ≥ 0 of the bounded DOFs of level
 /// j (kNoBound where a DOF is unbounded or truncated) to upper bounds of level j−1 that keep
 /// every prolongated coarse correction below d (exactly where contact normals agree between
@@ -55,7 +66,9 @@ void project_defect(const Level& fine_level, CoarseProjection projection, const 
 
 class MultilevelCycle {
  public:
-  MultilevelCycle(const BoxQp& qp, const LevelHierarchy& hierarchy, MultilevelOptions options);
+  /// `chain` (the Galerkin matrices of these levels) is computed here when not given.
+  MultilevelCycle(const BoxQp& qp, const LevelHierarchy& hierarchy, MultilevelOptions options,
+                  std::shared_ptr<const GalerkinChain> chain = nullptr);
   ~MultilevelCycle();
 
   /// One monotone V-cycle: J(x) does not increase and x stays within [lower, upper].
@@ -94,13 +107,8 @@ class MultilevelCycle {
   bool built_ = false;
   SparseMatrix truncated_prolongation_;
   std::unique_ptr<CoarseBoxQpSolver> coarse_solver_;
-  using RowMajorMatrix = Eigen::SparseMatrix<double, Eigen::RowMajor, int>;
-  /// A P_J (row-major), P_J (row-major) and P_JᵀAP_J without truncation.
-  struct GalerkinCache {
-    RowMajorMatrix ap_rows, p_rows;
-    SparseMatrix full;
-  };
-  std::unique_ptr<GalerkinCache> galerkin_cache_;
+  std::shared_ptr<const GalerkinChain> chain_;
+  RowMajorMatrix top_prolongation_rows_;  ///< P_J row-major (truncation corrections)
   std::function<void(const Vector&, const Vector&)> sweep_hook_;
   CycleStatistics stats_;
 };
