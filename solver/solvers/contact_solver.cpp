@@ -9,11 +9,12 @@
 
 namespace fosls {
 
-bool chain_is_definite(const GalerkinChain& chain, int max_dofs) {
-  int level = 0;
-  for (int j = 0; j < static_cast<int>(chain.matrices.size()); ++j)
-    if (chain.matrices[j].rows() <= max_dofs) level = j;
-  Eigen::CholmodSupernodalLLT<SparseMatrix> llt(chain.matrices[level]);
+bool chain_is_definite(const SparseMatrix& A, const GalerkinChain& chain, int max_dofs) {
+  const SparseMatrix* checked = chain.matrices.empty() ? &A : &chain.matrices[0];
+  for (const SparseMatrix& m : chain.matrices)
+    if (m.rows() <= max_dofs) checked = &m;
+  if (A.rows() <= max_dofs) checked = &A;
+  Eigen::CholmodSupernodalLLT<SparseMatrix> llt(*checked);
   return llt.info() == Eigen::Success;
 }
 
@@ -229,7 +230,7 @@ bool nested_initial_guess(const BoxQp& qp, const LevelHierarchy& h, const Solver
     LevelHierarchy sub;
     sub.levels.assign(h.levels.begin(), h.levels.begin() + j + 1);
     auto sub_chain = std::make_shared<GalerkinChain>();
-    sub_chain->matrices.assign(chain->matrices.begin(), chain->matrices.begin() + j + 1);
+    sub_chain->matrices.assign(chain->matrices.begin(), chain->matrices.begin() + j);
     sub_chain->ap.assign(chain->ap.begin(), chain->ap.begin() + j + 1);
     if (j > 0) {
       xc = h.levels[j].prolongation * xc;
@@ -258,7 +259,7 @@ SolverReport solve_contact(const BoxQp& qp, const LevelHierarchy& hierarchy,
   std::shared_ptr<const GalerkinChain> chain;
   if (multilevel) {
     chain = std::make_shared<const GalerkinChain>(galerkin_chain(qp.A, hierarchy));
-    if (!chain_is_definite(*chain))
+    if (!chain_is_definite(qp.A, *chain))
       throw std::runtime_error("the FOSLS matrix is not positive definite");
   }
   const double chain_s = std::chrono::duration<double>(Clock::now() - t0).count();

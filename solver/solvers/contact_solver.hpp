@@ -62,7 +62,7 @@ struct SolverReport {
 /// decides at a small fraction of the cost of factorising the finest matrix; weights within
 /// ≈ 10 % of the limit may pass. mmg and tnnmg run this check first; pdas learns it from its
 /// own factorisation.
-bool chain_is_definite(const GalerkinChain& chain, int max_dofs = 50000);
+bool chain_is_definite(const SparseMatrix& A, const GalerkinChain& chain, int max_dofs = 50000);
 
 /// Minimises the QP from x (projected onto the bounds first). The hierarchy is needed by mmg
 /// and tnnmg only. Non-convergence is reported, not thrown; a matrix that is not positive

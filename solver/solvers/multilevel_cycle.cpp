@@ -21,12 +21,11 @@ struct MultilevelCycle::LevelState {
 GalerkinChain galerkin_chain(const SparseMatrix& A, const LevelHierarchy& hierarchy) {
   const int top = hierarchy.num_levels() - 1;
   GalerkinChain c;
-  c.matrices.resize(top + 1);
+  c.matrices.resize(std::max(top, 0));
   c.ap.resize(top + 1);
-  c.matrices[top] = A;
   for (int j = top; j >= 1; --j) {
     const SparseMatrix& p = hierarchy.levels[j].prolongation;
-    const SparseMatrix ap = c.matrices[j] * p;
+    const SparseMatrix ap = (j == top ? A : c.matrices[j]) * p;
     c.matrices[j - 1] = SparseMatrix(p.transpose()) * ap;
     c.matrices[j - 1].makeCompressed();
     c.ap[j] = ap;

@@ -52,7 +52,7 @@ using RowMajorMatrix = Eigen::SparseMatrix<double, Eigen::RowMajor, int>;
 /// the products A_j P_j (row-major, for the truncation corrections), computed once per solve
 /// and shared by the nested iteration, the cycles of every level and the definiteness check.
 struct GalerkinChain {
-  std::vector<SparseMatrix> matrices;  ///< A_0 … A_J (A_J is the problem's matrix)
+  std::vector<SparseMatrix> matrices;  ///< A_0 … A_{J−1} (A_J is the problem's own matrix)
   std::vector<RowMajorMatrix> ap;      ///< ap[j] = A_j P_j for j ≥ 1 (ap[0] empty)
 };
 GalerkinChain galerkin_chain(const SparseMatrix& A, const LevelHierarchy& hierarchy);

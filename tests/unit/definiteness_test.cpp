@@ -46,7 +46,7 @@ TEST(Definiteness, ChecksAgreeWithCholmodOnTheFinestMatrix) {
     const GalerkinChain chain = galerkin_chain(sq.problem().qp.A, sq.build_hierarchy());
     ASSERT_LE(chain.matrices[1].rows(), 1000);
     ASSERT_GT(chain.matrices[2].rows(), 1000);
-    EXPECT_EQ(chain_is_definite(chain, 1000), definite) << c3;
+    EXPECT_EQ(chain_is_definite(sq.problem().qp.A, chain, 1000), definite) << c3;
     // The boundary-layer screen never raises a false alarm, and catches c3 far too large.
     if (definite || c3 >= 2.0)
       EXPECT_EQ(contact_layer_is_definite(sq.finest_space(), sq.problem().qp), definite) << c3;
