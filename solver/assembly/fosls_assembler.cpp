@@ -335,6 +335,19 @@ Vector FoslsAssembler::full_vector(const AssembledProblem& p, const Vector& x_fr
   return x;
 }
 
+double FoslsAssembler::edge_normal_defect(const Vector& x_full, int e) const {
+  const Mesh& mesh = space_.mesh();
+  const Point ne = mesh.edge_normal(e);
+  double defect = 0.0;
+  for (int v : mesh.edge(e)) {
+    const double un = space_.is_contact_vertex(v) ? x_full[space_.u_dof(v, 0)]
+                                                  : ne.x() * x_full[space_.u_dof(v, 0)] +
+                                                        ne.y() * x_full[space_.u_dof(v, 1)];
+    defect += 0.5 * (un - vertex_gap_[v]);
+  }
+  return defect;
+}
+
 FunctionalParts FoslsAssembler::functional(const Vector& x_full) const {
   const Mesh& mesh = space_.mesh();
   const Weights& w = data_.weights;
@@ -364,15 +377,7 @@ FunctionalParts FoslsAssembler::functional(const Vector& x_full) const {
   parts.momentum = mom, parts.constitutive = con, parts.asymmetry = asym;
   for (int e = 0; e < mesh.num_edges(); ++e) {
     if (!space_.is_contact_edge(e)) continue;
-    const Point ne = mesh.edge_normal(e);
-    double un = 0.0, gbar = 0.0;
-    for (int v : mesh.edge(e)) {
-      un += 0.5 * (space_.is_contact_vertex(v)
-                       ? x_full[space_.u_dof(v, 0)]
-                       : ne.x() * x_full[space_.u_dof(v, 0)] + ne.y() * x_full[space_.u_dof(v, 1)]);
-      gbar += 0.5 * vertex_gap_[v];
-    }
-    const double term = w.c3 * x_full[space_.sigma_dof(e, 0)] * (un - gbar);
+    const double term = w.c3 * x_full[space_.sigma_dof(e, 0)] * edge_normal_defect(x_full, e);
     parts.contact += term;
     parts.element[mesh.edge_triangles(e)[0]] += term;
   }

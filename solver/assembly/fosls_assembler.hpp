@@ -44,6 +44,10 @@ class FoslsAssembler {
   /// Full (rotated, scaled) DOF vector from the free DOFs of a solution.
   Vector full_vector(const AssembledProblem& p, const Vector& x_free) const;
 
+  /// Mean of u·n − g over contact edge e, with u·n linear between its end points (U_n at a
+  /// contact vertex, n_e·u at a Dirichlet one): the factor of S_n in the contact term.
+  double edge_normal_defect(const Vector& x_full, int e) const;
+
   /// The functional and its element-wise split at a full DOF vector.
   FunctionalParts functional(const Vector& x_full) const;
 

@@ -28,16 +28,14 @@ std::string group_list(const Mesh& mesh) {
 }
 
 /// DOFs of the finest level after `r` red refinements, from the coarse mesh's counts: each
-/// refinement quadruples triangles, doubles boundary edges, and Euler's formula fixes the rest.
+/// refinement adds a vertex per edge, halves every edge and adds three edges inside every
+/// triangle, which it splits into four.
 long long estimated_dofs(const Mesh& coarse, int r) {
   long long nt = coarse.num_triangles(), ne = coarse.num_edges(), nv = coarse.num_vertices();
-  long long nb = 0;
-  for (int e = 0; e < coarse.num_edges(); ++e) nb += coarse.is_boundary_edge(e);
   for (int k = 0; k < r; ++k) {
     nv = nv + ne;
     ne = 2 * ne + 3 * nt;
     nt = 4 * nt;
-    nb = 2 * nb;
   }
   return 2 * nv + 2 * ne;
 }

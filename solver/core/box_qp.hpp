@@ -17,6 +17,11 @@ constexpr double kNoBound = 1e300;
 
 inline bool is_bounded_above(double upper) { return upper < 0.5 * kNoBound; }
 inline bool is_bounded_below(double lower) { return lower > -0.5 * kNoBound; }
+/// Whether x sits on one of its (finite) bounds: the active set of the solvers and the
+/// truncated set of the multilevel cycle.
+inline bool is_at_bound(double x, double lower, double upper) {
+  return (is_bounded_above(upper) && x >= upper) || (is_bounded_below(lower) && x <= lower);
+}
 
 /// Bound-constrained quadratic program. A is symmetric positive definite and stored in full.
 struct BoxQp {

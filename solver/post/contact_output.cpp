@@ -55,20 +55,12 @@ ContactResult contact_output(const FoslsAssembler& assembler, const AssembledPro
     const Point m = mesh.edge_midpoint(e);
     r.x = m.x(), r.y = m.y();
     const double len = mesh.edge_length(e);
-    const auto& pq = mesh.edge(e);
     r.s = s + 0.5 * len;
     s += len;
     const double sn = x_full[space.sigma_dof(e, 0)] * problem.stress_scale;  // ∫_e σ_nn ds
     r.pressure = -sn / len;
     const Point ne = mesh.edge_normal(e);
-    double gap = 0.0;
-    for (int v : pq) {
-      const double un = space.is_contact_vertex(v) ? x_full[space.u_dof(v, 0)]
-                                                   : ne.x() * x_full[space.u_dof(v, 0)] +
-                                                         ne.y() * x_full[space.u_dof(v, 1)];
-      gap += 0.5 * (problem.vertex_gap[v] - un);
-    }
-    r.gap = gap;
+    r.gap = -assembler.edge_normal_defect(x_full, e);
     r.active = r.pressure > 0.0;
     // σn = σ_nn n on a frictionless contact edge.
     out.force_x += sn * ne.x();

@@ -39,9 +39,7 @@ using Clock = std::chrono::steady_clock;
 /// Active set of an iterate: bounded DOFs at their bound.
 std::vector<char> active_set(const BoxQp& qp, const Vector& x) {
   std::vector<char> a(x.size(), 0);
-  for (int i = 0; i < x.size(); ++i)
-    a[i] = (is_bounded_above(qp.upper[i]) && x[i] >= qp.upper[i]) ||
-           (is_bounded_below(qp.lower[i]) && x[i] <= qp.lower[i]);
+  for (int i = 0; i < x.size(); ++i) a[i] = is_at_bound(x[i], qp.lower[i], qp.upper[i]);
   return a;
 }
 

@@ -253,9 +253,7 @@ void MultilevelCycle::recurse(int j, Vector& c, Vector& r, const Vector& lo, con
   if (j == top && constrained) {
     // N•: bounded fine DOFs at their bound after smoothing.
     std::vector<char> active(c.size(), 0);
-    for (int i = 0; i < c.size(); ++i)
-      active[i] =
-          (is_bounded_above(hi[i]) && c[i] >= hi[i]) || (is_bounded_below(lo[i]) && c[i] <= lo[i]);
+    for (int i = 0; i < c.size(); ++i) active[i] = is_at_bound(c[i], lo[i], hi[i]);
     set_truncation(active);
   }
   const SparseMatrix& P = prolongation(j);

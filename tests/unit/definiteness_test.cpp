@@ -48,8 +48,9 @@ TEST(Definiteness, ChecksAgreeWithCholmodOnTheFinestMatrix) {
     ASSERT_GT(chain.matrices[2].rows(), 1000);
     EXPECT_EQ(chain_is_definite(sq.problem().qp.A, chain, 1000), definite) << c3;
     // The boundary-layer screen never raises a false alarm, and catches c3 far too large.
-    if (definite || c3 >= 2.0)
+    if (definite || c3 >= 2.0) {
       EXPECT_EQ(contact_layer_is_definite(sq.finest_space(), sq.problem().qp), definite) << c3;
+    }
   }
 }
 
