@@ -178,10 +178,7 @@ def estimator_runs(binary, estimator):
                               check=True, capture_output=True, text=True).stdout
         out[lam] = json.loads(text)["rows"]
     # The same problem through the case JSON (expressions) and the CLI's iterative solver.
-    case_path = os.path.join(os.path.dirname(os.path.abspath(__file__)),
-                             "manufactured_square.json")
-    with open(case_path) as f:
-        case = json.load(f)
+    case = vl.manufactured_case()
     result = vl.solve(binary, case)
     r = case["mesh"]["refinements"]
     out["cli_check"] = {"refinements": r, "cli_functional": result["functional"]["total"],

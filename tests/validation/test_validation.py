@@ -169,10 +169,7 @@ class ErrorEstimator(unittest.TestCase):
                 self.assertAlmostEqual(order_j, 1.0, delta=0.1)
                 self.assertAlmostEqual(order_e, 1.0, delta=0.1)
         # The case JSON with expressions, through the CLI: the same discrete problem.
-        path = os.path.join(os.path.dirname(os.path.abspath(__file__)),
-                            "manufactured_square.json")
-        with open(path) as f:
-            case = json.load(f)
+        case = vl.manufactured_case()
         result = vl.solve(BIN, case)
         r = case["mesh"]["refinements"]
         self.assertAlmostEqual(result["functional"]["total"]

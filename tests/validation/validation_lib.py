@@ -274,3 +274,10 @@ def contact_zone(contact):
     """(x_min, x_max) of the contact edges with positive pressure."""
     xs = [x for x, p in zip(contact["x"], contact["pressure"]) if p > 0.0]
     return (min(xs), max(xs)) if xs else (0.0, 0.0)
+
+
+def manufactured_case():
+    """The manufactured-solution case file (tests/validation/manufactured_square.json)."""
+    path = os.path.join(os.path.dirname(os.path.abspath(__file__)), "manufactured_square.json")
+    with open(path) as f:
+        return json.load(f)
