@@ -8,7 +8,7 @@
 set -euo pipefail
 
 build_packages=(
-  build-essential cmake pkg-config
+  build-essential cmake pkg-config ccache
   libeigen3-dev libsuitesparse-dev libcpp-httplib-dev nlohmann-json3-dev libsqlite3-dev
   libgmsh-dev libmuparser-dev libcli11-dev libgtest-dev libopenblas-dev
 )
@@ -30,7 +30,7 @@ esac
 provides_command() {
   case "$1" in
     nodejs) command -v node >/dev/null ;;
-    npm | chromium | wrk | curl | sqlite3 | clang-format | cmake | python3) command -v "$1" >/dev/null ;;
+    npm | chromium | wrk | curl | sqlite3 | clang-format | cmake | python3 | ccache) command -v "$1" >/dev/null ;;
     *) return 1 ;;
   esac
 }
