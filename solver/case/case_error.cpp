@@ -13,6 +13,24 @@ std::string summary(const std::vector<CaseError>& errors) {
 }
 }  // namespace
 
+std::string child_pointer(const std::string& pointer, const std::string& key) {
+  std::string out = pointer + "/";
+  out.reserve(out.size() + key.size());
+  for (char c : key) {
+    if (c == '~')
+      out += "~0";
+    else if (c == '/')
+      out += "~1";
+    else
+      out += c;
+  }
+  return out;
+}
+
+std::string child_pointer(const std::string& pointer, std::size_t index) {
+  return pointer + "/" + std::to_string(index);
+}
+
 CaseException::CaseException(std::vector<CaseError> errors)
     : std::runtime_error(summary(errors)), errors_(std::move(errors)) {}
 

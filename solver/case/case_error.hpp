@@ -1,6 +1,7 @@
 #pragma once
 // A problem with a user's case: where (JSON pointer) and why (a sentence a person can act on).
 
+#include <cstddef>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -14,6 +15,12 @@ struct CaseError {
 
 /// Thrown by the stages after JSON reading (meshing, DOF limits, indefinite weights) so that
 /// the CLI and the service report them exactly like validation errors.
+/// The pointer of member `key` of the value at `pointer` (RFC 6901: "~" is written "~0" and "/"
+/// is written "~1" inside a reference token).
+std::string child_pointer(const std::string& pointer, const std::string& key);
+/// The pointer of entry `index` of the array at `pointer`.
+std::string child_pointer(const std::string& pointer, std::size_t index);
+
 class CaseException : public std::runtime_error {
  public:
   explicit CaseException(std::vector<CaseError> errors);

@@ -7,6 +7,7 @@
 #include "assembly/definiteness.hpp"
 #include "assembly/discretization.hpp"
 #include "case/expression.hpp"
+#include "case/solver_methods.hpp"
 #include "mesh/mesh_factory.hpp"
 #include "post/contact_output.hpp"
 #include "post/vtu_writer.hpp"
@@ -95,34 +96,6 @@ ProblemData problem_data(const CaseSpec& spec, const Mesh& mesh) {
   return d;
 }
 
-SolverOptions solver_options(const SolverSettings& s) {
-  SolverOptions o;
-  switch (s.method) {
-    case Method::kMmg:
-      o.method = SolverMethod::kMmg;
-      break;
-    case Method::kTnnmg:
-      o.method = SolverMethod::kTnnmg;
-      break;
-    case Method::kPdas:
-      o.method = SolverMethod::kPdas;
-      break;
-    case Method::kPgs:
-      o.method = SolverMethod::kPgs;
-      break;
-  }
-  o.tolerance = s.tolerance;
-  o.max_iterations = s.max_iterations;
-  o.multilevel.smoother =
-      s.smoother == SmootherKind::kPatch ? SmootherType::kPatch : SmootherType::kPoint;
-  o.multilevel.pre_smoothing = s.pre_smoothing;
-  o.multilevel.post_smoothing = s.post_smoothing;
-  o.multilevel.projection = s.coarse_obstacle == CoarseObstacle::kA   ? CoarseProjection::kA
-                            : s.coarse_obstacle == CoarseObstacle::kB ? CoarseProjection::kB
-                                                                      : CoarseProjection::kC;
-  return o;
-}
-
 CaseException indefinite(const Weights& w) {
   std::ostringstream m;
   m << "the weights c1 = " << w.c1 << ", c2 = " << w.c2 << ", c3 = " << w.c3 << ", c4 = " << w.c4
@@ -175,9 +148,10 @@ RunOutput run_case(const CaseSpec& spec, const RunControl& control, const CaseLi
   const auto& problem = disc.problem();
   if (has_contact(spec) && !contact_layer_is_definite(disc.finest_space(), problem.qp))
     throw indefinite(spec.weights);
-  const SolverOptions options = solver_options(spec.solver);
+  const SolverOptions& options = spec.solver;
+  const MethodInfo& method = method_info(options.method);
   const LevelHierarchy hierarchy =
-      options.method == SolverMethod::kPdas ? LevelHierarchy{} : disc.build_hierarchy();
+      method.needs_hierarchy ? disc.build_hierarchy() : LevelHierarchy{};
   const auto t_assembly = Clock::now();
 
   SolverObserver observer;
@@ -204,7 +178,7 @@ RunOutput run_case(const CaseSpec& spec, const RunControl& control, const CaseLi
   out.cancelled = report.cancelled;
   nlohmann::json& r = out.result;
   r["name"] = spec.name;
-  r["method"] = method_name(options.method);
+  r["method"] = method.name;
   r["converged"] = report.converged;
   r["cancelled"] = report.cancelled;
   r["iterations"] = report.iterations;

@@ -1,6 +1,7 @@
 #pragma once
 // The contact case as the library sees it after the case JSON has been validated.
-// The JSON format is documented in docs/case-format.md; parsing lives in case_reader.hpp.
+// The JSON format is documented in docs/case-format.md; reading lives in case_reader.hpp, the
+// format's rules in the case_sections.hpp files.
 
 #include <array>
 #include <limits>
@@ -9,6 +10,7 @@
 #include <string>
 
 #include "mesh/geometry_spec.hpp"
+#include "solvers/contact_solver.hpp"
 
 namespace fosls {
 
@@ -58,26 +60,12 @@ struct BoundaryCondition {
   ContactDirection direction = ContactDirection::kBodyNormal;
 };
 
-/// Weights of the FOSLS functional (method.md §2).
+/// Weights of the FOSLS functional (docs/case-format.md, "Weights").
 struct Weights {
   double c1 = 1.0;
   double c2 = 1.0;
   double c3 = 0.1;
   double c4 = 0.0;
-};
-
-enum class Method { kMmg, kTnnmg, kPdas, kPgs };
-enum class SmootherKind { kPatch, kPoint };
-enum class CoarseObstacle { kA, kB, kC };
-
-struct SolverSettings {
-  Method method = Method::kMmg;
-  double tolerance = 1e-8;
-  int max_iterations = 200;
-  SmootherKind smoother = SmootherKind::kPatch;
-  int pre_smoothing = 1;
-  int post_smoothing = 1;
-  CoarseObstacle coarse_obstacle = CoarseObstacle::kA;
 };
 
 struct CaseSpec {
@@ -88,7 +76,7 @@ struct CaseSpec {
   /// Condition per boundary group; groups not named are traction free.
   std::map<std::string, BoundaryCondition> boundary;
   Weights weights;
-  SolverSettings solver;
+  SolverOptions solver;  ///< the case's `solver` section (method, tolerance, smoothing, ...)
 };
 
 }  // namespace fosls

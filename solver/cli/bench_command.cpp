@@ -11,6 +11,7 @@
 #include <sstream>
 
 #include "case/case_runner.hpp"
+#include "case/solver_methods.hpp"
 #include "cli/case_file.hpp"
 #include "cli/exit_codes.hpp"
 #include "cli/shipped_examples.hpp"
@@ -94,6 +95,19 @@ nlohmann::json run_isolated(const nlohmann::json& case_json) {
   return row;
 }
 
+/// An error line for every name in `names` that `find` does not know ("" when all are known).
+template <class Find>
+std::string unknown_name(const std::vector<std::string>& names, Find find, const char* option,
+                         const std::vector<std::string>& known) {
+  std::string out;
+  if (names.empty()) out += std::string("error: ") + option + ": give at least one name\n";
+  for (const auto& n : names)
+    if (!find(n))
+      out += std::string("error: ") + option + ": unknown name \"" + n +
+             "\"; known: " + join_words(known, ", ") + "\n";
+  return out;
+}
+
 int run_bench(const BenchOptions& o) {
   nlohmann::json base;
   bool found = false;
@@ -126,15 +140,27 @@ int run_bench(const BenchOptions& o) {
               "smooth", "obs", "iters", "conv", "rate", "setup_s", "solve_s", "peak_MiB");
   nlohmann::json rows = nlohmann::json::array();
   bool all_ok = true;
+  const auto methods = split(o.methods), smoothers = split(o.smoothers),
+             obstacles = split(o.coarse_obstacles);
+  if (auto bad = unknown_name(methods, find_method, "--methods", method_names()) +
+                 unknown_name(smoothers, find_smoother, "--smoothers", smoother_names()) +
+                 unknown_name(obstacles, find_coarse_obstacle, "--coarse-obstacles",
+                              coarse_obstacle_names());
+      !bad.empty()) {
+    std::cerr << bad;
+    return kExitBadInput;
+  }
   for (int level = first; level <= last; ++level)
-    for (const auto& method : split(o.methods))
-      for (const auto& smoother : split(o.smoothers))
-        for (const auto& obstacle : split(o.coarse_obstacles)) {
-          const bool multilevel = method == "mmg" || method == "tnnmg";
-          if (method == "pdas" &&
-              (smoother != split(o.smoothers)[0] || obstacle != split(o.coarse_obstacles)[0]))
-            continue;  // pdas uses neither
-          if (!multilevel && obstacle != split(o.coarse_obstacles)[0]) continue;
+    for (const auto& method : methods)
+      for (const auto& smoother : smoothers)
+        for (const auto& obstacle : obstacles) {
+          // Options a method does not use give no new row.
+          const MethodInfo& info = *find_method(method);
+          const bool uses_smoother = uses_option(info, SolverOption::kSmoother);
+          const bool uses_obstacle = uses_option(info, SolverOption::kCoarseObstacle);
+          if ((!uses_smoother && smoother != smoothers[0]) ||
+              (!uses_obstacle && obstacle != obstacles[0]))
+            continue;
           nlohmann::json c = base;
           c["mesh"]["refinements"] = level - 1;
           c["solver"]["method"] = method;
@@ -145,8 +171,8 @@ int run_bench(const BenchOptions& o) {
           nlohmann::json row = run_isolated(c);
           row["level"] = level;
           row["method"] = method;
-          row["smoother"] = method == "pdas" ? "-" : smoother;
-          row["coarse_obstacle"] = multilevel ? obstacle : "-";
+          row["smoother"] = uses_smoother ? smoother : "-";
+          row["coarse_obstacle"] = uses_obstacle ? obstacle : "-";
           if (row.contains("error")) {
             all_ok = false;
             std::printf("%-5d %9s %-6s %-6s %-3s error: %s\n", level, "-", method.c_str(),
@@ -177,9 +203,11 @@ void add_bench_command(CLI::App& app, int& exit_code) {
       "bench", "Solve one case over several levels and methods and print a table");
   cmd->add_option("case", o->case_path, "Case file, or the name of a shipped example")->required();
   cmd->add_option("--levels", o->levels, "Levels A..B (levels = refinements + 1)");
-  cmd->add_option("--methods", o->methods, "Comma-separated: mmg,tnnmg,pdas,pgs");
-  cmd->add_option("--smoothers", o->smoothers, "Comma-separated: patch,point");
-  cmd->add_option("--coarse-obstacles", o->coarse_obstacles, "Comma-separated: a,b,c");
+  cmd->add_option("--methods", o->methods, "Comma-separated: " + join_words(method_names(), ", "));
+  cmd->add_option("--smoothers", o->smoothers,
+                  "Comma-separated: " + join_words(smoother_names(), ", "));
+  cmd->add_option("--coarse-obstacles", o->coarse_obstacles,
+                  "Comma-separated: " + join_words(coarse_obstacle_names(), ", "));
   cmd->add_option("--tolerance", o->tolerance, "Relative KKT tolerance");
   cmd->add_option("--max-iterations", o->max_iterations, "Iteration cap per run");
   cmd->add_option("--json", o->json_path, "Also write the rows as JSON to this file");

@@ -141,8 +141,8 @@ TEST(ReadCase, DefaultsForOptionalFields) {
   const Weights w;
   EXPECT_EQ(s.weights.c1, w.c1);
   EXPECT_EQ(s.weights.c3, w.c3);
-  EXPECT_EQ(s.solver.method, Method::kMmg);
-  EXPECT_EQ(s.solver.tolerance, SolverSettings{}.tolerance);
+  EXPECT_EQ(s.solver.method, SolverMethod::kMmg);
+  EXPECT_EQ(s.solver.tolerance, SolverOptions{}.tolerance);
   EXPECT_EQ(s.body_force[0].value, 0.0);
   EXPECT_TRUE(s.body_force[1].is_constant());
   EXPECT_EQ(s.boundary.at("top").values[1].expression, "-0.01*x");
@@ -172,12 +172,12 @@ TEST(ReadCase, EveryFieldIsRead) {
   EXPECT_EQ(s.weights.c2, 3.0);
   EXPECT_EQ(s.weights.c3, 0.0);
   EXPECT_EQ(s.weights.c4, 0.25);
-  EXPECT_EQ(s.solver.method, Method::kPgs);
+  EXPECT_EQ(s.solver.method, SolverMethod::kPgs);
   EXPECT_EQ(s.solver.tolerance, 1e-6);
   EXPECT_EQ(s.solver.max_iterations, 77);
-  EXPECT_EQ(s.solver.smoother, SmootherKind::kPoint);
-  EXPECT_EQ(s.solver.pre_smoothing, 0);
-  EXPECT_EQ(s.solver.coarse_obstacle, CoarseObstacle::kC);
+  EXPECT_EQ(s.solver.multilevel.smoother, SmootherType::kPoint);
+  EXPECT_EQ(s.solver.multilevel.pre_smoothing, 0);
+  EXPECT_EQ(s.solver.multilevel.projection, CoarseProjection::kC);
   EXPECT_EQ(s.mesh.params.at("x0"), -1.0);
   EXPECT_EQ(s.mesh.params.at("y0"), 0.0);
   EXPECT_EQ(s.mesh.params.at("width"), 2.0);
@@ -531,6 +531,62 @@ TEST(ReadCase, Limits) {
   EXPECT_TRUE(has_error(read_case(j), "/mesh/size", "coarse triangles"));
   j["mesh"]["size"] = 0.01;
   EXPECT_TRUE(read_case(j).spec);
+}
+
+// Every field of a case that uses every section, replaced by values of every wrong type: each
+// is reported at its pointer (or a field inside it), and nothing crashes (the semantic checks use
+// only the fields that passed their own rules).
+TEST(ReadCase, EveryFieldWithAWrongValueIsReportedAtItsPointer) {
+  json rich = valid_case();
+  rich["body_force"] = {"sin(x)", 0};
+  rich["weights"] = {{"c1", 1}, {"c3", 0.1}};
+  rich["solver"] = {{"method", "mmg"},       {"tolerance", 1e-6},  {"max_iterations", 7},
+                    {"smoother", "patch"},   {"pre_smoothing", 1}, {"post_smoothing", 0},
+                    {"coarse_obstacle", "b"}};
+  rich["boundary"]["left"] = {
+      {"type", "contact"},
+      {"obstacle", {{"type", "circle"}, {"center", {-2, 0.5}}, {"radius", 1}}},
+      {"direction", "obstacle_normal"}};
+  rich["boundary"]["right"] = {{"type", "neumann"}, {"traction", {0, "y"}}};
+  json geometry_case = rich;
+  geometry_case["mesh"] = json::parse(R"({"size": 0.5, "geometry": {
+      "points": [[0, 0], [1, 0], [0, 1]],
+      "curves": [{"type": "line", "points": [0, 1]},
+                 {"type": "arc", "points": [1, 2], "center": 0},
+                 {"type": "line", "points": [2, 0]}],
+      "groups": {"bottom": [0], "top": [1], "left": [2]}}})");
+  geometry_case["boundary"].erase("right");
+  const std::vector<json> wrong = {nullptr, "x", json::array(), json::object(), -1, 1e300, true};
+  int checked = 0;
+  for (const json& base : {rich, geometry_case}) {
+    ASSERT_TRUE(read_case(base).spec) << dump_errors(read_case(base).errors);
+    const json flat = base.flatten();
+    for (const auto& [pointer, value] : flat.items()) {
+      for (const json& w : wrong) {
+        // Values of the right type may be fine or break a rule elsewhere (a moved point makes
+        // an arc's ends unequal); wrong types must be reported here.
+        if (w.type() == value.type() || (w.is_number() && value.is_number())) continue;
+        json j = base;
+        j[json::json_pointer(pointer)] = w;
+        const auto r = read_case(j);
+        if (r.spec) continue;  // e.g. a name "x" or a coordinate -1 may be fine
+        ++checked;
+        const bool located = std::any_of(r.errors.begin(), r.errors.end(), [&](const CaseError& e) {
+          return pointer.starts_with(e.pointer) || e.pointer.starts_with(pointer);
+        });
+        EXPECT_TRUE(located) << pointer << " = " << w.dump() << "\n" << dump_errors(r.errors);
+      }
+    }
+  }
+  EXPECT_GT(checked, 200);
+}
+
+TEST(ReadCase, SemanticRulesUseOnlyValidFields) {
+  json j = valid_case();
+  j["solver"] = {{"coarse_obstacle", "d"}, {"pre_smoothing", 0}, {"post_smoothing", 0}};
+  const auto r = read_case(j);
+  EXPECT_TRUE(has_error(r, "/solver/coarse_obstacle", "a, b, c")) << dump_errors(r.errors);
+  EXPECT_TRUE(has_error(r, "/solver/pre_smoothing", "mmg"));
 }
 
 TEST(ReadCase, RootMustBeAnObject) {

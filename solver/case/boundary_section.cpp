@@ -1,0 +1,169 @@
+// The `boundary` section: a condition per boundary group (dirichlet, neumann, contact), and
+// the obstacles of contact conditions. Also the scalars [a, b] that conditions and the body
+// force share.
+
+#include "case/case_sections.hpp"
+#include "case/rule_checker.hpp"
+
+namespace fosls {
+
+namespace {
+
+using nlohmann::json;
+
+/// A plane's normal gives its orientation, so it cannot be zero.
+void check_plane(const json& j, const std::string& pointer, RuleChecker& checker) {
+  if (!checker.usable(j, pointer, {"normal"}) || !j.contains("normal")) return;
+  if (read_point(j["normal"]).norm() == 0.0)
+    checker.error(child_pointer(pointer, "normal"), "the normal is zero; give a non-zero vector");
+}
+
+/// The obstacle's normal is needed to constrain the displacement along it.
+void check_direction(const json& j, const std::string& pointer, RuleChecker& checker) {
+  if (!j.contains("direction") || !j.contains("obstacle") ||
+      !checker.usable(j, pointer, {"obstacle", "direction"}))
+    return;
+  if (j["direction"] == "obstacle_normal" && j["obstacle"]["type"] == "gap")
+    checker.error(child_pointer(pointer, "direction"),
+                  "direction obstacle_normal needs a plane or circle obstacle; a gap obstacle has "
+                  "no normal of its own (use body_normal)");
+}
+
+ObjectRulePtr obstacle_rule(const CaseReadOptions& options) {
+  auto r = std::make_shared<ObjectRule>();
+  r->title = "an obstacle";
+  r->anchor = "obstacle";
+  r->discriminator = "type";
+  r->discriminator_meaning = "plane, circle or gap";
+  r->variants = {
+      {"plane",
+       "a plane obstacle",
+       "a rigid half plane; the gap is the distance to it",
+       {required_field("point", point_value(), "a point [x, y] on the plane"),
+        required_field("normal", point_value(),
+                       "the normal [nx, ny] from the obstacle into the body (any non-zero "
+                       "length; it is normalised)")},
+       check_plane,
+       "the normal is not zero"},
+      {"circle",
+       "a circle obstacle",
+       "a rigid disk; the body lies outside it; the gap is the distance to the circle",
+       {required_field("center", point_value(), "the centre [x, y] of the circle"),
+        required_field("radius", number_value(Range::positive()), "the radius of the circle")},
+       {},
+       ""},
+      {"gap",
+       "a gap obstacle",
+       "the gap g(x, y) itself, measured along the body normal",
+       {required_field("g", scalar_value(options.limits.max_expression_length),
+                       "the gap g(x, y): a number or an expression of x and y")},
+       {},
+       ""},
+  };
+  return r;
+}
+
+ObjectRulePtr condition_rule(const CaseReadOptions& options) {
+  auto r = std::make_shared<ObjectRule>();
+  r->title = "a boundary condition";
+  r->anchor = "condition";
+  r->discriminator = "type";
+  r->discriminator_meaning = "dirichlet, neumann or contact";
+  const ValueRule pair = scalar_pair_value(options);
+  r->variants = {
+      {"dirichlet",
+       "a dirichlet condition",
+       "prescribed displacement",
+       {required_field("displacement", pair, "the prescribed displacement [u_x, u_y]")},
+       {},
+       ""},
+      {"neumann",
+       "a neumann condition",
+       "prescribed traction σn",
+       {required_field("traction", pair, "the prescribed traction [t_x, t_y]")},
+       {},
+       ""},
+      {"contact",
+       "a contact condition",
+       "frictionless contact with a rigid obstacle",
+       {required_field("obstacle", object_value(obstacle_rule(options)), "a plane, circle or gap"),
+        optional_field("direction", choice_value({"body_normal", "obstacle_normal"}), "body_normal",
+                       "the constrained displacement component: u·n with the body's normal, "
+                       "or u·ν with the obstacle's normal")},
+       check_direction,
+       "obstacle_normal needs a plane or circle obstacle"},
+  };
+  return r;
+}
+
+Obstacle read_obstacle(const json& j) {
+  Obstacle o;
+  const std::string type = j["type"];
+  if (type == "plane") {
+    o.kind = Obstacle::Kind::kPlane;
+    o.point = read_point(j["point"]);
+    o.normal = read_point(j["normal"]).normalized();
+  } else if (type == "circle") {
+    o.kind = Obstacle::Kind::kCircle;
+    o.center = read_point(j["center"]);
+    o.radius = j["radius"].get<double>();
+  } else {
+    o.kind = Obstacle::Kind::kGap;
+    o.gap = read_scalar(j["g"]);
+  }
+  return o;
+}
+
+BoundaryCondition read_condition(const json& j) {
+  BoundaryCondition bc;
+  const std::string type = j["type"];
+  if (type == "dirichlet") {
+    bc.type = BoundaryCondition::Type::kDirichlet;
+    bc.values = read_scalar_pair(j["displacement"]);
+  } else if (type == "neumann") {
+    bc.type = BoundaryCondition::Type::kNeumann;
+    bc.values = read_scalar_pair(j["traction"]);
+  } else {
+    bc.type = BoundaryCondition::Type::kContact;
+    bc.obstacle = read_obstacle(j["obstacle"]);
+    if (j.value("direction", "body_normal") == "obstacle_normal")
+      bc.direction = ContactDirection::kObstacleNormal;
+  }
+  return bc;
+}
+
+}  // namespace
+
+ValueRule scalar_pair_value(const CaseReadOptions& options) {
+  return tuple_value(scalar_value(options.limits.max_expression_length), 2,
+                     "an array of 2 numbers or expressions of x and y");
+}
+
+Scalar read_scalar(const json& j) {
+  Scalar s;
+  if (j.is_number())
+    s.value = j.get<double>();
+  else
+    s.expression = j.get<std::string>();
+  return s;
+}
+
+Point read_point(const json& j) { return {j[0].get<double>(), j[1].get<double>()}; }
+
+std::array<Scalar, 2> read_scalar_pair(const json& j) {
+  return {read_scalar(j[0]), read_scalar(j[1])};
+}
+
+ValueRule boundary_rule(const CaseReadOptions& options) {
+  return map_value(name_value(options.limits.max_name_length, "the boundary group name"),
+                   object_value(condition_rule(options)), options.limits.max_geometry_entities,
+                   "object mapping boundary group names to conditions", "conditions");
+}
+
+std::map<std::string, BoundaryCondition> read_boundary_section(const json& j) {
+  std::map<std::string, BoundaryCondition> boundary;
+  for (const auto& [name, condition] : j.items()) boundary[name] = read_condition(condition);
+  return boundary;
+}
+
+}  // namespace fosls

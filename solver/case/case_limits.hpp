@@ -1,0 +1,44 @@
+#pragma once
+// Size limits that are part of validating a case, and the reader's options. The defaults are the
+// documented limits (docs/case-format.md, "Limits", generated from case_limit_table()); tests and
+// programs may lower them.
+
+#include <cstddef>
+#include <string>
+#include <vector>
+
+namespace fosls {
+
+struct CaseLimits {
+  int max_refinements = 8;
+  long long max_dofs = 6'000'000;         ///< DOFs of the finest level
+  std::size_t max_text_bytes = 4u << 20;  ///< msh text
+  std::size_t max_expression_length = 1024;
+  std::size_t max_geometry_entities = 10000;  ///< points, curves, groups, boundary conditions
+  std::size_t max_name_length = 200;
+  /// The whole case JSON text (the CLI's case file; the service may use it as its body limit).
+  std::size_t max_case_bytes = 16u << 20;
+  /// Estimated triangles of the coarse mesh of a builtin or geometry mesh (≈ area / size²):
+  /// keeps a tiny `mesh.size` from building a huge coarse mesh before the DOF limit is checked.
+  long long max_coarse_triangles = 200'000;
+  std::size_t max_path_length = 4096;  ///< mesh.geo_file
+};
+
+/// What a reader accepts: the limits, and whether a case may name local files.
+struct CaseReadOptions {
+  CaseLimits limits;
+  /// `mesh.geo_file` (a path to a gmsh .geo script) is accepted only from the command line:
+  /// .geo scripts can run shell commands, so the service never allows them.
+  bool allow_geo_file = false;
+};
+
+/// One limit as the documentation lists it.
+struct CaseLimitRow {
+  std::string what;   ///< e.g. "msh text"
+  std::string value;  ///< e.g. "4 MiB"
+};
+
+/// Every limit of `limits`, in words, for docs/case-format.md.
+std::vector<CaseLimitRow> case_limit_table(const CaseLimits& limits = {});
+
+}  // namespace fosls

@@ -1,0 +1,46 @@
+#pragma once
+// The sections of the case JSON, one file each (mesh_section.cpp, geometry_section.cpp,
+// material_section.cpp, boundary_section.cpp, solver_section.cpp): the rules of the section
+// (case_rules.hpp) and its conversion into the CaseSpec. A converter is called only on JSON
+// that passed its section's rules, so it needs no checks of its own; absent fields take the
+// defaults of the rules.
+
+#include <array>
+#include <map>
+#include <nlohmann/json.hpp>
+#include <string>
+
+#include "case/case_limits.hpp"
+#include "case/case_rules.hpp"
+#include "case/case_spec.hpp"
+
+namespace fosls {
+
+ObjectRulePtr mesh_rule(const CaseReadOptions& options);
+MeshSpec read_mesh_section(const nlohmann::json& j);
+
+ObjectRulePtr geometry_rule(const CaseReadOptions& options);
+GeometrySpec read_geometry_section(const nlohmann::json& j);
+/// Estimated triangles of a coarse mesh of `geometry` with edge length `size` (an upper
+/// bound: the bounding box area, arcs counting their whole circle, over a triangle's area).
+double estimated_coarse_triangles(const GeometrySpec& geometry, double size);
+
+ObjectRulePtr material_rule();
+Material read_material_section(const nlohmann::json& j);
+
+ValueRule boundary_rule(const CaseReadOptions& options);
+std::map<std::string, BoundaryCondition> read_boundary_section(const nlohmann::json& j);
+
+ObjectRulePtr weights_rule();
+Weights read_weights_section(const nlohmann::json& j);
+
+ObjectRulePtr solver_rule();
+SolverOptions read_solver_section(const nlohmann::json& j);
+
+/// [f_x, f_y], [u_x, u_y], ...: two numbers or expressions of x and y.
+ValueRule scalar_pair_value(const CaseReadOptions& options);
+Scalar read_scalar(const nlohmann::json& j);
+Point read_point(const nlohmann::json& j);
+std::array<Scalar, 2> read_scalar_pair(const nlohmann::json& j);
+
+}  // namespace fosls

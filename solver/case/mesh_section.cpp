@@ -1,0 +1,217 @@
+// The `mesh` section: one source (builtin, geometry, msh or geo_file), the coarse size and the
+// number of refinements.
+
+#include <cmath>
+#include <filesystem>
+#include <numbers>
+#include <sstream>
+
+#include "case/case_sections.hpp"
+#include "case/rule_checker.hpp"
+#include "mesh/builtin_meshes.hpp"
+
+namespace fosls {
+
+namespace {
+
+using nlohmann::json;
+
+/// The builtin geometries and their parameters; the defaults are those of the mesh builders.
+const ObjectRule& builtin_rule() {
+  static const ObjectRule rule = [] {
+    const SquareParams square;
+    const HertzParams hertz;
+    ObjectRule r;
+    r.title = "the builtin geometry";
+    r.anchor = "builtin";
+    r.discriminator = "name";
+    r.discriminator_meaning = "the builtin geometry, square or hertz";
+    r.variants = {
+        {"square",
+         "the square",
+         "the rectangle [x0, x0 + width] × [y0, y0 + height]; boundary groups bottom, right, "
+         "top, left",
+         {optional_field("x0", number_value(), square.x0, "left edge"),
+          optional_field("y0", number_value(), square.y0, "bottom edge"),
+          optional_field("width", number_value(Range::positive()), square.width, "width"),
+          optional_field("height", number_value(Range::positive()), square.height, "height")},
+         {},
+         ""},
+        {"hertz",
+         "the hertz geometry",
+         "the lower half of the disk of radius R centred at (0, R), touching y = 0 at the "
+         "origin; boundary groups top, contact, free",
+         {optional_field("radius", number_value(Range::positive()), hertz.radius, "radius R"),
+          optional_field("contact_fraction", number_value(Range::open(0, 1)),
+                         hertz.contact_fraction,
+                         "arc points with |x| ≤ contact_fraction · R form the group contact"),
+          optional_field("grading", number_value(Range::closed(1, 100)), hertz.grading,
+                         "coarse edges grow from size near the origin to grading · size")},
+         {},
+         ""},
+    };
+    return r;
+  }();
+  return rule;
+}
+
+std::vector<std::string> builtin_names() {
+  std::vector<std::string> names;
+  for (const auto& v : builtin_rule().variants) names.push_back(v.value);
+  return names;
+}
+
+/// The name of a builtin and the object with its parameters (empty for the name alone).
+std::pair<std::string, json> builtin_parts(const json& j) {
+  if (j.is_string()) return {j.get<std::string>(), json::object()};
+  return {j.at("name").get<std::string>(), j};
+}
+
+/// Every parameter of a builtin, defaults included, so that the mesh builder needs none.
+std::map<std::string, double> builtin_params(const json& j) {
+  const auto [name, given] = builtin_parts(j);
+  std::map<std::string, double> params;
+  for (const auto& f : builtin_rule().variant(name)->fields)
+    params[f.key] = given.value(f.key, f.default_value).get<double>();
+  return params;
+}
+
+/// Estimated coarse triangles of a builtin with edge length `size`.
+double builtin_triangles(const json& j, double size) {
+  const auto name = builtin_parts(j).first;
+  auto p = builtin_params(j);
+  if (name == "square") {
+    const double nx = std::max(1.0, std::ceil(p["width"] / size));
+    const double ny = std::max(1.0, std::ceil(p["height"] / size));
+    return 2.0 * nx * ny;
+  }
+  // Ungraded (an upper bound): half disk area over the area of a triangle of edge `size`.
+  return 0.5 * std::numbers::pi * p["radius"] * p["radius"] / (0.433 * size * size);
+}
+
+bool check_msh_text(const json& j, const std::string& pointer, RuleChecker& checker) {
+  const auto& text = j.get_ref<const std::string&>();
+  const auto start = text.find_first_not_of(" \t\r\n");
+  if (start == std::string::npos) {
+    checker.error(pointer, "the msh text is empty; give the contents of a gmsh .msh file");
+    return false;
+  }
+  if (text.compare(start, 11, "$MeshFormat") != 0) {
+    checker.error(pointer,
+                  "this is not gmsh .msh text: it must start with $MeshFormat (save the mesh "
+                  "from gmsh in ASCII format 4.1)");
+    return false;
+  }
+  return true;
+}
+
+bool check_geo_file(const json& j, const std::string& pointer, RuleChecker& checker) {
+  if (!checker.options().allow_geo_file) {
+    checker.error(pointer,
+                  "a .geo file is accepted only by the command line program (fosls-contact "
+                  "solve), because gmsh scripts can run shell commands; use mesh.geometry or "
+                  "mesh.msh instead");
+    return false;
+  }
+  const auto& path = j.get_ref<const std::string&>();
+  if (path.empty()) {
+    checker.error(pointer, "the path is empty; give the path of a gmsh .geo file");
+    return false;
+  }
+  if (path.find('\0') != std::string::npos) {
+    checker.error(pointer, "the path contains a NUL character");
+    return false;
+  }
+  std::error_code ec;
+  if (!std::filesystem::is_regular_file(path, ec)) {
+    checker.error(pointer, "no such file: " + path +
+                               " (a relative path is taken relative to the case file's folder)");
+    return false;
+  }
+  return true;
+}
+
+/// A tiny `size` must not build a huge coarse mesh before the DOF limit can be checked.
+void check_coarse_size(const json& j, const std::string& pointer, RuleChecker& checker) {
+  if (!checker.usable(j, pointer, {"size"})) return;
+  const double size = j.value("size", MeshSpec{}.size);
+  double triangles = 0.0;
+  if (j.contains("builtin") && checker.passed(child_pointer(pointer, "builtin")))
+    triangles = builtin_triangles(j["builtin"], size);
+  else if (j.contains("geometry") && checker.passed(child_pointer(pointer, "geometry")))
+    triangles = estimated_coarse_triangles(read_geometry_section(j["geometry"]), size);
+  const long long limit = checker.options().limits.max_coarse_triangles;
+  if (triangles <= static_cast<double>(limit)) return;
+  std::ostringstream s;
+  s << "a coarse mesh size of this value would give about " << std::llround(triangles)
+    << " coarse triangles, more than the limit of " << limit
+    << "; use a larger size and more refinements";
+  checker.error(child_pointer(pointer, "size"), s.str());
+}
+
+}  // namespace
+
+ObjectRulePtr mesh_rule(const CaseReadOptions& options) {
+  const CaseLimits& limits = options.limits;
+  const MeshSpec defaults;
+  auto r = std::make_shared<ObjectRule>();
+  r->title = "the mesh";
+  r->anchor = "mesh";
+
+  ValueRule builtin = one_of_value(
+      {choice_value(builtin_names()),
+       object_value(std::make_shared<const ObjectRule>(builtin_rule()))},
+      "the name of a builtin geometry (\"square\" or \"hertz\") or an object {\"name\": ..., "
+      "parameters}");
+  ValueRule msh = string_value(limits.max_text_bytes, "the msh text");
+  msh.hook = check_msh_text;
+  msh.notes = "must start with $MeshFormat (gmsh ASCII format 4.1)";
+  ValueRule geo_file = string_value(limits.max_path_length, "the path");
+  geo_file.hook = check_geo_file;
+  geo_file.notes = "command line only; the file must exist";
+  ValueRule refinements = integer_value(Range::closed(0, limits.max_refinements));
+
+  r->fields = {
+      optional_field("builtin", builtin, nullptr, "a shipped geometry, square or hertz"),
+      optional_field("geometry", object_value(geometry_rule(options)), nullptr,
+                     "points, lines and arcs, meshed with gmsh"),
+      optional_field("msh", msh, nullptr, "the text of a gmsh mesh file (ASCII 4.1)"),
+      optional_field("geo_file", geo_file, nullptr, "the path of a gmsh .geo script"),
+      optional_field("size", number_value(Range::positive()), defaults.size,
+                     "target edge length of the coarse mesh (not used by msh)"),
+      optional_field("refinements", refinements, defaults.refinements,
+                     "uniform refinements of the coarse mesh; the multilevel hierarchy has "
+                     "refinements + 1 levels"),
+  };
+  r->exclusive = {{{{"builtin"}, {"geometry"}, {"msh"}, {"geo_file"}},
+                   "no mesh source: give exactly one of builtin, geometry, msh or geo_file",
+                   "give exactly one mesh source, not {given}"}};
+  r->hook = check_coarse_size;
+  r->notes =
+      "a size whose coarse mesh would have more than the limit of coarse triangles is "
+      "refused before meshing";
+  return r;
+}
+
+MeshSpec read_mesh_section(const json& j) {
+  MeshSpec m;
+  m.size = j.value("size", m.size);
+  m.refinements = j.value("refinements", m.refinements);
+  if (const auto it = j.find("builtin"); it != j.end()) {
+    m.kind = MeshSpec::Kind::kBuiltin;
+    m.builtin = builtin_parts(*it).first;
+    m.params = builtin_params(*it);
+  } else if (const auto it = j.find("geometry"); it != j.end()) {
+    m.kind = MeshSpec::Kind::kGeometry;
+    m.geometry = read_geometry_section(*it);
+  } else if (const auto it = j.find("msh"); it != j.end()) {
+    m.kind = MeshSpec::Kind::kMsh;
+    m.msh_text = it->get<std::string>();
+  } else if (const auto it = j.find("geo_file"); it != j.end()) {
+    m.kind = MeshSpec::Kind::kGeoFile;
+    m.geo_path = it->get<std::string>();
+  }
+  return m;
+}
+
+}  // namespace fosls

@@ -1,0 +1,128 @@
+#include "case/solver_methods.hpp"
+
+#include <algorithm>
+#include <stdexcept>
+
+namespace fosls {
+
+namespace {
+
+using enum SolverOption;
+
+const std::vector<MethodInfo>& method_table() {
+  static const std::vector<MethodInfo> table = {
+      {SolverMethod::kMmg,
+       "mmg",
+       "monotone multilevel method: smoothing, truncated coarse corrections within coarse "
+       "obstacles, W-cycle, nested iteration",
+       true,
+       true,
+       {kSmoother, kPreSmoothing, kPostSmoothing, kCoarseObstacle}},
+      {SolverMethod::kTnnmg,
+       "tnnmg",
+       "truncated non-smooth Newton multigrid: smoothing, a linear cycle on the inactive set, "
+       "projection and line search",
+       true,
+       false,
+       {kSmoother, kPreSmoothing, kPostSmoothing, kCoarseObstacle}},
+      {SolverMethod::kPdas,
+       "pdas",
+       "primal-dual active set method with a direct solver (CHOLMOD) on the finest level",
+       false,
+       false,
+       {}},
+      {SolverMethod::kPgs,
+       "pgs",
+       "projected Gauss-Seidel on the finest level only",
+       true,
+       false,
+       {kSmoother}},
+  };
+  return table;
+}
+
+const std::vector<SmootherInfo>& smoother_table() {
+  static const std::vector<SmootherInfo> table = {
+      {SmootherType::kPatch, "patch", "vertex-patch block smoother (robust in H(div))"},
+      {SmootherType::kPoint, "point", "pointwise projected Gauss-Seidel"},
+  };
+  return table;
+}
+
+const std::vector<CoarseObstacleInfo>& coarse_obstacle_table() {
+  static const std::vector<CoarseObstacleInfo> table = {
+      {CoarseProjection::kA, "a", "least restrictive"},
+      {CoarseProjection::kB, "b", "minimum of the end points and the midpoint"},
+      {CoarseProjection::kC, "c", "minimum over the edge"},
+  };
+  return table;
+}
+
+template <class Table, class Key, class Member>
+const auto& entry_of(const Table& table, Key key, Member member) {
+  for (const auto& e : table)
+    if (e.*member == key) return e;
+  throw std::logic_error("an enumerator is missing from its table in case/solver_methods.cpp");
+}
+
+template <class Table>
+const typename Table::value_type* entry_named(const Table& table, const std::string& name) {
+  for (const auto& e : table)
+    if (name == e.name) return &e;
+  return nullptr;
+}
+
+template <class Table>
+std::vector<std::string> names_of(const Table& table) {
+  std::vector<std::string> names;
+  for (const auto& e : table) names.emplace_back(e.name);
+  return names;
+}
+
+}  // namespace
+
+std::span<const MethodInfo> solver_methods() { return method_table(); }
+std::span<const SmootherInfo> smoothers() { return smoother_table(); }
+std::span<const CoarseObstacleInfo> coarse_obstacles() { return coarse_obstacle_table(); }
+
+const MethodInfo& method_info(SolverMethod method) {
+  return entry_of(method_table(), method, &MethodInfo::method);
+}
+const SmootherInfo& smoother_info(SmootherType type) {
+  return entry_of(smoother_table(), type, &SmootherInfo::type);
+}
+const CoarseObstacleInfo& coarse_obstacle_info(CoarseProjection projection) {
+  return entry_of(coarse_obstacle_table(), projection, &CoarseObstacleInfo::projection);
+}
+
+const MethodInfo* find_method(const std::string& name) { return entry_named(method_table(), name); }
+const SmootherInfo* find_smoother(const std::string& name) {
+  return entry_named(smoother_table(), name);
+}
+const CoarseObstacleInfo* find_coarse_obstacle(const std::string& name) {
+  return entry_named(coarse_obstacle_table(), name);
+}
+
+std::vector<std::string> method_names() { return names_of(method_table()); }
+std::vector<std::string> smoother_names() { return names_of(smoother_table()); }
+std::vector<std::string> coarse_obstacle_names() { return names_of(coarse_obstacle_table()); }
+
+const char* option_field(SolverOption option) {
+  switch (option) {
+    case kSmoother:
+      return "smoother";
+    case kPreSmoothing:
+      return "pre_smoothing";
+    case kPostSmoothing:
+      return "post_smoothing";
+    case kCoarseObstacle:
+      return "coarse_obstacle";
+  }
+  return "?";
+}
+
+bool uses_option(const MethodInfo& method, SolverOption option) {
+  return std::find(method.options.begin(), method.options.end(), option) != method.options.end();
+}
+
+}  // namespace fosls

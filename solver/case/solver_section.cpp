@@ -1,0 +1,95 @@
+// The `weights` and `solver` sections: the weights of the functional and the iteration.
+
+#include "case/case_sections.hpp"
+#include "case/rule_checker.hpp"
+#include "case/solver_methods.hpp"
+
+namespace fosls {
+
+namespace {
+
+using nlohmann::json;
+
+/// A method that needs smoothing must get at least one step per level.
+void check_smoothing(const json& j, const std::string& pointer, RuleChecker& checker) {
+  if (!checker.usable(j, pointer, {"method", "pre_smoothing", "post_smoothing"})) return;
+  const SolverOptions defaults;
+  const MethodInfo& method =
+      j.contains("method") ? *find_method(j["method"]) : method_info(defaults.method);
+  const int steps = j.value("pre_smoothing", defaults.multilevel.pre_smoothing) +
+                    j.value("post_smoothing", defaults.multilevel.post_smoothing);
+  if (method.needs_smoothing && steps == 0)
+    checker.error(child_pointer(pointer, "pre_smoothing"),
+                  "pre_smoothing and post_smoothing are both 0; the " + std::string(method.name) +
+                      " method needs at least one smoothing step per level");
+}
+
+}  // namespace
+
+ObjectRulePtr weights_rule() {
+  const Weights w;
+  auto r = std::make_shared<ObjectRule>();
+  r->title = "the weights";
+  r->anchor = "weights";
+  r->fields = {
+      optional_field("c1", number_value(Range::positive()), w.c1, "weight of ‖div σ + f‖²"),
+      optional_field("c2", number_value(Range::positive()), w.c2, "weight of ‖Aσ − ε(u)‖²"),
+      optional_field("c3", number_value(Range::non_negative()), w.c3,
+                     "weight of the contact term ⟨u·n − g, σ_nn⟩"),
+      optional_field("c4", number_value(Range::non_negative()), w.c4, "weight of ‖as σ‖²"),
+  };
+  return r;
+}
+
+Weights read_weights_section(const json& j) {
+  Weights w;
+  w.c1 = j.value("c1", w.c1);
+  w.c2 = j.value("c2", w.c2);
+  w.c3 = j.value("c3", w.c3);
+  w.c4 = j.value("c4", w.c4);
+  return w;
+}
+
+ObjectRulePtr solver_rule() {
+  const SolverOptions s;
+  auto r = std::make_shared<ObjectRule>();
+  r->title = "the solver settings";
+  r->anchor = "solver";
+  const ValueRule smoothing = integer_value(Range::closed(0, 10));
+  r->fields = {
+      optional_field("method", choice_value(method_names()), method_info(s.method).name,
+                     "the solver method"),
+      optional_field("tolerance", number_value(Range::open(0, 1)), s.tolerance,
+                     "stopping tolerance: the KKT residual relative to the initial iterate's"),
+      optional_field("max_iterations", integer_value(Range::closed(1, 100000)), s.max_iterations,
+                     "iterations before giving up (the result says \"converged\": false)"),
+      optional_field("smoother", choice_value(smoother_names()),
+                     smoother_info(s.multilevel.smoother).name, "the smoother"),
+      optional_field("pre_smoothing", smoothing, s.multilevel.pre_smoothing,
+                     "smoothing steps before the coarse correction"),
+      optional_field("post_smoothing", smoothing, s.multilevel.post_smoothing,
+                     "smoothing steps after the coarse correction"),
+      optional_field("coarse_obstacle", choice_value(coarse_obstacle_names()),
+                     coarse_obstacle_info(s.multilevel.projection).name,
+                     "how the obstacle of the normal displacement is carried to a coarse "
+                     "contact edge"),
+  };
+  r->hook = check_smoothing;
+  r->notes = "mmg needs pre_smoothing + post_smoothing ≥ 1";
+  return r;
+}
+
+SolverOptions read_solver_section(const json& j) {
+  SolverOptions s;
+  if (j.contains("method")) s.method = find_method(j["method"])->method;
+  s.tolerance = j.value("tolerance", s.tolerance);
+  s.max_iterations = j.value("max_iterations", s.max_iterations);
+  if (j.contains("smoother")) s.multilevel.smoother = find_smoother(j["smoother"])->type;
+  s.multilevel.pre_smoothing = j.value("pre_smoothing", s.multilevel.pre_smoothing);
+  s.multilevel.post_smoothing = j.value("post_smoothing", s.multilevel.post_smoothing);
+  if (j.contains("coarse_obstacle"))
+    s.multilevel.projection = find_coarse_obstacle(j["coarse_obstacle"])->projection;
+  return s;
+}
+
+}  // namespace fosls
