@@ -12,7 +12,8 @@ build_packages=(
   libeigen3-dev libsuitesparse-dev libcpp-httplib-dev nlohmann-json3-dev libsqlite3-dev
   libgmsh-dev libmuparser-dev libcli11-dev libgtest-dev libopenblas-dev
 )
-tool_packages=(clang-format curl sqlite3 nodejs npm chromium wrk python3 python3-matplotlib python3-numpy)
+tool_packages=(clang-format curl sqlite3 nodejs npm chromium wrk python3 python3-matplotlib python3-numpy
+  python3-jsonschema)
 
 check_only=0
 case "${1:-}" in

@@ -1,0 +1,70 @@
+#include "case/case_schema.hpp"
+
+#include "case/case_reader.hpp"
+#include "case/rules_markdown.hpp"
+#include "case/rules_schema.hpp"
+#include "case/solver_methods.hpp"
+
+namespace fosls {
+
+namespace {
+
+void collect_objects(const ValueRule& rule, std::map<std::string, const ObjectRule*>& out);
+
+void collect_objects(const ObjectRule& rule, std::map<std::string, const ObjectRule*>& out) {
+  if (!out.emplace(rule.anchor, &rule).second) return;
+  for (const auto& f : rule.fields) collect_objects(f.value, out);
+  for (const auto& v : rule.variants)
+    for (const auto& f : v.fields) collect_objects(f.value, out);
+}
+
+void collect_objects(const ValueRule& rule, std::map<std::string, const ObjectRule*>& out) {
+  if (rule.object) collect_objects(*rule.object, out);
+  if (rule.element) collect_objects(*rule.element, out);
+  for (const auto& a : rule.alternatives) collect_objects(a, out);
+}
+
+std::string methods_table() {
+  std::string s = "| method | uses | what it does |\n|---|---|---|\n";
+  for (const auto& m : solver_methods()) {
+    std::vector<std::string> uses;
+    for (const auto option : m.options)
+      uses.push_back(std::string("`") + option_field(option) + "`");
+    s += std::string("| `") + m.name + "` | " + (uses.empty() ? "—" : join_words(uses, ", ")) +
+         " | " + m.summary + " |\n";
+  }
+  s += "\n| smoother | what it does |\n|---|---|\n";
+  for (const auto& sm : smoothers())
+    s += std::string("| `") + sm.name + "` | " + sm.summary + " |\n";
+  s += "\n| coarse_obstacle | the obstacle of a coarse contact edge |\n|---|---|\n";
+  for (const auto& c : coarse_obstacles())
+    s += std::string("| `") + c.name + "` | " + c.summary + " |\n";
+  return s;
+}
+
+std::string limits_table() {
+  std::string s = "| limit | value |\n|---|---|\n";
+  for (const auto& row : case_limit_table()) s += "| " + row.what + " | " + row.value + " |\n";
+  return s;
+}
+
+}  // namespace
+
+nlohmann::json case_json_schema() {
+  return rules_json_schema(*case_rule(), "https://fosls-contact.invalid/schemas/case.json",
+                           "A contact case of fosls-contact (docs/case-format.md).");
+}
+
+std::map<std::string, std::string> case_format_blocks() {
+  const ObjectRulePtr root = case_rule();
+  std::map<std::string, const ObjectRule*> objects;
+  collect_objects(*root, objects);
+  std::map<std::string, std::string> blocks;
+  for (const auto& [anchor, rule] : objects)
+    blocks["fields:" + anchor] = rules_markdown_table(*rule);
+  blocks["methods"] = methods_table();
+  blocks["limits"] = limits_table();
+  return blocks;
+}
+
+}  // namespace fosls

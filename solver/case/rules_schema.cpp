@@ -1,0 +1,192 @@
+#include "case/rules_schema.hpp"
+
+#include <algorithm>
+
+namespace fosls {
+
+namespace {
+
+using nlohmann::json;
+
+/// Integral values as JSON integers (200, not 200.0).
+json number(double v) {
+  if (v == static_cast<double>(static_cast<long long>(v))) return static_cast<long long>(v);
+  return v;
+}
+
+class SchemaWriter {
+ public:
+  json value(const ValueRule& rule) {
+    json s = kind(rule);
+    if (!rule.notes.empty()) s["$comment"] = rule.notes;
+    return s;
+  }
+
+  json object(const ObjectRule& rule) {
+    json s = {{"type", "object"}, {"title", rule.title}};
+    if (!rule.notes.empty()) s["$comment"] = rule.notes;
+    json alternatives = json::array();
+    for (const auto& e : rule.exclusive) alternatives.push_back(exclusive(e));
+    if (rule.discriminator.empty()) {
+      s["properties"] = properties(rule.fields);
+      s["required"] = required(rule.fields);
+      s["additionalProperties"] = false;
+    } else {
+      json values = json::array();
+      json variants = json::array();
+      for (const auto& v : rule.variants) {
+        values.push_back(v.value);
+        json fields = properties(rule.fields);
+        fields.update(properties(v.fields));
+        fields[rule.discriminator] = {{"const", v.value}};
+        json req = required(rule.fields);
+        for (const auto& f : v.fields)
+          if (f.required) req.push_back(f.key);
+        req.push_back(rule.discriminator);
+        json variant = {{"title", v.title},
+                        {"description", v.meaning},
+                        {"properties", fields},
+                        {"required", req},
+                        {"additionalProperties", false}};
+        if (!v.notes.empty()) variant["$comment"] = v.notes;
+        variants.push_back(variant);
+      }
+      s["required"] = {rule.discriminator};
+      s["properties"] = {
+          {rule.discriminator, {{"enum", values}, {"description", rule.discriminator_meaning}}}};
+      alternatives.push_back({{"oneOf", variants}});
+    }
+    if (alternatives.size() == 1)
+      s.update(alternatives[0]);
+    else if (!alternatives.empty())
+      s["allOf"] = alternatives;
+    return s;
+  }
+
+  json defs() const { return defs_; }
+
+ private:
+  json kind(const ValueRule& rule) {
+    json s;
+    switch (rule.kind) {
+      case ValueKind::kNumber:
+        s = {{"type", "number"}};
+        bounds(rule.range, s);
+        break;
+      case ValueKind::kInteger:
+        s = {{"type", "integer"}};
+        bounds(rule.range, s);
+        break;
+      case ValueKind::kString:
+        s = {{"type", "string"}, {"maxLength", number(rule.range.hi)}};
+        break;
+      case ValueKind::kName:
+        s = {{"type", "string"},
+             {"minLength", 1},
+             {"maxLength", number(rule.range.hi)},
+             {"pattern", "^[^\\u0000-\\u001f\\u007f]*$"}};
+        break;
+      case ValueKind::kChoice:
+        if (rule.choices.size() == 1)
+          s = {{"const", rule.choices[0]}};
+        else
+          s = {{"type", "string"}, {"enum", rule.choices}};
+        break;
+      case ValueKind::kScalar:
+        s = {{"type", json::array({"number", "string"})},
+             {"maxLength", number(rule.range.hi)},
+             {"description", "a number, or an expression of x and y (muParser syntax)"}};
+        break;
+      case ValueKind::kNull:
+        s = {{"type", "null"}};
+        break;
+      case ValueKind::kArray:
+        s = {{"type", "array"},
+             {"items", value(*rule.element)},
+             {"minItems", number(rule.range.lo)},
+             {"maxItems", number(rule.range.hi)}};
+        break;
+      case ValueKind::kMap: {
+        json names = value(*rule.key);
+        names.erase("type");
+        s = {{"type", "object"},
+             {"propertyNames", names},
+             {"additionalProperties", value(*rule.element)},
+             {"minProperties", number(rule.range.lo)},
+             {"maxProperties", number(rule.range.hi)}};
+        break;
+      }
+      case ValueKind::kObject: {
+        const std::string& anchor = rule.object->anchor;
+        if (!defs_.contains(anchor)) {
+          defs_[anchor] = json::object();  // a placeholder against recursion
+          defs_[anchor] = object(*rule.object);
+        }
+        s = {{"$ref", "#/$defs/" + anchor}};
+        break;
+      }
+      case ValueKind::kOneOf: {
+        json alternatives = json::array();
+        for (const auto& a : rule.alternatives) alternatives.push_back(value(a));
+        s = {{"oneOf", alternatives}};
+        break;
+      }
+    }
+    return s;
+  }
+
+  static void bounds(const Range& r, json& s) {
+    if (r.has_lo()) s[r.lo_open ? "exclusiveMinimum" : "minimum"] = number(r.lo);
+    if (r.has_hi()) s[r.hi_open ? "exclusiveMaximum" : "maximum"] = number(r.hi);
+  }
+
+  json properties(const std::vector<FieldRule>& fields) {
+    json p = json::object();
+    for (const auto& f : fields) {
+      json s = value(f.value);
+      if (s.contains("$ref")) s = {{"allOf", {s}}};  // keep the description beside the $ref
+      s["description"] = f.meaning;
+      if (!f.default_value.is_null()) s["default"] = f.default_value;
+      p[f.key] = s;
+    }
+    return p;
+  }
+
+  static json required(const std::vector<FieldRule>& fields) {
+    json r = json::array();
+    for (const auto& f : fields)
+      if (f.required) r.push_back(f.key);
+    return r;
+  }
+
+  /// Exactly one set given: each alternative requires its set and none of the others' fields.
+  static json exclusive(const ExclusiveFields& e) {
+    json alternatives = json::array();
+    for (std::size_t i = 0; i < e.sets.size(); ++i) {
+      json others = json::array();
+      for (std::size_t k = 0; k < e.sets.size(); ++k)
+        if (k != i)
+          for (const auto& key : e.sets[k]) others.push_back({{"required", {key}}});
+      alternatives.push_back({{"required", e.sets[i]}, {"not", {{"anyOf", others}}}});
+    }
+    return {{"oneOf", alternatives}};
+  }
+
+  json defs_ = json::object();
+};
+
+}  // namespace
+
+json rules_json_schema(const ObjectRule& root, const std::string& id,
+                       const std::string& description) {
+  SchemaWriter writer;
+  json schema = {{"$schema", "https://json-schema.org/draft/2020-12/schema"},
+                 {"$id", id},
+                 {"description", description}};
+  schema.update(writer.object(root));
+  const json defs = writer.defs();
+  if (!defs.empty()) schema["$defs"] = defs;
+  return schema;
+}
+
+}  // namespace fosls

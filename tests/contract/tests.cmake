@@ -1,0 +1,9 @@
+# The published contract: the JSON Schemas agree with the reader, through the real program.
+set(CONTRACT_DIR ${CMAKE_CURRENT_LIST_DIR})
+find_package(Python3 COMPONENTS Interpreter)
+if(Python3_Interpreter_FOUND)
+  add_test(NAME contract_case_schema
+           COMMAND ${Python3_EXECUTABLE} ${CONTRACT_DIR}/case_schema_test.py
+                   --bin $<TARGET_FILE:fosls-contact> --source ${PROJECT_SOURCE_DIR})
+  set_tests_properties(contract_case_schema PROPERTIES LABELS unit TIMEOUT 120)
+endif()
