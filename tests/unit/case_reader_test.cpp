@@ -4,6 +4,7 @@
 #include "case/case_reader.hpp"
 
 #include <gtest/gtest.h>
+#include <unistd.h>
 
 #include <algorithm>
 #include <cmath>
@@ -478,7 +479,9 @@ TEST(ReadCase, MeshSources) {
 }
 
 TEST(ReadCase, GeoFileOnlyFromTheCommandLine) {
-  const std::string path = ::testing::TempDir() + "case_reader_test.geo";
+  // Named by the process: other checkouts may run this suite at the same time.
+  const std::string path =
+      ::testing::TempDir() + "case_reader_test_" + std::to_string(getpid()) + ".geo";
   std::ofstream(path) << "Point(1) = {0, 0, 0};\n";
   json j = valid_case();
   j["mesh"] = {{"geo_file", path}};

@@ -69,6 +69,12 @@ ProcessResult run_program(const std::vector<std::string>& args, const fs::path& 
   return r;
 }
 
+/// A folder of its own for one test: other checkouts may run this suite at the same time on
+/// the same machine, so the name carries the process id.
+fs::path work_folder(const std::string& name) {
+  return fs::path(::testing::TempDir()) / (name + "_" + std::to_string(getpid()));
+}
+
 /// A valid case (the shipped square Signorini problem in small) that each row breaks.
 json valid_case() {
   return json::parse(R"({
@@ -201,7 +207,7 @@ class CliBadCase : public ::testing::TestWithParam<BadCase> {};
 TEST_P(CliBadCase, FailsWithPointerAndReason) {
   const BadCase& c = GetParam();
   ASSERT_TRUE(fs::exists(kProgram)) << kProgram << " is missing: build the fosls-contact target";
-  const fs::path work = fs::path(::testing::TempDir()) / ("fosls_cli_bad_" + c.name);
+  const fs::path work = work_folder("fosls_cli_bad_" + c.name);
   fs::create_directories(work);
   const fs::path case_path = work / "case.json";
   fs::remove(case_path);
@@ -234,7 +240,7 @@ INSTANTIATE_TEST_SUITE_P(Table, CliBadCase, ::testing::ValuesIn(bad_cases()),
 TEST(CliBadCases, TableHasEnoughDistinctCases) { EXPECT_GE(bad_cases().size(), 30u); }
 
 TEST(CliBadCases, EveryErrorIsListedAtOnce) {
-  const fs::path work = fs::path(::testing::TempDir()) / "fosls_cli_many_errors";
+  const fs::path work = work_folder("fosls_cli_many_errors");
   fs::create_directories(work);
   json j = valid_case();
   j["mesh"]["size"] = -1;
@@ -249,7 +255,7 @@ TEST(CliBadCases, EveryErrorIsListedAtOnce) {
 }
 
 TEST(CliBadCases, FolderTooLargeFileAndUsageErrors) {
-  const fs::path work = fs::path(::testing::TempDir()) / "fosls_cli_files";
+  const fs::path work = work_folder("fosls_cli_files");
   fs::create_directories(work / "folder.json");
   ProcessResult r = run_program({"solve", (work / "folder.json").string()}, work);
   EXPECT_EQ(r.exit_code, 2);
@@ -300,7 +306,7 @@ TEST(CliBadCases, FolderTooLargeFileAndUsageErrors) {
 
 // The shipped examples are embedded in the program and identical to the files.
 TEST(CliExamples, ListAndPrintTheShippedFiles) {
-  const fs::path work = fs::path(::testing::TempDir()) / "fosls_cli_examples";
+  const fs::path work = work_folder("fosls_cli_examples");
   fs::create_directories(work);
   const ProcessResult list = run_program({"example"}, work);
   ASSERT_EQ(list.exit_code, 0) << list.err;
