@@ -11,7 +11,7 @@
 #include "mesh/mesh_factory.hpp"
 #include "post/contact_output.hpp"
 #include "post/vtu_writer.hpp"
-#include "solvers/contact_solver.hpp"
+#include "solvers/solve_loop.hpp"
 
 namespace fosls {
 
@@ -142,7 +142,7 @@ RunOutput run_case(const CaseSpec& spec, const RunControl& control, const CaseLi
   if (auto errors = check_against_mesh(spec, coarse, limits); !errors.empty())
     throw CaseException(std::move(errors));
   ProblemData data = problem_data(spec, coarse);
-  MeshHierarchy meshes = build_hierarchy(std::move(coarse), spec.mesh.refinements);
+  MeshHierarchy meshes = build_mesh_hierarchy(std::move(coarse), spec.mesh.refinements);
   const auto t_mesh = Clock::now();
   Discretization disc(std::move(meshes), std::move(data));
   const auto& problem = disc.problem();
@@ -151,7 +151,7 @@ RunOutput run_case(const CaseSpec& spec, const RunControl& control, const CaseLi
   const SolverOptions& options = spec.solver;
   const MethodInfo& method = method_info(options.method);
   const LevelHierarchy hierarchy =
-      method.needs_hierarchy ? disc.build_hierarchy() : LevelHierarchy{};
+      method.needs_hierarchy ? disc.build_level_hierarchy() : LevelHierarchy{};
   const auto t_assembly = Clock::now();
 
   SolverObserver observer;
@@ -161,7 +161,7 @@ RunOutput run_case(const CaseSpec& spec, const RunControl& control, const CaseLi
   Vector x;
   SolverReport report;
   try {
-    report = solve_contact(problem.qp, hierarchy, options, observer, x);
+    report = solve_box_qp(problem.qp, hierarchy, options, observer, x);
   } catch (const std::runtime_error& e) {
     // Positive definiteness failing inside a solver is the user's weights, not a crash.
     if (std::string(e.what()).find("positive definite") != std::string::npos)

@@ -10,7 +10,7 @@
 #include <string>
 
 #include "mesh/geometry_spec.hpp"
-#include "solvers/contact_solver.hpp"
+#include "solvers/solve_loop.hpp"
 
 namespace fosls {
 
@@ -60,7 +60,7 @@ struct BoundaryCondition {
   ContactDirection direction = ContactDirection::kBodyNormal;
 };
 
-/// Weights of the FOSLS functional (docs/case-format.md, "Weights").
+/// Weights of the FOSLS functional (docs/method.md §2).
 struct Weights {
   double c1 = 1.0;
   double c2 = 1.0;

@@ -7,7 +7,7 @@
 #include <string>
 #include <vector>
 
-#include "solvers/contact_solver.hpp"
+#include "solvers/solve_loop.hpp"
 
 namespace fosls {
 
