@@ -92,6 +92,12 @@ ValueRule null_value() {
   return r;
 }
 
+ValueRule boolean_value() {
+  ValueRule r;
+  r.kind = ValueKind::kBoolean;
+  return r;
+}
+
 ValueRule tuple_value(ValueRule element, std::size_t count, std::string what) {
   ValueRule r;
   r.kind = ValueKind::kArray;
@@ -104,6 +110,12 @@ ValueRule tuple_value(ValueRule element, std::size_t count, std::string what) {
 ValueRule array_value(ValueRule element, std::size_t max_entries, std::string what) {
   ValueRule r = tuple_value(std::move(element), 1, std::move(what));
   r.range.hi = static_cast<double>(max_entries);
+  return r;
+}
+
+ValueRule list_value(ValueRule element, std::string what) {
+  ValueRule r = tuple_value(std::move(element), 0, std::move(what));
+  r.range.hi = std::numeric_limits<double>::infinity();
   return r;
 }
 
@@ -152,6 +164,12 @@ FieldRule optional_field(std::string key, ValueRule value, nlohmann::json defaul
   f.value = std::move(value);
   f.default_value = std::move(default_value);
   f.meaning = std::move(meaning);
+  return f;
+}
+
+FieldRule output_field(std::string key, ValueRule value, std::string unit, std::string meaning) {
+  FieldRule f = required_field(std::move(key), std::move(value), std::move(meaning));
+  f.unit = std::move(unit);
   return f;
 }
 
@@ -216,6 +234,8 @@ std::string value_noun(const ValueRule& rule) {
       return "a number or a string with an expression of x and y";
     case ValueKind::kNull:
       return "null";
+    case ValueKind::kBoolean:
+      return "true or false";
     case ValueKind::kArray:
       return "an array";
     case ValueKind::kMap:

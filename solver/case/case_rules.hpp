@@ -47,6 +47,7 @@ enum class ValueKind {
   kChoice,   ///< one string of `choices`
   kScalar,   ///< a number, or a string with an expression of x and y
   kNull,     ///< null (an alternative of kOneOf)
+  kBoolean,  ///< true or false
   kArray,    ///< an array of `element`, with a number of entries within `range`
   kMap,      ///< an object from names (`key`) to `element`, entries within `range`
   kObject,   ///< an object described by `object`
@@ -89,6 +90,7 @@ struct FieldRule {
   bool required = false;
   nlohmann::json default_value;  ///< null when there is no default
   std::string meaning;           ///< for docs and for "missing field" messages
+  std::string unit;              ///< for the docs of results ("L", "S·L", "s"); empty for none
 };
 
 /// A semantic rule on a whole object whose fields all passed their checks.
@@ -140,10 +142,13 @@ ValueRule name_value(std::size_t max_length, std::string what);
 ValueRule choice_value(std::vector<std::string> choices);
 ValueRule scalar_value(std::size_t max_expression_length);
 ValueRule null_value();
+ValueRule boolean_value();
 /// An array of exactly `count` entries.
 ValueRule tuple_value(ValueRule element, std::size_t count, std::string what);
 /// An array of 1 to `max_entries` entries.
 ValueRule array_value(ValueRule element, std::size_t max_entries, std::string what);
+/// An array of any length, possibly empty.
+ValueRule list_value(ValueRule element, std::string what);
 /// An object from names to `element`, 1 to `max_entries` entries.
 ValueRule map_value(ValueRule key, ValueRule element, std::size_t max_entries, std::string what,
                     std::string entries);
@@ -156,6 +161,8 @@ ValueRule point_value();
 FieldRule required_field(std::string key, ValueRule value, std::string meaning);
 FieldRule optional_field(std::string key, ValueRule value, nlohmann::json default_value,
                          std::string meaning);
+/// A field of an output document: always present, with a unit.
+FieldRule output_field(std::string key, ValueRule value, std::string unit, std::string meaning);
 
 // ---- words --------------------------------------------------------------------------------
 

@@ -7,6 +7,7 @@
 #include "assembly/definiteness.hpp"
 #include "assembly/discretization.hpp"
 #include "case/expression.hpp"
+#include "case/result_json.hpp"
 #include "case/solver_methods.hpp"
 #include "mesh/mesh_factory.hpp"
 #include "post/contact_output.hpp"
@@ -104,19 +105,6 @@ CaseException indefinite(const Weights& w) {
   return CaseException("/weights", m.str());
 }
 
-nlohmann::json history_json(const std::vector<IterationRecord>& history) {
-  nlohmann::json h = nlohmann::json::array();
-  for (const auto& r : history)
-    h.push_back({{"iteration", r.iteration},
-                 {"energy", r.energy},
-                 {"correction", r.correction},
-                 {"kkt_residual", r.kkt_residual},
-                 {"active", r.active},
-                 {"changed", r.changed},
-                 {"time_s", r.time_s}});
-  return h;
-}
-
 bool has_contact(const CaseSpec& spec) {
   for (const auto& [name, bc] : spec.boundary)
     if (bc.type == BoundaryCondition::Type::kContact) return true;
@@ -176,79 +164,20 @@ RunOutput run_case(const CaseSpec& spec, const RunControl& control, const CaseLi
 
   RunOutput out;
   out.cancelled = report.cancelled;
-  nlohmann::json& r = out.result;
-  r["name"] = spec.name;
-  r["method"] = method.name;
-  r["converged"] = report.converged;
-  r["cancelled"] = report.cancelled;
-  r["iterations"] = report.iterations;
-  r["levels"] = disc.num_levels();
-  r["dofs"] = problem.qp.size();
-  r["dofs_total"] = disc.finest_space().num_dofs();
-  r["vertices"] = disc.meshes().finest().num_vertices();
-  r["triangles"] = disc.meshes().finest().num_triangles();
-  r["initial_kkt_residual"] = report.initial_kkt;
-  r["final_kkt_residual"] = report.final_kkt;
-  r["asymptotic_rate"] = report.asymptotic_rate;
-  r["active"] = report.active;
-  if (!report.message.empty()) r["message"] = report.message;
-  r["history"] = history_json(report.history);
-  nlohmann::json c;
-  std::vector<double> xs, ys, ss, ps, gs;
-  std::vector<bool> act;
-  for (const auto& e : contact.edges) {
-    xs.push_back(e.x), ys.push_back(e.y), ss.push_back(e.s), ps.push_back(e.pressure);
-    gs.push_back(e.gap), act.push_back(e.active);
-  }
-  c["x"] = xs, c["y"] = ys, c["s"] = ss, c["pressure"] = ps, c["gap"] = gs, c["active"] = act;
-  c["force"] = {contact.force_x, contact.force_y};
-  bool obstacle_normal = false;
-  for (const auto& [name, bc] : spec.boundary)
-    obstacle_normal |= bc.type == BoundaryCondition::Type::kContact &&
-                       bc.direction == ContactDirection::kObstacleNormal;
-  c["direction"] = obstacle_normal ? "obstacle_normal" : "body_normal";
-  nlohmann::json obstacles = nlohmann::json::object();
-  for (const auto& [name, bc] : spec.boundary)
-    if (bc.type == BoundaryCondition::Type::kContact)
-      obstacles[name] = bc.obstacle.kind == Obstacle::Kind::kPlane    ? "plane"
-                        : bc.obstacle.kind == Obstacle::Kind::kCircle ? "circle"
-                                                                      : "gap";
-  c["obstacles"] = obstacles;
-  r["contact"] = c;
-  r["functional"] = {{"total", parts.total()},
-                     {"momentum", parts.momentum},
-                     {"constitutive", parts.constitutive},
-                     {"contact", parts.contact},
-                     {"asymmetry", parts.asymmetry},
-                     {"units", "stresses scaled by mu"}};
-  // What a viewer needs to compare with a reference (e.g. the Hertz radius and moduli).
-  r["material"] = {
-      {"mu", spec.material.mu},
-      {"lambda", spec.material.incompressible() ? nlohmann::json("inf")
-                                                : nlohmann::json(spec.material.lambda)}};
-  if (spec.mesh.kind == MeshSpec::Kind::kBuiltin)
-    r["mesh"] = {{"builtin", spec.mesh.builtin},
-                 {"params", spec.mesh.params},
-                 {"size", spec.mesh.size},
-                 {"refinements", spec.mesh.refinements}};
-  r["weights"] = {{"c1", spec.weights.c1},
-                  {"c2", spec.weights.c2},
-                  {"c3", spec.weights.c3},
-                  {"c4", spec.weights.c4}};
-  nlohmann::json warnings = nlohmann::json::array();
-  if (!report.converged && !report.cancelled) warnings.push_back(report.message);
-  if (report.cycle.safeguard_reductions > 0)
-    warnings.push_back("coarse corrections were shortened " +
-                       std::to_string(report.cycle.safeguard_reductions) +
-                       " times to stay feasible (curved contact boundary)");
-  r["warnings"] = warnings;
-  if (control.want_vtu) out.vtu = write_vtu(disc.assembler(), problem, full, parts);
+  if (control.want_vtu) out.vtu = write_vtu(disc.assembler(), problem, full, parts, contact);
   const auto t_end = Clock::now();
-  r["timing"] = {{"mesh_s", seconds(t0, t_mesh)},
-                 {"assembly_s", seconds(t_mesh, t_assembly)},
-                 {"setup_s", report.setup_s},
-                 {"solve_s", seconds(t_assembly, t_solve)},
-                 {"total_s", seconds(t0, t_end)}};
+  ProblemSize size;
+  size.levels = disc.num_levels();
+  size.dofs = problem.qp.size();
+  size.dofs_total = disc.finest_space().num_dofs();
+  size.vertices = disc.meshes().finest().num_vertices();
+  size.triangles = disc.meshes().finest().num_triangles();
+  RunTiming timing;
+  timing.mesh_s = seconds(t0, t_mesh);
+  timing.assembly_s = seconds(t_mesh, t_assembly);
+  timing.solve_s = seconds(t_assembly, t_solve);
+  timing.total_s = seconds(t0, t_end);
+  out.result = result_json(spec, report, contact, parts, size, timing);
   return out;
 }
 

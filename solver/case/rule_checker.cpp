@@ -27,6 +27,8 @@ bool takes_type(const ValueRule& rule, const json& j) {
       return j.is_number() || j.is_string();
     case ValueKind::kNull:
       return j.is_null();
+    case ValueKind::kBoolean:
+      return j.is_boolean();
     case ValueKind::kArray:
       return j.is_array();
     case ValueKind::kMap:
@@ -68,6 +70,10 @@ bool RuleChecker::check(const json& j, const ValueRule& rule, const std::string&
     case ValueKind::kNull:
       ok = j.is_null();
       if (!ok) error(pointer, "expected null, got " + describe_value(j));
+      break;
+    case ValueKind::kBoolean:
+      ok = j.is_boolean();
+      if (!ok) error(pointer, "expected true or false, got " + describe_value(j));
       break;
     case ValueKind::kArray:
       ok = check_array(j, rule, pointer);
@@ -185,8 +191,8 @@ bool RuleChecker::check_array(const json& j, const ValueRule& rule, const std::s
   const bool tuple = rule.range.lo == rule.range.hi;
   if (!j.is_array() || static_cast<double>(j.size()) < rule.range.lo ||
       (tuple && static_cast<double>(j.size()) != rule.range.hi)) {
-    error(pointer, "expected " + std::string(tuple ? "" : "a non-empty ") + value_noun(rule) +
-                       ", got " + describe_value(j));
+    error(pointer, "expected " + std::string(tuple || rule.range.lo < 1 ? "" : "a non-empty ") +
+                       value_noun(rule) + ", got " + describe_value(j));
     return false;
   }
   if (static_cast<double>(j.size()) > rule.range.hi) {

@@ -16,6 +16,7 @@ std::string cell(std::string s) {
 std::string number_text(double v) { return format_number(v); }
 
 std::string count_range(const Range& r, const std::string& unit) {
+  if (!r.has_hi()) return r.lo > 0 ? "at least " + number_text(r.lo) + " " + unit : "";
   if (r.lo == r.hi) return "exactly " + number_text(r.lo) + " " + unit;
   if (r.has_lo() && r.lo > 0) return number_text(r.lo) + " to " + number_text(r.hi) + " " + unit;
   return "at most " + number_text(r.hi) + " " + unit;
@@ -39,6 +40,8 @@ std::string value_type_text(const ValueRule& rule) {
       return "scalar";
     case ValueKind::kNull:
       return code("null");
+    case ValueKind::kBoolean:
+      return "boolean";
     case ValueKind::kArray: {
       const std::string element = value_type_text(*rule.element);
       if (rule.range.lo == rule.range.hi) {
@@ -86,6 +89,7 @@ std::string value_allowed_text(const ValueRule& rule) {
       s = "a number, or an expression of at most " + number_text(rule.range.hi) + " characters";
       break;
     case ValueKind::kNull:
+    case ValueKind::kBoolean:
       break;
     case ValueKind::kArray: {
       const std::string element = value_allowed_text(*rule.element);
@@ -112,7 +116,16 @@ std::string value_allowed_text(const ValueRule& rule) {
   return s;
 }
 
-std::string rules_markdown_table(const ObjectRule& rule) {
+std::string rules_markdown_table(const ObjectRule& rule, TableKind kind) {
+  if (kind == TableKind::kOutput) {
+    std::string s = "| field | type | unit | meaning |\n|---|---|---|---|\n";
+    for (const auto& f : rule.fields)
+      s += "| " + code(f.key) + " | " +
+           cell(f.value.kind == ValueKind::kChoice ? "one of " + value_allowed_text(f.value)
+                                                   : value_type_text(f.value)) +
+           " | " + f.unit + " | " + cell(f.meaning) + (f.required ? "" : " (optional)") + " |\n";
+    return s;
+  }
   auto default_text = [](const FieldRule& f) {
     if (f.required) return std::string("required");
     if (f.default_value.is_null()) return std::string("optional");

@@ -78,7 +78,8 @@ class SchemaWriter {
         bounds(rule.range, s);
         break;
       case ValueKind::kString:
-        s = {{"type", "string"}, {"maxLength", number(rule.range.hi)}};
+        s = {{"type", "string"}};
+        if (rule.range.has_hi()) s["maxLength"] = number(rule.range.hi);
         break;
       case ValueKind::kName:
         s = {{"type", "string"},
@@ -100,11 +101,13 @@ class SchemaWriter {
       case ValueKind::kNull:
         s = {{"type", "null"}};
         break;
+      case ValueKind::kBoolean:
+        s = {{"type", "boolean"}};
+        break;
       case ValueKind::kArray:
-        s = {{"type", "array"},
-             {"items", value(*rule.element)},
-             {"minItems", number(rule.range.lo)},
-             {"maxItems", number(rule.range.hi)}};
+        s = {{"type", "array"}, {"items", value(*rule.element)}};
+        if (rule.range.lo > 0) s["minItems"] = number(rule.range.lo);
+        if (rule.range.has_hi()) s["maxItems"] = number(rule.range.hi);
         break;
       case ValueKind::kMap: {
         json names = value(*rule.key);

@@ -4,17 +4,19 @@
 #include <memory>
 #include <string>
 
-#include "case/case_schema.hpp"
+#include "case/published_formats.hpp"
 #include "cli/exit_codes.hpp"
 
 namespace fosls {
 
 void add_schema_command(CLI::App& app, int& exit_code) {
-  auto* cmd = app.add_subcommand("schema", "Print the JSON Schema of a document (case)");
+  auto* cmd = app.add_subcommand("schema", "Print the JSON Schema of the case or the result");
   auto which = std::make_shared<std::string>("case");
-  cmd->add_option("DOCUMENT", *which, "Which schema: case")->check(CLI::IsMember({"case"}));
+  cmd->add_option("DOCUMENT", *which, "case (default) or result")
+      ->check(CLI::IsMember({"case", "result"}));
   cmd->callback([which, &exit_code] {
-    std::cout << case_json_schema().dump(2) << '\n';
+    const auto schema = *which == "result" ? result_json_schema() : case_json_schema();
+    std::cout << schema.dump(2) << '\n';
     exit_code = std::cout.good() ? kExitOk : kExitInternal;
   });
 }

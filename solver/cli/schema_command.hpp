@@ -1,6 +1,6 @@
 #pragma once
-// `fosls-contact schema case`: prints the JSON Schema of the case format, generated from the
-// rules the reader checks (for editors, scripts and validators).
+// `fosls-contact schema [case|result]`: prints the JSON Schema of the case format (generated
+// from the rules the reader checks) or of the result JSON, for editors, scripts and validators.
 
 #include <CLI/CLI.hpp>
 

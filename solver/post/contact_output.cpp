@@ -55,6 +55,7 @@ ContactResult contact_output(const FoslsAssembler& assembler, const AssembledPro
     const Point m = mesh.edge_midpoint(e);
     r.x = m.x(), r.y = m.y();
     const double len = mesh.edge_length(e);
+    r.length = len;
     r.s = s + 0.5 * len;
     s += len;
     const double sn = x_full[space.sigma_dof(e, 0)] * problem.stress_scale;  // ∫_e σ_nn ds
@@ -67,7 +68,49 @@ ContactResult contact_output(const FoslsAssembler& assembler, const AssembledPro
     out.force_y += sn * ne.y();
     out.edges.push_back(r);
   }
+  struct Adjacent {
+    double pressure = 0;
+    int edges = 0;
+    Point normal = Point::Zero();
+  };
+  std::map<int, Adjacent> adjacent;  // vertex of a contact edge → its contact edges
+  for (const auto& r : out.edges)
+    for (int v : mesh.edge(r.edge)) {
+      adjacent[v].pressure += r.pressure;
+      adjacent[v].edges += 1;
+      adjacent[v].normal += mesh.edge_normal(r.edge);
+    }
+  for (const auto& [v, a] : adjacent) {
+    ContactVertexResult r;
+    r.vertex = v;
+    r.pressure = a.pressure / a.edges;
+    // U_n in the rotated coordinates of a contact vertex; at a vertex held by a Dirichlet
+    // condition the displacement along the mean normal of its contact edges.
+    const Point n = a.normal.normalized();
+    const double un = space.is_contact_vertex(v)
+                          ? x_full[space.u_dof(v, 0)]
+                          : n.x() * x_full[space.u_dof(v, 0)] + n.y() * x_full[space.u_dof(v, 1)];
+    r.gap = 0.0 + (problem.vertex_gap[v] - un);  // +0.0, not −0.0, where closed
+    out.vertices.push_back(r);
+  }
   return out;
+}
+
+ContactZone ContactResult::zone() const {
+  ContactZone z;
+  for (const auto& e : edges) {
+    if (!e.active) continue;
+    if (z.edges == 0) z.s_start = e.s - 0.5 * e.length;
+    z.s_end = e.s + 0.5 * e.length;
+    ++z.edges;
+    z.length += e.length;
+    if (e.pressure > z.peak_pressure) {
+      z.peak_pressure = e.pressure;
+      z.peak_x = e.x;
+      z.peak_y = e.y;
+    }
+  }
+  return z;
 }
 
 }  // namespace fosls

@@ -1,6 +1,7 @@
 #pragma once
-// What users look at (docs/method.md §6): contact pressure per contact edge, gap, contact zone and
-// resultant force, from a solution in the space's rotated, scaled coordinates.
+// What users look at: contact pressure per contact edge, gap, contact zone and resultant
+// force, from a solution in the space's rotated, scaled coordinates (docs/result-format.md,
+// docs/method.md §6).
 
 #include <vector>
 
@@ -12,14 +13,34 @@ struct ContactEdgeResult {
   int edge = -1;
   double x = 0, y = 0;  ///< midpoint
   double s = 0;         ///< arc length along the contact boundary (chain order)
+  double length = 0;    ///< of the edge
   double pressure = 0;  ///< p = −σ_nn (physical units), constant on the edge
   double gap = 0;       ///< remaining gap g − u·n, mean over the edge
   bool active = false;  ///< in contact: pressure > 0
 };
 
+/// A vertex of the contact boundary.
+struct ContactVertexResult {
+  int vertex = -1;
+  double gap = 0;       ///< remaining gap g − u·n along the constraint direction
+  double pressure = 0;  ///< mean pressure of the adjacent contact edges
+};
+
+/// Where the body touches the obstacle: the edges with pressure > 0.
+struct ContactZone {
+  int edges = 0;       ///< edges in contact
+  double length = 0;   ///< their total length
+  double s_start = 0;  ///< arc length at the start of the first edge in contact
+  double s_end = 0;    ///< arc length at the end of the last edge in contact
+  double peak_pressure = 0;
+  double peak_x = 0, peak_y = 0;  ///< midpoint of the edge with the peak pressure
+};
+
 struct ContactResult {
-  std::vector<ContactEdgeResult> edges;  ///< ordered along the contact boundary
-  double force_x = 0, force_y = 0;       ///< ∫_Γ_C σn ds: the obstacle's force on the body
+  std::vector<ContactEdgeResult> edges;       ///< ordered along the contact boundary
+  std::vector<ContactVertexResult> vertices;  ///< the vertices of the contact edges
+  double force_x = 0, force_y = 0;            ///< ∫_Γ_C σn ds: the obstacle's force on the body
+  ContactZone zone() const;
 };
 
 ContactResult contact_output(const FoslsAssembler& assembler, const AssembledProblem& problem,

@@ -1,5 +1,6 @@
 #!/usr/bin/env python3
-"""The JSON Schema of the case (`fosls-contact schema case`) and the reader agree.
+"""The JSON Schema of the case (`fosls-contact schema case`) and the reader agree; the result
+of a solve is valid for the result schema (`fosls-contact schema result`).
 
 Every shipped example and every case in docs/case-format.md is valid for both; every case of
 the corpus below is refused by both, except the rules a schema cannot express (expressions,
@@ -212,7 +213,24 @@ def main():
             if refused:
                 failures.append(f"{name}: the reader refuses it: {stderr}")
 
-    checked = len(shipped) + len(documented) + len(BOTH_REFUSE) + len(READER_ONLY) - 1 + len(
+    # The result of a solve is valid for the result schema, and the schema is strict.
+    result_schema = json.loads(subprocess.run([args.bin, "schema", "result"], capture_output=True,
+                                              text=True, check=True).stdout)
+    jsonschema.Draft202012Validator.check_schema(result_schema)
+    result_validator = jsonschema.Draft202012Validator(result_schema)
+    with tempfile.TemporaryDirectory() as tmp:
+        case = source / "solver" / "examples" / "signorini_square.json"
+        out = pathlib.Path(tmp) / "result.json"
+        subprocess.run([args.bin, "solve", str(case), "--quiet", "--out", str(out)], check=True)
+        result = json.loads(out.read_text())
+    errors = [e.message for e in result_validator.iter_errors(result)]
+    if errors:
+        failures.append(f"the result of signorini_square fails the result schema: {errors[:3]}")
+    result["contact"]["surprise"] = 1
+    if result_validator.is_valid(result):
+        failures.append("the result schema accepts an undocumented field")
+
+    checked = 2 + len(shipped) + len(documented) + len(BOTH_REFUSE) + len(READER_ONLY) - 1 + len(
         BOTH_ACCEPT)
     for f in failures:
         print("FAIL:", f)

@@ -1,6 +1,7 @@
 #pragma once
-// The published forms of the case format's rules: its JSON Schema and the generated tables of
-// docs/case-format.md. Both come from case_rule(), the rules the reader checks.
+// The published forms of the case and result formats: their JSON Schemas and the generated
+// tables of docs/case-format.md and docs/result-format.md. They come from case_rule(), the
+// rules the reader checks, and result_rule(), the rules every result is tested against.
 
 #include <map>
 #include <nlohmann/json.hpp>
@@ -17,5 +18,13 @@ nlohmann::json case_json_schema();
 /// table of each section (case, mesh, builtin, geometry, curve, material, condition, obstacle,
 /// weights, solver), "methods" (the solver methods and the options they use) and "limits".
 std::map<std::string, std::string> case_format_blocks();
+
+/// JSON Schema (draft 2020-12) of the result JSON of a solve.
+nlohmann::json result_json_schema();
+
+/// The generated blocks of docs/result-format.md by name: "fields:<object>" for each object of
+/// the result (result, iteration, solver_statistics, contact, zone, functional, ...) and "vtu"
+/// (the arrays of the VTU file).
+std::map<std::string, std::string> result_format_blocks();
 
 }  // namespace fosls

@@ -1,9 +1,11 @@
-#include "case/case_schema.hpp"
+#include "case/published_formats.hpp"
 
 #include "case/case_reader.hpp"
+#include "case/result_rules.hpp"
 #include "case/rules_markdown.hpp"
 #include "case/rules_schema.hpp"
 #include "case/solver_methods.hpp"
+#include "post/vtu_writer.hpp"
 
 namespace fosls {
 
@@ -48,7 +50,39 @@ std::string limits_table() {
   return s;
 }
 
+std::string vtu_table() {
+  std::string s = "| array | data | components | unit | meaning |\n|---|---|---|---|---|\n";
+  for (const auto& a : vtu_arrays()) {
+    std::vector<std::string> components;
+    for (const char* c : a.components) components.emplace_back(c);
+    s += std::string("| `") + a.name + "` | " + (a.point_data ? "point" : "cell") + " | " +
+         (components.empty() ? "1" : join_words(components, ", ")) + " | " + a.unit + " | " +
+         a.meaning + " |\n";
+  }
+  return s;
+}
+
+std::map<std::string, std::string> object_tables(const ObjectRule& root, TableKind kind) {
+  std::map<std::string, const ObjectRule*> objects;
+  collect_objects(root, objects);
+  std::map<std::string, std::string> blocks;
+  for (const auto& [anchor, rule] : objects)
+    blocks["fields:" + anchor] = rules_markdown_table(*rule, kind);
+  return blocks;
+}
+
 }  // namespace
+
+nlohmann::json result_json_schema() {
+  return rules_json_schema(*result_rule(), "https://fosls-contact.invalid/schemas/result.json",
+                           "The result of a fosls-contact solve (docs/result-format.md).");
+}
+
+std::map<std::string, std::string> result_format_blocks() {
+  auto blocks = object_tables(*result_rule(), TableKind::kOutput);
+  blocks["vtu"] = vtu_table();
+  return blocks;
+}
 
 nlohmann::json case_json_schema() {
   return rules_json_schema(*case_rule(), "https://fosls-contact.invalid/schemas/case.json",
@@ -56,12 +90,7 @@ nlohmann::json case_json_schema() {
 }
 
 std::map<std::string, std::string> case_format_blocks() {
-  const ObjectRulePtr root = case_rule();
-  std::map<std::string, const ObjectRule*> objects;
-  collect_objects(*root, objects);
-  std::map<std::string, std::string> blocks;
-  for (const auto& [anchor, rule] : objects)
-    blocks["fields:" + anchor] = rules_markdown_table(*rule);
+  auto blocks = object_tables(*case_rule(), TableKind::kInput);
   blocks["methods"] = methods_table();
   blocks["limits"] = limits_table();
   return blocks;

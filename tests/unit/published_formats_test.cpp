@@ -1,23 +1,22 @@
-// docs/case-format.md and docs/schemas/case.schema.json say what the reader checks: their
-// generated parts must equal what case_schema.hpp generates from the reader's rules.
-// To refresh them after changing a rule: FOSLS_UPDATE_DOCS=1 build/bin/case_format_docs_test
+// docs/case-format.md, docs/result-format.md and docs/schemas/*.schema.json say what the code
+// does: their generated parts must equal what published_formats.hpp generates from the rules
+// the reader checks and every result is checked against.
+// To refresh them after changing a rule: FOSLS_UPDATE_DOCS=1 build/bin/published_formats_test
+
+#include "case/published_formats.hpp"
 
 #include <gtest/gtest.h>
 
 #include <cstdlib>
 #include <fstream>
-#include <regex>
 #include <set>
 #include <sstream>
 #include <string>
 
-#include "case/case_schema.hpp"
-
 namespace fosls {
 namespace {
 
-const std::string kDoc = std::string(FOSLS_SOURCE_DIR) + "/docs/case-format.md";
-const std::string kSchema = std::string(FOSLS_SOURCE_DIR) + "/docs/schemas/case.schema.json";
+const std::string kDocs = std::string(FOSLS_SOURCE_DIR) + "/docs/";
 
 std::string read_text(const std::string& path) {
   std::ifstream in(path, std::ios::binary);
@@ -55,38 +54,56 @@ std::set<std::string> fill_blocks(std::string& doc,
   return found;
 }
 
-TEST(CaseFormatDocs, GeneratedBlocksMatchTheRules) {
-  const auto blocks = case_format_blocks();
-  const std::string doc = read_text(kDoc);
-  ASSERT_FALSE(doc.empty()) << kDoc;
+/// The generated blocks of a document equal `blocks`, and every block is in the document.
+void check_document(const std::string& file, const std::map<std::string, std::string>& blocks) {
+  const std::string path = kDocs + file;
+  const std::string doc = read_text(path);
+  ASSERT_FALSE(doc.empty()) << path;
   std::string expected = doc;
   std::set<std::string> unknown;
   const auto found = fill_blocks(expected, blocks, unknown);
-  EXPECT_TRUE(unknown.empty()) << "blocks in the doc that nothing generates: " << *unknown.begin();
+  for (const auto& name : unknown) ADD_FAILURE() << file << ": nothing generates block " << name;
   for (const auto& [name, text] : blocks)
-    EXPECT_TRUE(found.count(name)) << "docs/case-format.md has no block " << name;
+    EXPECT_TRUE(found.count(name)) << file << " has no block " << name;
   if (updating() && expected != doc) {
-    std::ofstream(kDoc, std::ios::binary) << expected;
-    GTEST_SKIP() << "rewrote " << kDoc;
+    std::ofstream(path, std::ios::binary) << expected;
+    GTEST_SKIP() << "rewrote " << path;
   }
-  EXPECT_EQ(doc, expected) << "docs/case-format.md differs from the rules; run "
-                              "FOSLS_UPDATE_DOCS=1 build/bin/case_format_docs_test";
+  EXPECT_EQ(doc, expected) << file << " differs from the rules; run "
+                           << "FOSLS_UPDATE_DOCS=1 build/bin/published_formats_test";
 }
 
-TEST(CaseFormatDocs, PublishedSchemaMatchesTheRules) {
-  const std::string expected = case_json_schema().dump(2) + "\n";
-  const std::string published = read_text(kSchema);
+void check_schema(const std::string& file, const nlohmann::json& schema) {
+  const std::string path = kDocs + "schemas/" + file;
+  const std::string expected = schema.dump(2) + "\n";
+  const std::string published = read_text(path);
   if (updating() && expected != published) {
-    std::ofstream(kSchema, std::ios::binary) << expected;
-    GTEST_SKIP() << "rewrote " << kSchema;
+    std::ofstream(path, std::ios::binary) << expected;
+    GTEST_SKIP() << "rewrote " << path;
   }
-  EXPECT_EQ(published, expected) << "docs/schemas/case.schema.json differs from the rules; run "
-                                    "FOSLS_UPDATE_DOCS=1 build/bin/case_format_docs_test";
+  EXPECT_EQ(published, expected) << "docs/schemas/" << file << " differs from the rules; run "
+                                 << "FOSLS_UPDATE_DOCS=1 build/bin/published_formats_test";
 }
 
-// Every field of every section appears in a generated table, so no field can be added to the
-// reader without showing up in the docs.
-TEST(CaseFormatDocs, EveryFieldIsInATable) {
+TEST(PublishedFormats, CaseFormatDocMatchesTheRules) {
+  check_document("case-format.md", case_format_blocks());
+}
+
+TEST(PublishedFormats, ResultFormatDocMatchesTheRules) {
+  check_document("result-format.md", result_format_blocks());
+}
+
+TEST(PublishedFormats, CaseSchemaMatchesTheRules) {
+  check_schema("case.schema.json", case_json_schema());
+}
+
+TEST(PublishedFormats, ResultSchemaMatchesTheRules) {
+  check_schema("result.schema.json", result_json_schema());
+}
+
+// Every section has a table, so no field can be added to the reader without showing up in the
+// docs.
+TEST(PublishedFormats, EveryCaseSectionIsInATable) {
   const auto blocks = case_format_blocks();
   for (const char* section : {"case", "mesh", "builtin", "geometry", "curve", "material",
                               "condition", "obstacle", "weights", "solver"})

@@ -1,0 +1,195 @@
+#include "case/result_json.hpp"
+
+#include <cmath>
+#include <sstream>
+
+#include "case/solver_methods.hpp"
+
+namespace fosls {
+
+namespace {
+
+using nlohmann::json;
+
+std::string short_number(double v) {
+  std::ostringstream s;
+  s.precision(3);
+  s << v;
+  return s.str();
+}
+
+double relative_kkt(const SolverReport& report) {
+  return report.initial_kkt > 0 ? report.final_kkt / report.initial_kkt : 0.0;
+}
+
+json history_json(const std::vector<IterationRecord>& history) {
+  json h = json::array();
+  for (const auto& r : history)
+    h.push_back({{"iteration", r.iteration},
+                 {"energy", r.energy},
+                 {"correction", r.correction},
+                 {"kkt_residual", r.kkt_residual},
+                 {"active", r.active},
+                 {"changed", r.changed},
+                 {"time_s", r.time_s}});
+  return h;
+}
+
+json statistics_json(const SolverReport& report) {
+  const CycleStatistics& c = report.cycle;
+  return {{"nested_iterations", report.nested_iterations},
+          {"nested_s", report.nested_s},
+          {"galerkin_rebuilds", c.galerkin_rebuilds},
+          {"safeguard_reductions", c.safeguard_reductions},
+          {"galerkin_s", c.galerkin_s},
+          {"smoothing_s", c.smoothing_s},
+          {"strip_s", c.strip_s},
+          {"coarse_s", c.coarse_s}};
+}
+
+const char* obstacle_name(Obstacle::Kind kind) {
+  switch (kind) {
+    case Obstacle::Kind::kPlane:
+      return "plane";
+    case Obstacle::Kind::kCircle:
+      return "circle";
+    case Obstacle::Kind::kGap:
+      return "gap";
+  }
+  return "?";
+}
+
+json contact_json(const ContactResult& contact, const CaseSpec& spec) {
+  json c;
+  std::vector<double> xs, ys, ss, ls, ps, gs;
+  std::vector<bool> active;
+  for (const auto& e : contact.edges) {
+    xs.push_back(e.x), ys.push_back(e.y), ss.push_back(e.s), ls.push_back(e.length);
+    ps.push_back(e.pressure), gs.push_back(e.gap), active.push_back(e.active);
+  }
+  c["x"] = xs, c["y"] = ys, c["s"] = ss, c["length"] = ls;
+  c["pressure"] = ps, c["gap"] = gs, c["active"] = active;
+  c["force"] = {contact.force_x, contact.force_y};
+  const ContactZone z = contact.zone();
+  c["zone"] = {{"edges", z.edges},
+               {"length", z.length},
+               {"s_start", z.edges ? json(z.s_start) : json(nullptr)},
+               {"s_end", z.edges ? json(z.s_end) : json(nullptr)},
+               {"peak_pressure", z.peak_pressure},
+               {"peak_location", z.edges ? json({z.peak_x, z.peak_y}) : json(nullptr)}};
+  bool obstacle_normal = false;
+  json obstacles = json::object();
+  for (const auto& [name, bc] : spec.boundary)
+    if (bc.type == BoundaryCondition::Type::kContact) {
+      obstacle_normal |= bc.direction == ContactDirection::kObstacleNormal;
+      obstacles[name] = obstacle_name(bc.obstacle.kind);
+    }
+  c["direction"] = obstacle_normal ? "obstacle_normal" : "body_normal";
+  c["obstacles"] = obstacles;
+  return c;
+}
+
+json mesh_json(const MeshSpec& mesh) {
+  static const char* const kSources[] = {"builtin", "geometry", "msh", "geo_file"};
+  json m = {{"source", kSources[static_cast<int>(mesh.kind)]},
+            {"size", mesh.size},
+            {"refinements", mesh.refinements}};
+  // What a viewer needs to compare with a reference (e.g. the Hertz radius).
+  if (mesh.kind == MeshSpec::Kind::kBuiltin) {
+    m["builtin"] = mesh.builtin;
+    m["params"] = mesh.params;
+  }
+  return m;
+}
+
+}  // namespace
+
+StopReason stop_reason(const SolverReport& report) {
+  if (report.converged) return StopReason::kConverged;
+  return report.cancelled ? StopReason::kCancelled : StopReason::kMaxIterations;
+}
+
+std::string convergence_message(const SolverReport& report, const SolverOptions& options) {
+  switch (stop_reason(report)) {
+    case StopReason::kConverged:
+      return "";
+    case StopReason::kCancelled:
+      return "cancelled after " + std::to_string(report.iterations) + " iterations";
+    case StopReason::kMaxIterations:
+      break;
+  }
+  return "not converged: after " + std::to_string(report.iterations) +
+         " iterations (solver.max_iterations) the KKT residual had fallen to " +
+         short_number(relative_kkt(report)) + " of its initial value, not to the tolerance " +
+         short_number(options.tolerance) + " (solver.tolerance); the last iterations reduced " +
+         "it by a factor " + short_number(report.asymptotic_rate) +
+         " each. The result is the last iterate: raise solver.max_iterations, or check the "
+         "case (a too fine mesh for the method, or a contact zone the mesh does not resolve)";
+}
+
+std::vector<std::string> result_warnings(const SolverReport& report, const SolverOptions& options) {
+  std::vector<std::string> warnings;
+  if (stop_reason(report) == StopReason::kMaxIterations)
+    warnings.push_back(convergence_message(report, options));
+  if (report.cycle.safeguard_reductions > 0)
+    warnings.push_back(
+        "coarse corrections were shortened " + std::to_string(report.cycle.safeguard_reductions) +
+        " times to stay feasible: on a curved contact boundary the coarse levels' contact "
+        "normals differ from the finest level's, so a coarse correction can overshoot the "
+        "obstacle and is cut back. This is expected there and needs no action: it costs "
+        "convergence speed, not accuracy");
+  return warnings;
+}
+
+json result_json(const CaseSpec& spec, const SolverReport& report, const ContactResult& contact,
+                 const FunctionalParts& functional, const ProblemSize& size,
+                 const RunTiming& timing) {
+  const SolverOptions& options = spec.solver;
+  json r;
+  r["name"] = spec.name;
+  r["method"] = method_info(options.method).name;
+  r["converged"] = report.converged;
+  r["stop_reason"] = stop_reason_name(stop_reason(report));
+  r["cancelled"] = report.cancelled;
+  r["iterations"] = report.iterations;
+  r["tolerance"] = options.tolerance;
+  r["levels"] = size.levels;
+  r["dofs"] = size.dofs;
+  r["dofs_total"] = size.dofs_total;
+  r["vertices"] = size.vertices;
+  r["triangles"] = size.triangles;
+  r["initial_kkt_residual"] = report.initial_kkt;
+  r["final_kkt_residual"] = report.final_kkt;
+  r["relative_kkt_residual"] = relative_kkt(report);
+  r["asymptotic_rate"] = report.asymptotic_rate;
+  r["active_bounds"] = report.active;
+  r["active"] = report.active;
+  if (const std::string m = convergence_message(report, options); !m.empty()) r["message"] = m;
+  r["warnings"] = result_warnings(report, options);
+  r["history"] = history_json(report.history);
+  r["solver_statistics"] = statistics_json(report);
+  r["contact"] = contact_json(contact, spec);
+  r["functional"] = {{"total", functional.total()},
+                     {"momentum", functional.momentum},
+                     {"constitutive", functional.constitutive},
+                     {"contact", functional.contact},
+                     {"asymmetry", functional.asymmetry},
+                     {"estimator", std::sqrt(std::max(0.0, functional.total()))},
+                     {"units", "stresses scaled by mu"}};
+  r["material"] = {
+      {"mu", spec.material.mu},
+      {"lambda", spec.material.incompressible() ? json("inf") : json(spec.material.lambda)}};
+  r["mesh"] = mesh_json(spec.mesh);
+  r["weights"] = {{"c1", spec.weights.c1},
+                  {"c2", spec.weights.c2},
+                  {"c3", spec.weights.c3},
+                  {"c4", spec.weights.c4}};
+  r["timing"] = {{"mesh_s", timing.mesh_s},
+                 {"assembly_s", timing.assembly_s},
+                 {"setup_s", report.setup_s},
+                 {"solve_s", timing.solve_s},
+                 {"total_s", timing.total_s}};
+  return r;
+}
+
+}  // namespace fosls

@@ -1,0 +1,45 @@
+#pragma once
+// The result JSON of a solve (documented in docs/result-format.md, described field by field by
+// result_rules.hpp), and the sentences that explain its warnings.
+
+#include <nlohmann/json.hpp>
+#include <string>
+#include <vector>
+
+#include "assembly/fosls_assembler.hpp"
+#include "case/case_spec.hpp"
+#include "case/result_rules.hpp"
+#include "post/contact_output.hpp"
+#include "solvers/solve_loop.hpp"
+
+namespace fosls {
+
+/// Sizes of the discrete problem that was solved.
+struct ProblemSize {
+  int levels = 0;
+  long long dofs = 0;        ///< unknowns solved for
+  long long dofs_total = 0;  ///< all DOFs of the finest level
+  long long vertices = 0;
+  long long triangles = 0;
+};
+
+/// Wall-clock times of a run, in seconds.
+struct RunTiming {
+  double mesh_s = 0, assembly_s = 0, solve_s = 0, total_s = 0;
+};
+
+StopReason stop_reason(const SolverReport& report);
+
+/// Why a solve stopped without converging, with the numbers and what to change; empty when it
+/// converged.
+std::string convergence_message(const SolverReport& report, const SolverOptions& options);
+
+/// The warnings of a result, each saying what happened and what it means.
+std::vector<std::string> result_warnings(const SolverReport& report, const SolverOptions& options);
+
+/// The whole result JSON.
+nlohmann::json result_json(const CaseSpec& spec, const SolverReport& report,
+                           const ContactResult& contact, const FunctionalParts& functional,
+                           const ProblemSize& size, const RunTiming& timing);
+
+}  // namespace fosls

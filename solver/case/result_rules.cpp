@@ -1,0 +1,230 @@
+// The result JSON described field by field, as the case is (case_rules.hpp): the source of
+// docs/result-format.md's tables and of the result's JSON Schema, and the check that every
+// field a solve emits is documented (tests/unit/result_format_test.cpp).
+
+#include "case/result_rules.hpp"
+
+#include "case/solver_methods.hpp"
+
+namespace fosls {
+
+namespace {
+
+ValueRule count() { return integer_value(Range::non_negative()); }
+ValueRule number() { return number_value(); }
+ValueRule numbers(std::string what) { return list_value(number_value(), std::move(what)); }
+ValueRule text() { return string_value(static_cast<std::size_t>(-1) >> 1, "the text"); }
+
+ObjectRulePtr object_rule(std::string title, std::string anchor, std::vector<FieldRule> fields) {
+  auto r = std::make_shared<ObjectRule>();
+  r->title = std::move(title);
+  r->anchor = std::move(anchor);
+  r->fields = std::move(fields);
+  return r;
+}
+
+ObjectRulePtr history_rule() {
+  return object_rule(
+      "an iteration", "iteration",
+      {output_field("iteration", count(), "1", "0 for the initial iterate, then 1, 2, ..."),
+       output_field("energy", number(), "scaled",
+                    "the functional J(x_k) = ½xᵀAx − bᵀx + c (not a physical energy)"),
+       output_field("correction", number(), "scaled", "energy norm of the step ‖x_k − x_{k−1}‖_A"),
+       output_field("kkt_residual", number(), "scaled",
+                    "‖x − P_K(x − (Ax − b))‖₂, the quantity of the stopping rule"),
+       output_field("active", count(), "1", "bounded unknowns at their bound"),
+       output_field("changed", count(), "1", "unknowns that entered or left the active set"),
+       output_field("time_s", number(), "s", "since the start of the iteration")});
+}
+
+ObjectRulePtr statistics_rule() {
+  return object_rule(
+      "the solver statistics", "solver_statistics",
+      {output_field("nested_iterations", list_value(count(), "list of iteration counts"), "1",
+                    "iterations of the nested iteration on each coarser level, coarsest first "
+                    "(mmg and tnnmg)"),
+       output_field("nested_s", number(), "s", "time of the nested iteration (in setup_s)"),
+       output_field("galerkin_rebuilds", count(), "1",
+                    "coarse matrices rebuilt for new active sets (truncation)"),
+       output_field("safeguard_reductions", count(), "1",
+                    "coarse corrections shortened to stay feasible (curved contact boundaries)"),
+       output_field("galerkin_s", number(), "s", "time of the Galerkin rebuilds"),
+       output_field("smoothing_s", number(), "s", "time of the vertex-patch or pointwise sweeps"),
+       output_field("strip_s", number(), "s", "time of the contact-strip solves"),
+       output_field("coarse_s", number(), "s", "time of the coarsest-level solves")});
+}
+
+ObjectRulePtr zone_rule() {
+  ValueRule where = one_of_value({number_value(), null_value()}, "a number or null");
+  return object_rule(
+      "the contact zone", "zone",
+      {output_field("edges", count(), "1", "contact edges in contact (pressure > 0)"),
+       output_field("length", number(), "L", "their total length (the contact width in 2D)"),
+       output_field("s_start", where, "L",
+                    "arc length `s` at the start of the first edge in contact; null without one"),
+       output_field("s_end", where, "L", "arc length `s` at the end of the last edge in contact"),
+       output_field("peak_pressure", number(), "S",
+                    "the largest edge pressure (0 without contact)"),
+       output_field("peak_location", one_of_value({point_value(), null_value()}, "[x, y] or null"),
+                    "L", "midpoint [x, y] of the edge with the peak pressure")});
+}
+
+ObjectRulePtr contact_rule() {
+  ValueRule obstacles =
+      map_value(name_value(1000, "the group name"), choice_value({"plane", "circle", "gap"}),
+                100000, "object mapping contact groups to obstacle types", "groups");
+  obstacles.range.lo = 0;
+  return object_rule(
+      "the contact output", "contact",
+      {output_field("x", numbers("per contact edge"), "L",
+                    "midpoint x of each contact edge, in order along the contact boundary"),
+       output_field("y", numbers("per contact edge"), "L", "midpoint y of each contact edge"),
+       output_field("s", numbers("per contact edge"), "L",
+                    "arc length at the midpoint, from the start of the contact boundary (its "
+                    "leftmost end)"),
+       output_field("length", numbers("per contact edge"), "L", "length of each contact edge"),
+       output_field("pressure", numbers("per contact edge"), "S",
+                    "contact pressure p = −σ_nn ≥ 0 on each edge (constant on an edge; σ_nn with "
+                    "the body's outward normal n)"),
+       output_field("gap", numbers("per contact edge"), "L",
+                    "the remaining gap g − u·n after deformation, mean over the edge (0 where "
+                    "closed; g is the initial gap along the constraint direction)"),
+       output_field("active", list_value(boolean_value(), "per contact edge"), "1",
+                    "whether the edge is in contact (pressure > 0)"),
+       output_field("force", point_value(), "S·L",
+                    "[F_x, F_y] = ∫ σn ds over the contact boundary: the force of the obstacle "
+                    "on the body, per unit thickness (plane strain)"),
+       output_field("zone", object_value(zone_rule()), "", "where the body touches the obstacle"),
+       output_field("direction", choice_value({"body_normal", "obstacle_normal"}), "",
+                    "the constraint direction (obstacle_normal when any contact group uses it)"),
+       output_field("obstacles", obstacles, "", "the obstacle type of each contact group")});
+}
+
+ObjectRulePtr functional_rule() {
+  return object_rule(
+      "the functional", "functional",
+      {output_field("total", number(), "scaled", "J at the solution: the sum of the four parts"),
+       output_field("momentum", number(), "scaled", "C1 ‖div σ + f‖²"),
+       output_field("constitutive", number(), "scaled", "C2 ‖Aσ − ε(u)‖²"),
+       output_field("contact", number(), "scaled", "C3 ⟨u·n − g, σ_nn⟩"),
+       output_field("asymmetry", number(), "scaled", "C4 ‖as σ‖²"),
+       output_field("estimator", number(), "scaled",
+                    "J^½, the a posteriori error estimator of the least-squares method"),
+       output_field("units", text(), "",
+                    "\"stresses scaled by mu\": σ and f enter J divided by μ")});
+}
+
+ObjectRulePtr material_echo_rule() {
+  return object_rule(
+      "the material", "material_echo",
+      {output_field("mu", number(), "S", "shear modulus μ (from mu, or from E and nu)"),
+       output_field("lambda", one_of_value({number_value(), choice_value({"inf"})}, "λ"), "S",
+                    "Lamé parameter λ, \"inf\" when incompressible")});
+}
+
+ObjectRulePtr mesh_echo_rule() {
+  ValueRule params = map_value(name_value(100, "the parameter"), number_value(), 100,
+                               "object mapping parameter names to values", "parameters");
+  return object_rule(
+      "the mesh", "mesh_echo",
+      {output_field("source", choice_value({"builtin", "geometry", "msh", "geo_file"}), "",
+                    "the mesh source of the case"),
+       output_field("size", number(), "L", "mesh.size of the case"),
+       output_field("refinements", count(), "1", "mesh.refinements of the case"),
+       optional_field("builtin", choice_value({"square", "hertz"}), nullptr,
+                      "the builtin geometry (builtin meshes only)"),
+       optional_field("params", params, nullptr,
+                      "every parameter of the builtin geometry, defaults included")});
+}
+
+ObjectRulePtr weights_echo_rule() {
+  std::vector<FieldRule> fields;
+  for (const char* c : {"c1", "c2", "c3", "c4"})
+    fields.push_back(output_field(c, number(), "1", std::string("weight ") + c + " used"));
+  return object_rule("the weights", "weights_echo", std::move(fields));
+}
+
+ObjectRulePtr timing_rule() {
+  return object_rule(
+      "the timing", "timing",
+      {output_field("mesh_s", number(), "s", "coarse mesh and refinements"),
+       output_field("assembly_s", number(), "s",
+                    "assembly of the finest level and the level hierarchy"),
+       output_field("setup_s", number(), "s",
+                    "solver set-up, including the nested iteration on the coarser levels"),
+       output_field("solve_s", number(), "s", "set-up and iterations"),
+       output_field("total_s", number(), "s", "the whole run")});
+}
+
+}  // namespace
+
+ObjectRulePtr result_rule() {
+  std::vector<std::string> reasons;
+  for (const auto reason :
+       {StopReason::kConverged, StopReason::kMaxIterations, StopReason::kCancelled})
+    reasons.push_back(stop_reason_name(reason));
+  return object_rule(
+      "the result", "result",
+      {output_field("name", text(), "", "the case's name"),
+       output_field("method", choice_value(method_names()), "", "the solver method"),
+       output_field("converged", boolean_value(), "",
+                    "the stopping rule was met: final_kkt_residual ≤ tolerance · "
+                    "initial_kkt_residual"),
+       output_field("stop_reason", choice_value(reasons), "",
+                    "why the iteration stopped: converged, max_iterations (solver.max_iterations "
+                    "reached first) or cancelled"),
+       output_field("cancelled", boolean_value(), "", "the job was cancelled while solving"),
+       output_field("iterations", count(), "1",
+                    "iterations on the finest level (the nested iteration's are in "
+                    "solver_statistics)"),
+       output_field("tolerance", number(), "1", "solver.tolerance of the case"),
+       output_field("levels", count(), "1", "levels of the hierarchy: mesh.refinements + 1"),
+       output_field("dofs", count(), "1", "unknowns of the finest level that are solved for"),
+       output_field("dofs_total", count(), "1",
+                    "all DOFs of the finest level, fixed ones included"),
+       output_field("vertices", count(), "1", "vertices of the finest mesh"),
+       output_field("triangles", count(), "1", "triangles of the finest mesh"),
+       output_field("initial_kkt_residual", number(), "scaled",
+                    "KKT residual of the initial iterate"),
+       output_field("final_kkt_residual", number(), "scaled", "KKT residual at the end"),
+       output_field("relative_kkt_residual", number(), "1",
+                    "final_kkt_residual / initial_kkt_residual (0 when the initial one is 0)"),
+       output_field("asymptotic_rate", number(), "1",
+                    "geometric mean of the last (up to) 5 reductions of the KKT residual"),
+       output_field("active_bounds", count(), "1",
+                    "bounded unknowns at their bound at the end (U_n at the obstacle or S_n at "
+                    "zero); not the number of contact edges in contact, see contact.zone.edges"),
+       output_field("active", count(), "1", "deprecated: the same as active_bounds"),
+       optional_field("message", text(), nullptr,
+                      "why the solve did not converge or was cancelled (also in warnings)"),
+       output_field("warnings", list_value(text(), "list of sentences"), "",
+                    "what the user should know: non-convergence, shortened coarse corrections, "
+                    "each with what it means"),
+       output_field("history", list_value(object_value(history_rule()), "one per iteration"), "",
+                    "the initial iterate and every iteration"),
+       output_field("solver_statistics", object_value(statistics_rule()), "",
+                    "counts and times of the multilevel method's parts"),
+       output_field("contact", object_value(contact_rule()), "",
+                    "the contact output (empty arrays when the case has no contact group)"),
+       output_field("functional", object_value(functional_rule()), "",
+                    "the FOSLS functional at the solution and its parts"),
+       output_field("material", object_value(material_echo_rule()), "",
+                    "the material as used (μ, λ)"),
+       output_field("mesh", object_value(mesh_echo_rule()), "", "the mesh as given"),
+       output_field("weights", object_value(weights_echo_rule()), "", "the weights as used"),
+       output_field("timing", object_value(timing_rule()), "", "wall-clock times")});
+}
+
+const char* stop_reason_name(StopReason reason) {
+  switch (reason) {
+    case StopReason::kConverged:
+      return "converged";
+    case StopReason::kMaxIterations:
+      return "max_iterations";
+    case StopReason::kCancelled:
+      return "cancelled";
+  }
+  return "?";
+}
+
+}  // namespace fosls
