@@ -1,5 +1,7 @@
 #include "case/case_limits.hpp"
 
+#include "mesh/coarse_mesh_estimate.hpp"
+
 namespace fosls {
 
 namespace {
@@ -33,7 +35,10 @@ std::vector<CaseLimitRow> case_limit_table(const CaseLimits& l) {
       {"geometry points, curves and groups; boundary conditions",
        grouped(static_cast<long long>(l.max_geometry_entities)) + " each"},
       {"`mesh.refinements`", "at most " + std::to_string(l.max_refinements)},
-      {"estimated coarse triangles (builtin and geometry meshes)", grouped(l.max_coarse_triangles)},
+      {"estimated coarse triangles (builtin and geometry meshes)",
+       grouped(static_cast<long long>(kMaxCoarseTriangles))},
+      {"estimated coarse boundary edges (geometry meshes)",
+       grouped(static_cast<long long>(kMaxCoarseBoundaryEdges))},
       {"unknowns on the finest level (checked once the coarse mesh is built)", grouped(l.max_dofs)},
   };
 }

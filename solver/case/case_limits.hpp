@@ -1,7 +1,8 @@
 #pragma once
-// Size limits that are part of validating a case, and the reader's options. The defaults are the
-// documented limits (docs/case-format.md, "Limits", generated from case_limit_table()); tests and
-// programs may lower them.
+// Size limits that are part of validating a case, and the reader's options. The defaults are
+// the documented limits (docs/case-format.md, "Limits", generated from case_limit_table());
+// tests and programs may lower them. The coarse-mesh limits are the mesh layer's
+// (mesh/coarse_mesh_estimate.hpp): they guard the mesher whoever calls it.
 
 #include <cstddef>
 #include <string>
@@ -18,9 +19,6 @@ struct CaseLimits {
   std::size_t max_name_length = 200;
   /// The whole case JSON text (the CLI's case file; the service may use it as its body limit).
   std::size_t max_case_bytes = 16u << 20;
-  /// Estimated triangles of the coarse mesh of a builtin or geometry mesh (≈ area / size²):
-  /// keeps a tiny `mesh.size` from building a huge coarse mesh before the DOF limit is checked.
-  long long max_coarse_triangles = 200'000;
   std::size_t max_path_length = 4096;  ///< mesh.geo_file
 };
 

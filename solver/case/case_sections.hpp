@@ -13,6 +13,7 @@
 #include "case/case_limits.hpp"
 #include "case/case_rules.hpp"
 #include "case/case_spec.hpp"
+#include "mesh/coarse_mesh_estimate.hpp"
 
 namespace fosls {
 
@@ -21,9 +22,8 @@ MeshSpec read_mesh_section(const nlohmann::json& j);
 
 ObjectRulePtr geometry_rule(const CaseReadOptions& options);
 GeometrySpec read_geometry_section(const nlohmann::json& j);
-/// Estimated triangles of a coarse mesh of `geometry` with edge length `size` (an upper
-/// bound: the bounding box area, arcs counting their whole circle, over a triangle's area).
-double estimated_coarse_triangles(const GeometrySpec& geometry, double size);
+/// The mesh layer's estimate of the coarse mesh of `geometry` with edge length `size`.
+CoarseMeshEstimate estimated_coarse_mesh(const GeometrySpec& geometry, double size);
 
 ObjectRulePtr material_rule();
 Material read_material_section(const nlohmann::json& j);

@@ -9,6 +9,7 @@
 #include "case/case_sections.hpp"
 #include "case/rule_checker.hpp"
 #include "mesh/builtin_meshes.hpp"
+#include "mesh/coarse_mesh_estimate.hpp"
 
 namespace fosls {
 
@@ -131,22 +132,26 @@ bool check_geo_file(const json& j, const std::string& pointer, RuleChecker& chec
   return true;
 }
 
-/// A tiny `size` must not build a huge coarse mesh before the DOF limit can be checked.
+/// A tiny `size` must not build a huge coarse mesh before the DOF limit can be checked: the
+/// mesh layer's estimate and limits, checked before anything is meshed.
 void check_coarse_size(const json& j, const std::string& pointer, RuleChecker& checker) {
   if (!checker.usable(j, pointer, {"size"})) return;
   const double size = j.value("size", MeshSpec{}.size);
-  double triangles = 0.0;
-  if (j.contains("builtin") && checker.passed(child_pointer(pointer, "builtin")))
-    triangles = builtin_triangles(j["builtin"], size);
-  else if (j.contains("geometry") && checker.passed(child_pointer(pointer, "geometry")))
-    triangles = estimated_coarse_triangles(read_geometry_section(j["geometry"]), size);
-  const long long limit = checker.options().limits.max_coarse_triangles;
-  if (triangles <= static_cast<double>(limit)) return;
+  const std::string size_pointer = child_pointer(pointer, "size");
+  if (j.contains("geometry") && checker.passed(child_pointer(pointer, "geometry"))) {
+    const auto problems = check_coarse_mesh_estimate(
+        estimated_coarse_mesh(read_geometry_section(j["geometry"]), size));
+    for (const auto& p : problems) checker.error(size_pointer, p.detail);
+    return;
+  }
+  if (!j.contains("builtin") || !checker.passed(child_pointer(pointer, "builtin"))) return;
+  const double triangles = builtin_triangles(j["builtin"], size);
+  if (triangles <= kMaxCoarseTriangles) return;
   std::ostringstream s;
   s << "a coarse mesh size of this value would give about " << std::llround(triangles)
-    << " coarse triangles, more than the limit of " << limit
+    << " coarse triangles, more than the limit of " << kMaxCoarseTriangles
     << "; use a larger size and more refinements";
-  checker.error(child_pointer(pointer, "size"), s.str());
+  checker.error(size_pointer, s.str());
 }
 
 }  // namespace

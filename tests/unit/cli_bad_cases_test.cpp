@@ -192,7 +192,7 @@ std::vector<BadCase> bad_cases() {
        set("/mesh", json::parse(R"({"geometry": {"points": [[0, 0], [1, 0], [0, 1]],
            "curves": [{"type": "line", "points": [0, 1]}, {"type": "line", "points": [1, 2]}],
            "groups": {"top": [0, 1]}}})")),
-       "", "/mesh/geometry/curves", "closed loop"},
+       "", "/mesh/geometry/points/", "closed loop"},
       // These need the coarse mesh (validate_case and the mesh builders).
       {"corrupt_msh", set("/mesh", {{"msh", kSquareMshTruncated}}), "", "/mesh/msh", "line"},
       {"crossing_segments", set("/mesh", crossing), "", "/mesh/geometry/curves/", "cross"},

@@ -1,13 +1,12 @@
-#include "mesh/mesh_factory.hpp"
+#include "case/mesh_factory.hpp"
 
 #include <cmath>
 #include <stdexcept>
 #include <string>
 #include <vector>
 
-#include "case/case_error.hpp"
 #include "mesh/builtin_meshes.hpp"
-#include "mesh/gmsh_mesh.hpp"
+#include "mesh/coarse_mesh_estimate.hpp"
 #include "mesh/msh_reader.hpp"
 
 namespace fosls {
@@ -39,7 +38,7 @@ void take_params(const MeshSpec& spec, const std::vector<std::pair<std::string, 
   }
 }
 
-Mesh build_builtin(const MeshSpec& spec) {
+Mesh build_builtin(const MeshSpec& spec, const MeshingControl& control) {
   std::vector<CaseError> errors;
   if (!(spec.size > 0) || !std::isfinite(spec.size))
     errors.push_back({kSizePointer, "the mesh size must be a positive number"});
@@ -69,7 +68,7 @@ Mesh build_builtin(const MeshSpec& spec) {
         errors);
     p.size = spec.size;
     if (!errors.empty()) throw CaseException(std::move(errors));
-    return make_hertz(p);
+    return make_hertz(p, control);
   }
   throw CaseException(kBuiltinPointer,
                       "unknown built-in geometry '" + spec.builtin + "'; use 'square' or 'hertz'");
@@ -91,24 +90,54 @@ std::string source_pointer(MeshSpec::Kind kind) {
 
 }  // namespace
 
-Mesh build_coarse_mesh(const MeshSpec& spec) {
+Mesh build_coarse_mesh(const MeshSpec& spec, const MeshingControl& control) {
   try {
     switch (spec.kind) {
       case MeshSpec::Kind::kBuiltin:
-        return build_builtin(spec);
+        return build_builtin(spec, control);
       case MeshSpec::Kind::kGeometry:
-        return mesh_from_geometry(spec.geometry, spec.size);
+        return mesh_from_geometry(spec.geometry, spec.size, control);
       case MeshSpec::Kind::kMsh:
         return mesh_from_msh(spec.msh_text);
       case MeshSpec::Kind::kGeoFile:
-        return mesh_from_geo_file(spec.geo_path, spec.size);
+        return mesh_from_geo_file(spec.geo_path, spec.size, control);
     }
+  } catch (const MeshError& e) {
+    throw to_case_exception(e, spec);
   } catch (const std::invalid_argument& e) {
     // Raised by the Mesh constructor and the built-in generators: the source gave a mesh that
     // is not a valid triangulation, or parameters they reject.
     throw CaseException(source_pointer(spec.kind), e.what());
   }
   throw CaseException("/mesh", "unknown kind of mesh source");
+}
+
+std::string mesh_problem_pointer(const MeshProblem& problem, const MeshSpec& spec) {
+  std::string field = problem.field;
+  if (spec.kind == MeshSpec::Kind::kBuiltin && field.rfind("/geometry", 0) == 0)
+    return kBuiltinPointer;
+  // The geometry's groups are a JSON object: /geometry/groups/<i>[/name | /curves[/<j>]] is
+  // the group named by the case, /mesh/geometry/groups/<name>[/<j>].
+  const std::string groups = "/geometry/groups/";
+  if (spec.kind == MeshSpec::Kind::kGeometry && field.rfind(groups, 0) == 0) {
+    std::size_t end = field.find('/', groups.size());
+    const std::string index = field.substr(groups.size(), end - groups.size());
+    const std::size_t i = std::stoul(index);
+    if (i < spec.geometry.groups.size()) {
+      std::string rest = end == std::string::npos ? "" : field.substr(end);
+      if (rest == "/name" || rest == "/curves") rest.clear();
+      if (rest.rfind("/curves/", 0) == 0) rest = rest.substr(7);
+      return child_pointer("/mesh/geometry/groups", spec.geometry.groups[i].name) + rest;
+    }
+  }
+  return "/mesh" + field;
+}
+
+CaseException to_case_exception(const MeshError& error, const MeshSpec& spec) {
+  std::vector<CaseError> errors;
+  for (const MeshProblem& p : error.problems())
+    errors.push_back({mesh_problem_pointer(p, spec), p.detail});
+  return CaseException(std::move(errors));
 }
 
 }  // namespace fosls
