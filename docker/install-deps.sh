@@ -18,6 +18,8 @@ tool_packages=(clang-format curl sqlite3 nodejs npm chromium wrk python3 python3
 tool_packages+=(postgresql)
 # The contract tests validate documents against the published JSON Schemas.
 tool_packages+=(python3-jsonschema)
+# The gmsh program of the own-mesh workflow in docs/case-format.md (its test runs it).
+tool_packages+=(gmsh)
 
 check_only=0
 case "${1:-}" in
@@ -35,7 +37,7 @@ esac
 provides_command() {
   case "$1" in
     nodejs) command -v node >/dev/null ;;
-    npm | chromium | wrk | curl | sqlite3 | clang-format | cmake | python3 | ccache) command -v "$1" >/dev/null ;;
+    npm | chromium | wrk | curl | sqlite3 | clang-format | cmake | python3 | ccache | gmsh) command -v "$1" >/dev/null ;;
     *) return 1 ;;
   esac
 }

@@ -8,7 +8,7 @@ namespace fosls::service {
 namespace {
 CaseReadOptions service_read_options() {
   CaseReadOptions options;
-  options.allow_geo_file = false;
+  options.allow_local_files = false;
   return options;
 }
 

@@ -19,15 +19,16 @@ struct CaseLimits {
   std::size_t max_name_length = 200;
   /// The whole case JSON text (the CLI's case file; the service may use it as its body limit).
   std::size_t max_case_bytes = 16u << 20;
-  std::size_t max_path_length = 4096;  ///< mesh.geo_file
+  std::size_t max_path_length = 4096;  ///< mesh.geo_file, mesh.msh_file
 };
 
 /// What a reader accepts: the limits, and whether a case may name local files.
 struct CaseReadOptions {
   CaseLimits limits;
-  /// `mesh.geo_file` (a path to a gmsh .geo script) is accepted only from the command line:
-  /// .geo scripts can run shell commands, so the service never allows them.
-  bool allow_geo_file = false;
+  /// Paths of local files (`mesh.geo_file`, `mesh.msh_file`) are accepted only from the
+  /// command line: the service never reads files named by a request, and .geo scripts can run
+  /// shell commands.
+  bool allow_local_files = false;
 };
 
 /// One limit as the documentation lists it.

@@ -29,9 +29,10 @@ struct MeshSpec {
                                          ///< contact_fraction, grading)
   GeometrySpec geometry;                 ///< kind == kGeometry
   std::string msh_text;                  ///< kind == kMsh (ASCII 4.1)
-  std::string geo_path;                  ///< kind == kGeoFile (CLI only, never from the network)
-  double size = 0.25;                    ///< coarse mesh size
-  int refinements = 0;                   ///< levels = refinements + 1
+  std::string msh_path;  ///< kind == kMsh read from mesh.msh_file (CLI only), else empty
+  std::string geo_path;  ///< kind == kGeoFile (CLI only, never from the network)
+  double size = 0.25;    ///< coarse mesh size
+  int refinements = 0;   ///< levels = refinements + 1
 };
 
 struct Material {

@@ -3,7 +3,9 @@
 
 #include <cmath>
 #include <filesystem>
+#include <fstream>
 #include <numbers>
+#include <optional>
 #include <sstream>
 
 #include "case/case_sections.hpp"
@@ -106,17 +108,20 @@ bool check_msh_text(const json& j, const std::string& pointer, RuleChecker& chec
   return true;
 }
 
-bool check_geo_file(const json& j, const std::string& pointer, RuleChecker& checker) {
-  if (!checker.options().allow_geo_file) {
-    checker.error(pointer,
-                  "a .geo file is accepted only by the command line program (fosls-contact "
-                  "solve), because gmsh scripts can run shell commands; use mesh.geometry or "
-                  "mesh.msh instead");
+/// A local file named by the case: the command line only (see CaseReadOptions).
+bool check_local_file(const json& j, const std::string& pointer, RuleChecker& checker,
+                      const char* what) {
+  if (!checker.options().allow_local_files) {
+    checker.error(pointer, std::string("a ") + what +
+                               " path is accepted only by the command line program "
+                               "(fosls-contact solve): the service reads no files named by a "
+                               "case, and gmsh scripts can run shell commands; use mesh.geometry "
+                               "or mesh.msh instead");
     return false;
   }
   const auto& path = j.get_ref<const std::string&>();
   if (path.empty()) {
-    checker.error(pointer, "the path is empty; give the path of a gmsh .geo file");
+    checker.error(pointer, std::string("the path is empty; give the path of a ") + what);
     return false;
   }
   if (path.find('\0') != std::string::npos) {
@@ -130,6 +135,41 @@ bool check_geo_file(const json& j, const std::string& pointer, RuleChecker& chec
     return false;
   }
   return true;
+}
+
+bool check_geo_file(const json& j, const std::string& pointer, RuleChecker& checker) {
+  return check_local_file(j, pointer, checker, "gmsh .geo file");
+}
+
+/// The text of a file, at most `max_bytes` + 1 bytes of it (so that a larger file shows), or
+/// nothing when it cannot be read.
+std::optional<std::string> read_text_file(const std::string& path, std::size_t max_bytes) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) return std::nullopt;
+  std::string text;
+  char buffer[1 << 16];
+  while (in && text.size() <= max_bytes) {
+    in.read(buffer, sizeof buffer);
+    text.append(buffer, static_cast<std::size_t>(in.gcount()));
+  }
+  if (in.bad()) return std::nullopt;
+  return text;
+}
+
+bool check_msh_file(const json& j, const std::string& pointer, RuleChecker& checker) {
+  if (!check_local_file(j, pointer, checker, "gmsh .msh file")) return false;
+  const std::size_t max = checker.options().limits.max_text_bytes;
+  const auto text = read_text_file(j.get<std::string>(), max);
+  if (!text) {
+    checker.error(pointer, "cannot read the file " + j.get<std::string>());
+    return false;
+  }
+  if (text->size() > max) {
+    checker.error(pointer, "the file is larger than the limit of " + std::to_string(max) +
+                               " bytes for msh text");
+    return false;
+  }
+  return check_msh_text(json(*text), pointer, checker);
 }
 
 /// A tiny `size` must not build a huge coarse mesh before the DOF limit can be checked: the
@@ -174,6 +214,9 @@ ObjectRulePtr mesh_rule(const CaseReadOptions& options) {
   ValueRule geo_file = string_value(limits.max_path_length, "the path");
   geo_file.hook = check_geo_file;
   geo_file.notes = "command line only; the file must exist";
+  ValueRule msh_file = string_value(limits.max_path_length, "the path");
+  msh_file.hook = check_msh_file;
+  msh_file.notes = "command line only; the file must exist and hold msh text";
   ValueRule refinements = integer_value(Range::closed(0, limits.max_refinements));
 
   r->fields = {
@@ -181,6 +224,8 @@ ObjectRulePtr mesh_rule(const CaseReadOptions& options) {
       optional_field("geometry", object_value(geometry_rule(options)), nullptr,
                      "points, lines and arcs, meshed with gmsh"),
       optional_field("msh", msh, nullptr, "the text of a gmsh mesh file (ASCII 4.1)"),
+      optional_field("msh_file", msh_file, nullptr,
+                     "the path of a gmsh mesh file (ASCII 4.1), read like msh"),
       optional_field("geo_file", geo_file, nullptr, "the path of a gmsh .geo script"),
       optional_field("size", number_value(Range::positive()), defaults.size,
                      "target edge length of the coarse mesh (not used by msh)"),
@@ -188,8 +233,9 @@ ObjectRulePtr mesh_rule(const CaseReadOptions& options) {
                      "uniform refinements of the coarse mesh; the multilevel hierarchy has "
                      "refinements + 1 levels"),
   };
-  r->exclusive = {{{{"builtin"}, {"geometry"}, {"msh"}, {"geo_file"}},
-                   "no mesh source: give exactly one of builtin, geometry, msh or geo_file",
+  r->exclusive = {{{{"builtin"}, {"geometry"}, {"msh"}, {"msh_file"}, {"geo_file"}},
+                   "no mesh source: give exactly one of builtin, geometry, msh, msh_file or "
+                   "geo_file",
                    "give exactly one mesh source, not {given}"}};
   r->hook = check_coarse_size;
   r->notes =
@@ -212,6 +258,11 @@ MeshSpec read_mesh_section(const json& j) {
   } else if (const auto it = j.find("msh"); it != j.end()) {
     m.kind = MeshSpec::Kind::kMsh;
     m.msh_text = it->get<std::string>();
+  } else if (const auto it = j.find("msh_file"); it != j.end()) {
+    // Checked readable by its rule; read once more here, the text is the mesh.
+    m.kind = MeshSpec::Kind::kMsh;
+    m.msh_path = it->get<std::string>();
+    m.msh_text = read_text_file(m.msh_path, CaseLimits{}.max_text_bytes).value_or("");
   } else if (const auto it = j.find("geo_file"); it != j.end()) {
     m.kind = MeshSpec::Kind::kGeoFile;
     m.geo_path = it->get<std::string>();

@@ -91,7 +91,7 @@ json contact_json(const ContactResult& contact, const CaseSpec& spec) {
 
 json mesh_json(const MeshSpec& mesh) {
   static const char* const kSources[] = {"builtin", "geometry", "msh", "geo_file"};
-  json m = {{"source", kSources[static_cast<int>(mesh.kind)]},
+  json m = {{"source", mesh.msh_path.empty() ? kSources[static_cast<int>(mesh.kind)] : "msh_file"},
             {"size", mesh.size},
             {"refinements", mesh.refinements}};
   // What a viewer needs to compare with a reference (e.g. the Hertz radius).

@@ -127,8 +127,8 @@ ObjectRulePtr mesh_echo_rule() {
                                "object mapping parameter names to values", "parameters");
   return object_rule(
       "the mesh", "mesh_echo",
-      {output_field("source", choice_value({"builtin", "geometry", "msh", "geo_file"}), "",
-                    "the mesh source of the case"),
+      {output_field("source", choice_value({"builtin", "geometry", "msh", "msh_file", "geo_file"}),
+                    "", "the mesh source of the case"),
        output_field("size", number(), "L", "mesh.size of the case"),
        output_field("refinements", count(), "1", "mesh.refinements of the case"),
        optional_field("builtin", choice_value({"square", "hertz"}), nullptr,

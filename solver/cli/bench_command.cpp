@@ -4,6 +4,7 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <cmath>
 #include <cstdio>
 #include <fstream>
 #include <iostream>
@@ -68,7 +69,12 @@ nlohmann::json run_isolated(const nlohmann::json& case_json) {
                                r["timing"]["assembly_s"].get<double>() +
                                r["timing"]["setup_s"].get<double>()},
                {"solve_s",
-                r["timing"]["solve_s"].get<double>() - r["timing"]["setup_s"].get<double>()}};
+                r["timing"]["solve_s"].get<double>() - r["timing"]["setup_s"].get<double>()},
+               // The physical answer per level, so that a mesh-convergence study is one command.
+               {"force", r["contact"]["force"]},
+               {"peak_pressure", r["contact"]["zone"]["peak_pressure"]},
+               {"contact_width", r["contact"]["zone"]["length"]},
+               {"estimator", r["functional"]["estimator"]}};
       }
     } catch (const std::exception& e) {
       row["error"] = e.what();
@@ -136,8 +142,9 @@ int run_bench(const BenchOptions& o) {
     std::cerr << "error: --levels: need 1 <= A <= B <= 12\n";
     return kExitBadInput;
   }
-  std::printf("%-5s %9s %-6s %-6s %-3s %6s %5s %8s %9s %9s %9s\n", "level", "dofs", "method",
-              "smooth", "obs", "iters", "conv", "rate", "setup_s", "solve_s", "peak_MiB");
+  std::printf("%-5s %9s %-6s %-6s %-3s %6s %5s %8s %9s %9s %9s %11s %11s %10s %10s\n", "level",
+              "dofs", "method", "smooth", "obs", "iters", "conv", "rate", "setup_s", "solve_s",
+              "peak_MiB", "|F|", "p_max", "width", "J^1/2");
   nlohmann::json rows = nlohmann::json::array();
   bool all_ok = true;
   const auto methods = split(o.methods), smoothers = split(o.smoothers),
@@ -180,13 +187,18 @@ int run_bench(const BenchOptions& o) {
                         row["coarse_obstacle"].get<std::string>().c_str(),
                         row["error"].get<std::string>().c_str());
           } else {
-            std::printf("%-5d %9lld %-6s %-6s %-3s %6d %5s %8.4f %9.3f %9.3f %9.1f\n", level,
-                        row["dofs"].get<long long>(), method.c_str(),
-                        row["smoother"].get<std::string>().c_str(),
-                        row["coarse_obstacle"].get<std::string>().c_str(),
-                        row["iterations"].get<int>(), row["converged"].get<bool>() ? "yes" : "no",
-                        row["rate"].get<double>(), row["setup_s"].get<double>(),
-                        row["solve_s"].get<double>(), row["peak_mib"].get<double>());
+            const double force =
+                std::hypot(row["force"][0].get<double>(), row["force"][1].get<double>());
+            std::printf(
+                "%-5d %9lld %-6s %-6s %-3s %6d %5s %8.4f %9.3f %9.3f %9.1f %11.5g %11.5g %10.4g "
+                "%10.3g\n",
+                level, row["dofs"].get<long long>(), method.c_str(),
+                row["smoother"].get<std::string>().c_str(),
+                row["coarse_obstacle"].get<std::string>().c_str(), row["iterations"].get<int>(),
+                row["converged"].get<bool>() ? "yes" : "no", row["rate"].get<double>(),
+                row["setup_s"].get<double>(), row["solve_s"].get<double>(),
+                row["peak_mib"].get<double>(), force, row["peak_pressure"].get<double>(),
+                row["contact_width"].get<double>(), row["estimator"].get<double>());
           }
           std::fflush(stdout);
           rows.push_back(row);

@@ -38,15 +38,18 @@ std::string parse_problem(const std::string& text) {
   return "invalid JSON";
 }
 
-void resolve_geo_file(nlohmann::json& j, const std::filesystem::path& folder) {
+/// Relative paths of local files in the mesh section, taken relative to the case's folder.
+void resolve_mesh_paths(nlohmann::json& j, const std::filesystem::path& folder) {
   if (!j.is_object()) return;
   auto mesh = j.find("mesh");
   if (mesh == j.end() || !mesh->is_object()) return;
-  auto geo = mesh->find("geo_file");
-  if (geo == mesh->end() || !geo->is_string()) return;
-  const std::filesystem::path path = geo->get<std::string>();
-  if (path.empty() || path.is_absolute()) return;
-  *geo = (folder / path).lexically_normal().string();
+  for (const char* key : {"geo_file", "msh_file"}) {
+    auto file = mesh->find(key);
+    if (file == mesh->end() || !file->is_string()) continue;
+    const std::filesystem::path path = file->get<std::string>();
+    if (path.empty() || path.is_absolute()) continue;
+    *file = (folder / path).lexically_normal().string();
+  }
 }
 
 }  // namespace
@@ -92,7 +95,7 @@ CaseFile load_case_file(const std::string& path, std::size_t max_bytes) {
     result.problem = parse_problem(text);
     return result;
   }
-  if (!folder.empty()) resolve_geo_file(result.json, folder);
+  if (!folder.empty()) resolve_mesh_paths(result.json, folder);
   return result;
 }
 

@@ -1,6 +1,6 @@
 #pragma once
 // Reading a case file for the command line: size limit, JSON parse errors with their
-// position, and relative mesh.geo_file paths taken relative to the case file.
+// position, and relative mesh.geo_file and mesh.msh_file paths taken relative to the case file.
 
 #include <cstddef>
 #include <nlohmann/json.hpp>
@@ -15,8 +15,8 @@ struct CaseFile {
 };
 
 /// Reads and parses `path` ("-" reads standard input). Files larger than `max_bytes` are
-/// refused. A relative `mesh.geo_file` is rewritten relative to the case file's folder, so
-/// that a case runs the same from any working directory.
+/// refused. A relative `mesh.geo_file` or `mesh.msh_file` is rewritten relative to the case
+/// file's folder, so that a case runs the same from any working directory.
 CaseFile load_case_file(const std::string& path, std::size_t max_bytes);
 
 }  // namespace fosls

@@ -26,6 +26,7 @@ struct SolveOptions {
   std::string case_path;
   std::string out_path;
   std::string vtu_path;
+  std::string msh_path;  ///< --msh: the coarse mesh from this file instead of the case's source
   bool quiet = false;
 };
 
@@ -42,9 +43,8 @@ class ProgressLine {
   void update(const IterationRecord& r) {
     if (!enabled_) return;
     char line[160];
-    std::snprintf(line, sizeof line,
-                  "\riteration %5d  energy %.6e  kkt residual %.3e  active %d\033[K", r.iteration,
-                  r.energy, r.kkt_residual, r.active);
+    std::snprintf(line, sizeof line, "\riteration %5d  J %.6e  kkt residual %.3e  active %d\033[K",
+                  r.iteration, r.energy, r.kkt_residual, r.active);
     std::cerr << line << std::flush;
     shown_ = true;
   }
@@ -89,24 +89,65 @@ bool output_folder_ok(const std::string& option, const std::string& path) {
   return true;
 }
 
-/// Reports the outcome and picks the exit code: 0 when converged, 3 when not.
-int report(const nlohmann::json& result, const SolveOptions& o) {
-  const bool converged = result.value("converged", false);
-  const int iterations = result.value("iterations", 0);
-  if (!converged) {
-    std::cerr << "warning: the solver did not converge in " << iterations
-              << " iterations; the result is written anyway\n";
-    return kExitNotConverged;
+std::string g(double v, int digits = 4) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%.*g", digits, v);
+  return text;
+}
+
+/// The answer an engineer looks for: force, peak pressure, contact zone, estimator.
+void print_summary(const nlohmann::json& r) {
+  const auto& c = r["contact"];
+  const auto& z = c["zone"];
+  std::cerr << "  force on the body   F = (" << g(c["force"][0]) << ", " << g(c["force"][1])
+            << ") per unit thickness (the obstacle's force on the body)\n";
+  if (c["x"].empty()) {
+    std::cerr << "  contact             none: the case has no contact group\n";
+  } else if (z["edges"] == 0) {
+    std::cerr << "  contact zone        no edge in contact (" << c["x"].size()
+              << " contact edges)\n";
+  } else {
+    std::cerr << "  peak pressure       p_max = " << g(z["peak_pressure"]) << " at ("
+              << g(z["peak_location"][0]) << ", " << g(z["peak_location"][1]) << ")\n"
+              << "  contact zone        " << z["edges"].get<int>() << " of " << c["x"].size()
+              << " contact edges, width " << g(z["length"]) << " (s from " << g(z["s_start"])
+              << " to " << g(z["s_end"]) << ")\n";
   }
-  if (!o.quiet)
-    std::cerr << "converged in " << iterations << " iterations (" << result.value("levels", 0)
-              << " levels, " << result.value("dofs", 0LL) << " unknowns)\n";
-  return kExitOk;
+  std::cerr << "  error estimator     J^1/2 = " << g(r["functional"]["estimator"], 3)
+            << " (scaled units)\n";
+}
+
+/// Reports the outcome and picks the exit code: 0 when converged, 3 when not. Warnings are
+/// printed even with --quiet.
+int report(const nlohmann::json& r, const SolveOptions& o) {
+  for (const auto& w : r["warnings"]) std::cerr << "warning: " << w.get<std::string>() << '\n';
+  const bool converged = r.value("converged", false);
+  if (!o.quiet) {
+    const std::string what = converged ? "converged in " : "NOT converged: stopped after ";
+    std::cerr << what << r["iterations"].get<int>() << " iterations (" << r["levels"].get<int>()
+              << " levels, " << r["dofs"].get<long long>() << " unknowns, "
+              << g(r["timing"]["total_s"], 3) << " s; relative KKT residual "
+              << g(r["relative_kkt_residual"], 2) << ", tolerance " << g(r["tolerance"], 2)
+              << ")\n";
+    print_summary(r);
+  }
+  return converged ? kExitOk : kExitNotConverged;
+}
+
+/// --msh FILE: the case's mesh source becomes mesh.msh_file (its size and refinements stay).
+void use_msh_file(nlohmann::json& case_json, const std::string& path) {
+  if (!case_json.is_object()) return;
+  auto& mesh = case_json["mesh"];
+  if (!mesh.is_object()) mesh = nlohmann::json::object();
+  for (const char* source : {"builtin", "geometry", "msh", "msh_file", "geo_file"})
+    mesh.erase(source);
+  std::error_code ec;
+  mesh["msh_file"] = std::filesystem::absolute(path, ec).lexically_normal().string();
 }
 
 int run_solve(const SolveOptions& o) {
   CaseReadOptions read_options;
-  read_options.allow_geo_file = true;  // a local file given by the user who runs the program
+  read_options.allow_local_files = true;  // a local file given by the user who runs the program
 
   if (!output_folder_ok("--out", o.out_path) || !output_folder_ok("--vtu", o.vtu_path))
     return kExitBadInput;
@@ -115,6 +156,7 @@ int run_solve(const SolveOptions& o) {
     std::cerr << "error: " << o.case_path << ": " << file.problem << '\n';
     return kExitBadInput;
   }
+  if (!o.msh_path.empty()) use_msh_file(file.json, o.msh_path);
   ProgressLine progress(!o.quiet && isatty(STDERR_FILENO));
   try {
     const auto errors = validate_case(file.json, read_options);
@@ -165,7 +207,10 @@ void add_solve_command(CLI::App& app, int& exit_code) {
   cmd->add_option("CASE", o->case_path, "Case JSON file (- reads standard input)")->required();
   cmd->add_option("--out,-o", o->out_path, "Write the result JSON here instead of stdout");
   cmd->add_option("--vtu", o->vtu_path, "Write the solution as a VTK unstructured grid here");
-  cmd->add_flag("--quiet,-q", o->quiet, "No progress line and no summary");
+  cmd->add_option("--msh", o->msh_path,
+                  "Use this gmsh mesh file (ASCII 4.1) as the coarse mesh instead of the case's "
+                  "mesh source");
+  cmd->add_flag("--quiet,-q", o->quiet, "No progress line and no summary (warnings still)");
   cmd->callback([o, &exit_code] { exit_code = run_solve(*o); });
 }
 

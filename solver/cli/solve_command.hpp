@@ -1,5 +1,6 @@
 #pragma once
-// `fosls-contact solve CASE.json [--out RESULT.json] [--vtu SOLUTION.vtu] [--quiet]`.
+// `fosls-contact solve CASE.json [--out RESULT.json] [--vtu SOLUTION.vtu] [--msh MESH.msh]
+// [--quiet]`.
 
 #include <CLI/CLI.hpp>
 

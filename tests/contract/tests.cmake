@@ -7,3 +7,9 @@ if(Python3_Interpreter_FOUND)
                    --bin $<TARGET_FILE:fosls-contact> --source ${PROJECT_SOURCE_DIR})
   set_tests_properties(contract_case_schema PROPERTIES LABELS unit TIMEOUT 120)
 endif()
+if(Python3_Interpreter_FOUND)
+  add_test(NAME contract_msh_workflow
+           COMMAND ${Python3_EXECUTABLE} ${CONTRACT_DIR}/msh_workflow_test.py
+                   --bin $<TARGET_FILE:fosls-contact> --source ${PROJECT_SOURCE_DIR})
+  set_tests_properties(contract_msh_workflow PROPERTIES LABELS unit TIMEOUT 300)
+endif()

@@ -304,6 +304,43 @@ TEST(CliBadCases, FolderTooLargeFileAndUsageErrors) {
   fs::remove_all(work);
 }
 
+// `solve` ends with the answer: force, peak pressure, contact zone, estimator; not converging
+// is a warning with the real numbers and exit code 3.
+TEST(CliSolve, SummaryStatesTheAnswerAndNonConvergenceIsAWarning) {
+  const fs::path work = work_folder("fosls_cli_summary");
+  fs::create_directories(work);
+  json j = valid_case();
+  j["mesh"]["refinements"] = 2;
+  j["solver"]["max_iterations"] = 200;
+  std::ofstream(work / "case.json") << j.dump();
+  ProcessResult r = run_program(
+      {"solve", (work / "case.json").string(), "--out", (work / "result.json").string()}, work);
+  EXPECT_EQ(r.exit_code, 0) << r.err;
+  for (const char* line :
+       {"converged in ", "force on the body   F = (",
+        "peak pressure       p_max = ", "contact zone        ", "error estimator     J^1/2 = "})
+    EXPECT_NE(r.err.find(line), std::string::npos) << line << " missing in:\n" << r.err;
+  const json result = json::parse(read_file(work / "result.json"));
+  const std::string edges = std::to_string(result["contact"]["zone"]["edges"].get<int>()) + " of ";
+  EXPECT_NE(r.err.find(edges), std::string::npos) << r.err;
+
+  j["solver"]["max_iterations"] = 2;
+  std::ofstream(work / "case.json") << j.dump();
+  r = run_program(
+      {"solve", (work / "case.json").string(), "--out", (work / "result.json").string()}, work);
+  EXPECT_EQ(r.exit_code, 3) << r.err;
+  EXPECT_NE(r.err.find("warning: not converged: after 2 iterations"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("NOT converged"), std::string::npos) << r.err;
+  EXPECT_EQ(r.err.find("0.000000"), std::string::npos) << r.err;
+  r = run_program(
+      {"solve", (work / "case.json").string(), "--quiet", "--out", (work / "result.json").string()},
+      work);
+  EXPECT_EQ(r.exit_code, 3);
+  EXPECT_NE(r.err.find("warning: not converged"), std::string::npos) << r.err;
+  EXPECT_EQ(r.err.find("force on the body"), std::string::npos) << r.err;
+  fs::remove_all(work);
+}
+
 // The shipped examples are embedded in the program and identical to the files.
 TEST(CliExamples, ListAndPrintTheShippedFiles) {
   const fs::path work = work_folder("fosls_cli_examples");
