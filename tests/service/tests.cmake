@@ -9,6 +9,18 @@ foreach(name request_checks_test sqlite_job_store_test worker_pool_test http_api
   gtest_discover_tests(${name} PROPERTIES LABELS unit TIMEOUT 120 DISCOVERY_TIMEOUT 60)
 endforeach()
 
+# One contract, two stores: the same tests on SQLite and on a throwaway PostgreSQL server that
+# the test process starts itself (postgres_cluster.hpp). One ctest entry per store, so that the
+# PostgreSQL tests share one server instead of running initdb per test.
+add_executable(job_store_contract_test ${SERVICE_TEST_DIR}/job_store_contract_test.cpp)
+target_link_libraries(job_store_contract_test PRIVATE fosls_service GTest::gtest_main)
+target_include_directories(job_store_contract_test PRIVATE ${SERVICE_TEST_DIR})
+foreach(store sqlite postgresql)
+  add_test(NAME JobStoreContract.${store}
+           COMMAND job_store_contract_test --gtest_filter=Stores/JobStoreContract.*/${store})
+  set_tests_properties(JobStoreContract.${store} PROPERTIES LABELS unit TIMEOUT 300)
+endforeach()
+
 # Integration: needs the real solver behind fosls-serve.
 add_executable(service_integration_test ${SERVICE_TEST_DIR}/service_integration_test.cpp)
 target_link_libraries(service_integration_test PRIVATE GTest::gtest_main PkgConfig::HTTPLIB
