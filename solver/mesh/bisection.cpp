@@ -16,8 +16,7 @@ BisectionState longest_edge_state(const Mesh& mesh, int generation) {
       const double lb = mesh.edge_length(mesh.triangle_edge(t, best));
       // A strict order on edges (length, then index): the neighbour across an edge that is
       // not its refinement edge has a longer one, so the closure cannot cycle.
-      if (lk > lb || (lk == lb && mesh.triangle_edge(t, k) > mesh.triangle_edge(t, best)))
-        best = k;
+      if (lk > lb || (lk == lb && mesh.triangle_edge(t, k) > mesh.triangle_edge(t, best))) best = k;
     }
     s.newest[t] = static_cast<signed char>(best);
   }
@@ -50,7 +49,8 @@ std::vector<char> closed_edge_marks(const Mesh& mesh, const BisectionState& stat
 Bisection refine_by_bisection(const Mesh& mesh, const BisectionState& state,
                               const std::vector<int>& marked) {
   const int nv = mesh.num_vertices(), ne = mesh.num_edges(), nt = mesh.num_triangles();
-  if (static_cast<int>(state.newest.size()) != nt || static_cast<int>(state.generation.size()) != nt)
+  if (static_cast<int>(state.newest.size()) != nt ||
+      static_cast<int>(state.generation.size()) != nt)
     throw std::invalid_argument("bisection: the state does not belong to this mesh");
   for (int t : marked)
     if (t < 0 || t >= nt)

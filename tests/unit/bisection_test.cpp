@@ -135,9 +135,10 @@ TEST(Bisection, NestedShapeRegularAndGroupsKeptOverManySteps) {
         const Eigen::Vector3d l = barycentric(mesh, p, b.fine.vertex(v));
         EXPECT_GE(l.minCoeff(), -1e-12) << "step " << step << " triangle " << t;
       }
-      EXPECT_NEAR(b.fine.triangle_area(t),
-                  mesh.triangle_area(p) / std::pow(2.0, b.state.generation[t] - state.generation[p]),
-                  1e-14);
+      EXPECT_NEAR(
+          b.fine.triangle_area(t),
+          mesh.triangle_area(p) / std::pow(2.0, b.state.generation[t] - state.generation[p]),
+          1e-14);
     }
     std::vector<int> next(b.fine.num_triangles());
     for (int t = 0; t < b.fine.num_triangles(); ++t) next[t] = ancestor[b.maps.triangle_parent[t]];
