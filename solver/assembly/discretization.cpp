@@ -66,7 +66,7 @@ std::vector<int> contact_strip(const FoslsSpace& space, int layers) {
   return strip;
 }
 
-LevelHierarchy Discretization::build_hierarchy() const {
+LevelHierarchy Discretization::build_level_hierarchy() const {
   LevelHierarchy h;
   h.levels.resize(num_levels());
   for (int j = 0; j < num_levels(); ++j) {

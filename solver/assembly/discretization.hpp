@@ -24,7 +24,7 @@ class Discretization {
   const AssembledProblem& problem() const { return problem_; }
   const ProblemData& data() const { return data_; }
   /// Builds the transfers, patches and contact links of all levels (not needed by pdas).
-  LevelHierarchy build_hierarchy() const;
+  LevelHierarchy build_level_hierarchy() const;
 
  private:
   MeshHierarchy meshes_;
@@ -34,7 +34,7 @@ class Discretization {
   AssembledProblem problem_;
 };
 
-/// Vertex patches of a space in its free numbering (method.md §4.1).
+/// Vertex patches of a space in its free numbering (docs/method.md §4.1).
 std::vector<std::vector<int>> vertex_patches(const FoslsSpace& space);
 
 /// Free DOFs of the triangles within `layers` layers of the contact boundary (the strip

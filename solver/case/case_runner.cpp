@@ -10,7 +10,7 @@
 #include "mesh/mesh_factory.hpp"
 #include "post/contact_output.hpp"
 #include "post/vtu_writer.hpp"
-#include "solvers/contact_solver.hpp"
+#include "solvers/solve_loop.hpp"
 
 namespace fosls {
 
@@ -169,7 +169,7 @@ RunOutput run_case(const CaseSpec& spec, const RunControl& control, const CaseLi
   if (auto errors = check_against_mesh(spec, coarse, limits); !errors.empty())
     throw CaseException(std::move(errors));
   ProblemData data = problem_data(spec, coarse);
-  MeshHierarchy meshes = build_hierarchy(std::move(coarse), spec.mesh.refinements);
+  MeshHierarchy meshes = build_mesh_hierarchy(std::move(coarse), spec.mesh.refinements);
   const auto t_mesh = Clock::now();
   Discretization disc(std::move(meshes), std::move(data));
   const auto& problem = disc.problem();
@@ -177,7 +177,7 @@ RunOutput run_case(const CaseSpec& spec, const RunControl& control, const CaseLi
     throw indefinite(spec.weights);
   const SolverOptions options = solver_options(spec.solver);
   const LevelHierarchy hierarchy =
-      options.method == SolverMethod::kPdas ? LevelHierarchy{} : disc.build_hierarchy();
+      options.method == SolverMethod::kPdas ? LevelHierarchy{} : disc.build_level_hierarchy();
   const auto t_assembly = Clock::now();
 
   SolverObserver observer;
@@ -187,7 +187,7 @@ RunOutput run_case(const CaseSpec& spec, const RunControl& control, const CaseLi
   Vector x;
   SolverReport report;
   try {
-    report = solve_contact(problem.qp, hierarchy, options, observer, x);
+    report = solve_box_qp(problem.qp, hierarchy, options, observer, x);
   } catch (const std::runtime_error& e) {
     // Positive definiteness failing inside a solver is the user's weights, not a crash.
     if (std::string(e.what()).find("positive definite") != std::string::npos)

@@ -25,7 +25,7 @@ struct RunControl {
 };
 
 struct RunOutput {
-  nlohmann::json result;  ///< architecture.md, "Result JSON"
+  nlohmann::json result;  ///< docs/result-format.md
   std::string vtu;        ///< VTK XML unstructured grid (empty unless want_vtu)
   bool cancelled = false;
 };

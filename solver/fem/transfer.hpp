@@ -1,5 +1,5 @@
 #pragma once
-// Level transfers P_j : X_{j−1} → X_j, the natural embeddings of method.md §4.
+// Level transfers P_j : X_{j−1} → X_j, the natural embeddings of docs/method.md §4.
 
 #include <Eigen/Sparse>
 

@@ -69,7 +69,7 @@ Refinement refine_uniformly(const Mesh& coarse) {
   return out;
 }
 
-MeshHierarchy build_hierarchy(Mesh coarse, int refinements) {
+MeshHierarchy build_mesh_hierarchy(Mesh coarse, int refinements) {
   if (refinements < 0) throw std::invalid_argument("refinements must be non-negative");
   MeshHierarchy h;
   h.meshes.push_back(std::move(coarse));

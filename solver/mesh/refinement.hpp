@@ -38,6 +38,6 @@ struct MeshHierarchy {
   const Mesh& finest() const { return meshes.back(); }
 };
 
-MeshHierarchy build_hierarchy(Mesh coarse, int refinements);
+MeshHierarchy build_mesh_hierarchy(Mesh coarse, int refinements);
 
 }  // namespace fosls

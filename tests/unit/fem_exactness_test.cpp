@@ -1,4 +1,4 @@
-// Exactness of P1, RT0 and the level transfers (issue: must show 1).
+// Exactness of P1, RT0 and the level transfers.
 #include <gtest/gtest.h>
 
 #include "fem/fosls_space.hpp"
@@ -68,7 +68,7 @@ TEST(Exactness, P1ReproducesLinearAndRt0ConstantFields) {
 }
 
 TEST(Exactness, ProlongationOfACoarseInterpolantIsTheFineInterpolant) {
-  MeshHierarchy h = build_hierarchy(perturbed_square(), 2);
+  MeshHierarchy h = build_mesh_hierarchy(perturbed_square(), 2);
   for (int j = 1; j < h.num_levels(); ++j) {
     FoslsSpace coarse(h.meshes[j - 1], neumann_everywhere(h.meshes[j - 1]));
     FoslsSpace fine(h.meshes[j], neumann_everywhere(h.meshes[j]));

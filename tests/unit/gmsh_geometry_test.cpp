@@ -89,7 +89,7 @@ TEST(GmshGeometry, SquareWithArcMeshesWithItsGroups) {
   EXPECT_LT(h_max, 0.5);
 
   // Refinement converges to the curved domain because new arc vertices sit on the circle.
-  const MeshHierarchy h = build_hierarchy(m, 2);
+  const MeshHierarchy h = build_mesh_hierarchy(m, 2);
   for (int e = 0; e < h.finest().num_edges(); ++e) {
     if (h.finest().edge_curve(e) < 0) continue;
     for (int v : h.finest().edge(e))
