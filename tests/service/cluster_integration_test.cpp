@@ -96,6 +96,20 @@ class Program {
   void stop() { signal_and_wait(SIGTERM); }
   const std::string& log_path() const { return log_; }
   pid_t pid() const { return pid_; }
+  /// CPU time (user + system, all threads) the running program has used so far.
+  double cpu_seconds() const {
+    std::ifstream in("/proc/" + std::to_string(pid_) + "/stat");
+    std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    // Fields after the command name (which is in parentheses and may hold spaces): utime and
+    // stime are fields 14 and 15 of the line, 12th and 13th after the ')'.
+    std::istringstream rest(text.substr(text.rfind(')') + 2));
+    std::string field;
+    double ticks = 0;
+    for (int i = 1; i <= 13 && rest >> field; ++i) {
+      if (i >= 12) ticks += std::stod(field);
+    }
+    return ticks / static_cast<double>(sysconf(_SC_CLK_TCK));
+  }
 
  private:
   void signal_and_wait(int sig) {
@@ -143,6 +157,12 @@ class Cluster {
 
   void start_workers() {
     for (auto& w : workers_) w->start();
+  }
+  /// CPU seconds used by the worker processes so far.
+  double worker_cpu_seconds() const {
+    double total = 0;
+    for (const auto& w : workers_) total += w->cpu_seconds();
+    return total;
   }
   Program& api() { return *api_; }
   Program& worker(int i) { return *workers_[static_cast<std::size_t>(i)]; }
@@ -404,8 +424,8 @@ TEST(Cluster, DISABLED_Throughput) {
   const int n = env_int("FOSLS_CLUSTER_JOBS", 120);
   const int rounds = env_int("FOSLS_CLUSTER_ROUNDS", 1);
   std::printf(
-      "\n| round | worker processes | jobs | seconds | jobs per minute | load before |\n"
-      "|---:|---:|---:|---:|---:|---:|\n");
+      "\n| round | worker processes | jobs | seconds | jobs per minute | worker CPU s per job "
+      "| load before |\n|---:|---:|---:|---:|---:|---:|---:|\n");
   for (int round = 1; round <= rounds; ++round) {
     for (int workers : {1, 2, 4}) {
       Cluster cluster(workers, 30.0);
@@ -415,9 +435,10 @@ TEST(Cluster, DISABLED_Throughput) {
       cluster.start_workers();
       ASSERT_TRUE(cluster.wait_all_finished(n, 900));
       const double seconds = std::chrono::duration<double>(Clock::now() - started).count();
+      const double cpu = cluster.worker_cpu_seconds();
       EXPECT_EQ(sql_count(cluster.url(), "SELECT count(*) FROM jobs WHERE state = 'succeeded'"), n);
-      std::printf("| %d | %d | %d | %.1f | %.0f | %s |\n", round, workers, n, seconds,
-                  60.0 * n / seconds, load.c_str());
+      std::printf("| %d | %d | %d | %.1f | %.0f | %.3f | %s |\n", round, workers, n, seconds,
+                  60.0 * n / seconds, cpu / n, load.c_str());
       std::fflush(stdout);
     }
   }
