@@ -168,6 +168,7 @@ class Cluster {
   Program& worker(int i) { return *workers_[static_cast<std::size_t>(i)]; }
   int port() const { return port_; }
   const std::string& url() const { return url_; }
+  std::string log_dir() const { return dir_.path().string(); }
 
   /// Waits until the API answers /healthz.
   void wait_healthy() {
@@ -252,11 +253,17 @@ TEST(Cluster, CrashesOfWorkersAndTheApiLoseNothingAndStoreNothingTwice) {
   std::vector<std::int64_t> ids;
   std::thread posting([&] { ids = post_jobs(cluster, n, 8); });
   // Five SIGKILLs of a worker (restarted each time), one of the API (restarted on the same
-  // port), spread over the run.
+  // port).
   std::vector<std::string> chaos_log;
   {
     for (int k = 0; k < 6; ++k) {
-      std::this_thread::sleep_for(std::chrono::milliseconds(1500));
+      // Spread over the run: the k-th event once (k+1)/8 of the jobs have succeeded.
+      const auto wait_until = Clock::now() + std::chrono::seconds(60);
+      while (sql_count(cluster.url(), "SELECT count(*) FROM jobs WHERE state = 'succeeded'") <
+                 (k + 1) * n / 8 &&
+             Clock::now() < wait_until) {
+        std::this_thread::sleep_for(std::chrono::milliseconds(20));
+      }
       if (k == 2) {
         cluster.api().kill_hard();
         chaos_log.push_back("SIGKILL api");
@@ -317,6 +324,40 @@ TEST(Cluster, CrashesOfWorkersAndTheApiLoseNothingAndStoreNothingTwice) {
   EXPECT_EQ(twice, 0);
   // A killed worker's last success may not have reached its log; the database says it is there.
   EXPECT_GE(static_cast<int>(stored_successes.size()), n - 5);
+
+  // Any API process serves any job: a second one, started now, lists them all and serves
+  // the results and VTU that workers in other processes stored.
+  const int second_port = testing::free_port();
+  Program second({FOSLS_SERVE_PATH, "--store", cluster.url(), "--workers", "0", "--host",
+                  "127.0.0.1", "--port", std::to_string(second_port)},
+                 cluster.log_dir() + "/api2.log");
+  second.start();
+  httplib::Client cli("127.0.0.1", second_port);
+  std::size_t listed = 0;
+  for (int tries = 0; tries < 600 && listed == 0; ++tries) {
+    std::string token;
+    listed = 0;
+    do {
+      auto res = cli.Get("/v1/jobs?state=succeeded&page_size=100" +
+                         (token.empty() ? "" : "&page_token=" + token));
+      if (!res || res->status != 200) break;
+      const json page = json::parse(res->body);
+      listed += page["jobs"].size();
+      token = page["next_page_token"].is_null() ? "" : page["next_page_token"].get<std::string>();
+    } while (!token.empty());
+    if (listed == 0) std::this_thread::sleep_for(std::chrono::milliseconds(50));
+  }
+  EXPECT_EQ(listed, static_cast<std::size_t>(n));
+  for (std::size_t k : {std::size_t{0}, ids.size() / 2, ids.size() - 1}) {
+    const std::string job = "/v1/jobs/" + std::to_string(ids[k]);
+    auto result = cli.Get(job + "/result");
+    ASSERT_TRUE(result && result->status == 200);
+    EXPECT_TRUE(json::parse(result->body).contains("contact"));
+    auto vtu = cli.Get(job + "/solution.vtu");
+    ASSERT_TRUE(vtu && vtu->status == 200);
+    EXPECT_NE(vtu->body.find("<VTKFile"), std::string::npos);
+  }
+  second.stop();
 
   // The table: how many jobs needed how many attempts.
   const auto table =
