@@ -40,6 +40,7 @@ struct ServeOptions {
   std::size_t max_queue = 1000;
   std::size_t max_body_bytes = 8u << 20;
   double retention_hours = 168;
+  bool admit_over_budget = false;  // queue cases estimated above --max-job-memory anyway
 };
 
 std::string url_host(const std::string& host) {
@@ -61,13 +62,15 @@ int serve(const ServeOptions& o, const sigset_t& stop_signals) {
   log_recovery(log, opened.recovered, opened.recovery_reason);
 
   Metrics metrics;
-  WorkerPool pool(store, service_job_runner(), log, metrics, o.worker.pool_options());
+  WorkerPool pool(store, service_job_runner(o.worker), log, metrics, o.worker.pool_options());
 
   HttpApiOptions api_options;
   api_options.max_queue = o.max_queue;
   api_options.max_body_bytes = o.max_body_bytes;
   api_options.web_root = o.web_root;
-  HttpApi api(store, pool, validate_submitted_case, metrics, log, api_options);
+  HttpApi api(store, pool,
+              submitted_case_validator(o.worker.job_memory_bytes(), !o.admit_over_budget), metrics,
+              log, api_options);
 
   httplib::Server server;
   // The Debian library is compiled: CPPHTTPLIB_THREAD_POOL_COUNT has no effect, only this.
@@ -157,6 +160,9 @@ int main(int argc, char** argv) {
                  "Delete finished jobs older than this (0 keeps them)")
       ->check(CLI::Range(0.0, 1e6))
       ->capture_default_str();
+  app.add_flag("--admit-over-budget", o.admit_over_budget,
+               "Queue cases estimated above --max-job-memory anyway (they run under the limit "
+               "and fail if they exceed it)");
   db_option->excludes(app.get_option("--store"));
   CLI11_PARSE(app, argc, argv);
   if (!o.db.empty()) o.worker.store = "sqlite:" + o.db;
