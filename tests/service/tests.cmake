@@ -34,3 +34,16 @@ foreach(name service_integration_test service_isolation_test)
   add_dependencies(${name} fosls-serve)
   gtest_discover_tests(${name} PROPERTIES LABELS integration TIMEOUT 240 DISCOVERY_TIMEOUT 60)
 endforeach()
+
+# Several processes on one PostgreSQL database (a throwaway server the test starts): one
+# API-only fosls-serve and three fosls-worker, with workers and the API killed during the run.
+add_executable(cluster_integration_test ${SERVICE_TEST_DIR}/cluster_integration_test.cpp)
+target_link_libraries(cluster_integration_test PRIVATE fosls_service GTest::gtest_main)
+target_include_directories(cluster_integration_test PRIVATE ${SERVICE_TEST_DIR})
+target_compile_definitions(cluster_integration_test PRIVATE
+  FOSLS_SERVE_PATH="$<TARGET_FILE:fosls-serve>"
+  FOSLS_WORKER_PATH="$<TARGET_FILE:fosls-worker>"
+  FOSLS_EXAMPLES_DIR="${PROJECT_SOURCE_DIR}/solver/examples")
+add_dependencies(cluster_integration_test fosls-serve fosls-worker)
+gtest_discover_tests(cluster_integration_test PROPERTIES LABELS integration TIMEOUT 400
+                     DISCOVERY_TIMEOUT 60)
