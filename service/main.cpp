@@ -19,6 +19,7 @@
 #include <thread>
 
 #include "case_job_runner.hpp"
+#include "elastic_thread_pool.hpp"
 #include "event_log.hpp"
 #include "http_api.hpp"
 #include "lease_reaper.hpp"
@@ -81,7 +82,13 @@ int serve(const ServeOptions& o, const sigset_t& stop_signals) {
   httplib::Server server;
   // The Debian library is compiled: CPPHTTPLIB_THREAD_POOL_COUNT has no effect, only this.
   const int http_threads = o.http_threads;
-  server.new_task_queue = [http_threads] { return new httplib::ThreadPool(http_threads); };
+  // Grows up to 16 times that while every thread holds a connection, so slow or silent
+  // clients cannot keep /healthz and everyone else waiting; a silent one is dropped after
+  // the read timeout.
+  server.new_task_queue = [http_threads] {
+    return new ElasticThreadPool(http_threads, 16 * http_threads);
+  };
+  server.set_read_timeout(2);
   server.set_keep_alive_timeout(2);  // idle keep-alive connections delay shutdown this long
   server.set_keep_alive_max_count(1000);
   api.install(server);
