@@ -8,19 +8,6 @@ namespace fosls::service {
 
 namespace {
 
-std::string escaped(const std::string& key) {
-  std::string out;
-  for (char c : key) {
-    if (c == '~')
-      out += "~0";
-    else if (c == '/')
-      out += "~1";
-    else
-      out += c;
-  }
-  return out;
-}
-
 /// SAX pass that stops at the first repeated key, tracking where it is.
 class DuplicateKeyFinder : public nlohmann::json_sax<nlohmann::json> {
  public:
@@ -40,7 +27,9 @@ class DuplicateKeyFinder : public nlohmann::json_sax<nlohmann::json> {
   bool key(string_t& k) override {
     Level& level = levels_.back();
     if (!level.keys.insert(k).second) {
-      duplicate = path_of_parents() + "/" + escaped(k);
+      nlohmann::json::json_pointer pointer = path_of_parents();
+      pointer.push_back(k);
+      duplicate = pointer.to_string();  // escapes ~ and /
       return false;
     }
     level.key = k;
@@ -77,10 +66,10 @@ class DuplicateKeyFinder : public nlohmann::json_sax<nlohmann::json> {
   }
 
   /// The pointer of the object being read (all levels but the innermost one's key).
-  std::string path_of_parents() const {
-    std::string p;
+  nlohmann::json::json_pointer path_of_parents() const {
+    nlohmann::json::json_pointer p;
     for (std::size_t i = 0; i + 1 < levels_.size(); ++i)
-      p += "/" + (levels_[i].object ? escaped(levels_[i].key) : std::to_string(levels_[i].index));
+      p.push_back(levels_[i].object ? levels_[i].key : std::to_string(levels_[i].index));
     return p;
   }
 
