@@ -2,6 +2,8 @@
 
 #include <signal.h>
 
+#include <cstdio>
+
 #include "job_process_protocol.hpp"
 #include "memory_budget.hpp"
 #include "process/child_process.hpp"
@@ -37,8 +39,13 @@ JobRunOutcome outcome_of(const ChildResult& r, const JobProcessReader& reader,
       o.kind = JobRunOutcome::Kind::kCancelled;
       return o;
     }
-    case ChildResult::End::kTimedOut:
-      return failed("the solve did not finish in its time limit");
+    case ChildResult::End::kTimedOut: {
+      char limit[32];
+      std::snprintf(limit, sizeof limit, "%g", options.time_limit.count() / 1000.0);
+      return failed(std::string("the solve did not finish within ") + limit +
+                    " s (the service's --max-job-seconds); use fewer refinements, a looser "
+                    "solver.tolerance or fewer solver.max_iterations");
+    }
     case ChildResult::End::kOutputTooLarge:
       return failed("the result is too large to be stored");
     case ChildResult::End::kSignaled:
@@ -73,6 +80,7 @@ JobRunner process_job_runner(ProcessJobRunnerOptions options) {
     child.input = case_json.dump(-1, ' ', false, nlohmann::json::error_handler_t::replace);
     child.limits.address_space_bytes = options.memory_bytes + kSolveAddressSpaceHeadroom;
     child.limits.max_output_bytes = std::size_t{4} << 30;
+    child.limits.wall = options.time_limit;
     child.cancel = &context.cancel;
     child.on_output = [&reader](std::string_view data) { reader.feed(data); };
     const std::string threads = std::to_string(options.threads);

@@ -4,6 +4,7 @@
 // shutdown kill the process at once, in any stage (meshing, assembly, set-up, solving); the
 // memory of every job returns to the system when its process exits.
 
+#include <chrono>
 #include <cstddef>
 #include <string>
 
@@ -22,6 +23,8 @@ struct ProcessJobRunnerOptions {
   std::size_t memory_bytes = std::size_t{2} << 30;
   /// OpenMP and OpenBLAS threads of each solve process.
   int threads = 1;
+  /// Wall-clock time a job may run (--max-job-seconds); zero: no limit.
+  std::chrono::milliseconds time_limit{0};
   /// The solve program; empty: fosls-solve-job beside this program (FOSLS_SOLVE_JOB overrides).
   std::string program;
 };

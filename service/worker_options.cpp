@@ -66,6 +66,11 @@ void add_worker_options(CLI::App& app, WorkerOptions& o, int min_workers) {
         return parse_byte_size(text) ? std::string()
                                      : "expected a size such as 512M or 2G, got '" + text + "'";
       });
+  app.add_option("--max-job-seconds", o.max_job_seconds,
+                 "Wall-clock time one job may run (0: no limit); a solve still running then is "
+                 "killed and its job fails")
+      ->check(CLI::Range(0.0, 1e7))
+      ->capture_default_str();
 }
 
 JobRunner service_job_runner(const WorkerOptions& options) {
@@ -73,6 +78,7 @@ JobRunner service_job_runner(const WorkerOptions& options) {
   runner.memory_bytes = options.job_memory_bytes();
   const int cores = static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
   runner.threads = std::max(1, cores / std::max(1, options.workers));
+  runner.time_limit = seconds_to_ms(options.max_job_seconds);
   return process_job_runner(runner);
 }
 

@@ -22,6 +22,8 @@ struct WorkerOptions {
   double heartbeat_seconds = 1;
   /// --max-job-memory as written ("2G"); empty: default_job_memory(workers).
   std::string max_job_memory;
+  /// --max-job-seconds: wall-clock time one job may run, 0 for no limit.
+  double max_job_seconds = 0;
 
   /// The memory each job may use, in bytes.
   std::size_t job_memory_bytes() const;

@@ -255,6 +255,17 @@ TEST(ServiceIsolation, SigtermDuringAssemblyEndsTheServerAndRequeuesTheJob) {
   svc.wait_for(id, testing::is_finished);
 }
 
+TEST(ServiceIsolation, AJobOverTheServiceTimeLimitFails) {
+  Service svc(1, {"--max-job-seconds", "2"});
+  const auto id = svc.submit(testing::endless_case());
+  const json job = svc.wait_state(id, "failed", 60);
+  const std::string error = job["error"];
+  std::printf("failed: %s\n", error.c_str());
+  EXPECT_NE(error.find("did not finish within 2 s"), std::string::npos) << error;
+  EXPECT_NE(error.find("--max-job-seconds"), std::string::npos) << error;
+  svc.wait_state(svc.submit(testing::small_case(5)), "succeeded");
+}
+
 /// A loopback connection that sent part of a request's headers and then nothing.
 int slow_header_connection(int port) {
   const int fd = ::socket(AF_INET, SOCK_STREAM, 0);
