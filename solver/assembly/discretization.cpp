@@ -93,9 +93,25 @@ std::vector<std::pair<int, double>> flux_move(const FoslsSpace& space, const Ref
 
 }  // namespace
 
+int Discretization::coarsest_solver_level(double max_turn) const {
+  for (int j = 0; j + 1 < num_levels(); ++j) {
+    const FoslsSpace& space = *spaces_[j];
+    const Mesh& mesh = space.mesh();
+    double turn = 0.0;
+    for (int e = 0; e < mesh.num_edges(); ++e) {
+      const int c = mesh.edge_curve(e);
+      if (c < 0 || !space.is_contact_edge(e)) continue;
+      const double ratio = 0.5 * mesh.edge_length(e) / mesh.curves()[c].radius;
+      turn = std::max(turn, 2.0 * std::asin(std::min(1.0, ratio)));
+    }
+    if (turn <= max_turn) return j;
+  }
+  return num_levels() - 1;
+}
+
 LevelHierarchy Discretization::build_hierarchy() const {
   LevelHierarchy h;
-  const int coarsest = 0;
+  const int coarsest = coarsest_solver_level();
   h.levels.resize(num_levels() - coarsest);
   for (int j = coarsest; j < num_levels(); ++j) {
     const FoslsSpace& fine = *spaces_[j];
