@@ -11,8 +11,11 @@ build_packages=(
   build-essential cmake pkg-config ccache
   libeigen3-dev libsuitesparse-dev libcpp-httplib-dev nlohmann-json3-dev libsqlite3-dev
   libgmsh-dev libmuparser-dev libcli11-dev libgtest-dev libopenblas-dev
+  libpq-dev zlib1g-dev
 )
 tool_packages=(clang-format curl sqlite3 nodejs npm chromium wrk python3 python3-matplotlib python3-numpy)
+# The PostgreSQL job store's tests start a throwaway server (initdb, postgres).
+tool_packages+=(postgresql)
 
 check_only=0
 case "${1:-}" in

@@ -1,5 +1,5 @@
 #pragma once
-// The REST API of the job service (architecture.md, "HTTP API") on a cpp-httplib server:
+// The REST API of the job service (docs/service.md, "API") on a cpp-httplib server:
 // routes, body limits, problem+json errors, request logging and metrics.
 
 #include <httplib.h>

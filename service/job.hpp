@@ -49,7 +49,7 @@ struct Job {
   bool cancel_requested = false;               ///< cancel asked while it was running
 };
 
-/// The job resource of the HTTP API (architecture.md, "HTTP API").
+/// The job resource of the HTTP API (docs/service.md, "API").
 nlohmann::json job_to_json(const Job& job);
 
 /// Current wall-clock time as Unix milliseconds.

@@ -1,8 +1,10 @@
 #pragma once
 // The job store interface: everything the HTTP layer and the workers need from persistence.
-// SQLite implements it today (sqlite_job_store.hpp); a PostgreSQL store with
-// `FOR UPDATE SKIP LOCKED` could implement it to let several hosts share one queue.
+// Two implementations share one SQL text (sql_job_store.hpp): SQLite for one process
+// (sqlite_job_store.hpp) and PostgreSQL for several API and worker processes on any hosts
+// (postgres_job_store.hpp). docs/service.md, "Store", describes the contract.
 
+#include <chrono>
 #include <cstddef>
 #include <cstdint>
 #include <map>
@@ -41,10 +43,34 @@ struct SubmitOutcome {
   std::optional<Job> job;  ///< set except for kQueueFull
 };
 
+/// Who may finish a running attempt: the attempt number of the claim and the worker that made
+/// it. Every call that changes a running job carries it; a call from anyone else (a worker
+/// whose lease expired and whose job was claimed again, or failed) changes nothing.
+struct Lease {
+  std::int64_t job_id = 0;
+  int attempt = 0;
+  std::string worker_id;
+};
+
+/// What a worker asks for when it claims: its identity and how long the lease lasts unless
+/// renewed (renew_lease).
+struct ClaimRequest {
+  std::string worker_id;
+  std::chrono::milliseconds lease_duration{30000};
+};
+
 /// A job a worker has claimed, with the case to solve.
 struct ClaimedJob {
   Job job;  ///< state running, attempts already counted
   std::string case_json;
+  Lease lease;
+};
+
+/// What renewing a lease found.
+enum class LeaseStatus {
+  kHeld,             ///< still this worker's attempt; the expiry moved on
+  kCancelRequested,  ///< renewed, and its user asked to cancel: stop the solve
+  kLost,             ///< no longer this worker's attempt: stop, the outcome would be refused
 };
 
 /// Keyset pagination over jobs, newest first.
@@ -73,7 +99,8 @@ struct CancelOutcome {
 
 enum class DeleteOutcome { kDeleted, kNotFinished, kNotFound };
 
-/// What start-up recovery did with jobs a previous process left running.
+/// What recovery did with running jobs whose worker is gone (start-up recovery or expired
+/// leases).
 struct RecoveryReport {
   std::vector<std::int64_t> requeued;
   std::vector<std::int64_t> failed;     ///< started max_attempts times already
@@ -81,7 +108,7 @@ struct RecoveryReport {
 };
 
 /// Persistent job queue and results. Implementations must be safe to call from many threads.
-/// Completion calls carry the attempt number from the claim so that a stale worker can never
+/// Calls on a running job carry the Lease from its claim, so that a stale worker can never
 /// overwrite a newer attempt (they return false and change nothing in that case).
 class JobStore {
  public:
@@ -107,26 +134,39 @@ class JobStore {
   /// Removes a finished job with its result.
   virtual DeleteOutcome remove(std::int64_t id) = 0;
 
-  /// Moves the oldest queued job to running (attempts + 1) and returns it.
-  virtual std::optional<ClaimedJob> claim_next() = 0;
+  /// Moves the oldest queued job to running (attempts + 1) under a lease for the requesting
+  /// worker and returns it. Concurrent claims, from any number of processes, never return the
+  /// same attempt twice.
+  virtual std::optional<ClaimedJob> claim_next(const ClaimRequest& request) = 0;
+
+  /// Heartbeat of a running attempt: extends its lease to now + duration and reports whether a
+  /// cancel was requested, or that the attempt is no longer this worker's.
+  virtual LeaseStatus renew_lease(const Lease& lease, std::chrono::milliseconds duration) = 0;
 
   /// Records progress of a running attempt (no effect once it has finished).
-  virtual void update_progress(std::int64_t id, int attempt, const JobProgress& progress) = 0;
+  virtual void update_progress(const Lease& lease, const JobProgress& progress) = 0;
 
   /// Stores the result and VTU of a running attempt and marks it succeeded, once.
-  virtual bool complete_succeeded(std::int64_t id, int attempt, const std::string& result_json,
+  virtual bool complete_succeeded(const Lease& lease, const std::string& result_json,
                                   const std::string& vtu) = 0;
 
-  virtual bool complete_failed(std::int64_t id, int attempt, const std::string& error) = 0;
+  virtual bool complete_failed(const Lease& lease, const std::string& error) = 0;
 
-  virtual bool complete_cancelled(std::int64_t id, int attempt) = 0;
+  virtual bool complete_cancelled(const Lease& lease) = 0;
 
   /// Puts a running attempt back in the queue without counting it (graceful shutdown); a job
   /// whose cancel was requested becomes cancelled instead.
-  virtual bool requeue(std::int64_t id, int attempt) = 0;
+  virtual bool requeue(const Lease& lease) = 0;
 
-  /// Start-up recovery: jobs left running by a crashed process go back to the queue, or fail
-  /// once they have been started max_attempts times.
+  /// Lease expiry, safe to call from any process at any time: running jobs whose lease expired
+  /// (their worker was killed or its host lost) go back to the queue with the attempt counted,
+  /// are failed once they have been started max_attempts times, or are cancelled when a cancel
+  /// was requested.
+  virtual RecoveryReport requeue_expired_leases(int max_attempts) = 0;
+
+  /// Start-up recovery of the sole owner of a store (fosls-serve on its SQLite file): every
+  /// running job is treated as expired, whatever its lease says, since no other process can be
+  /// working on it.
   virtual RecoveryReport recover_interrupted(int max_attempts) = 0;
 
   /// Retention: deletes finished jobs that finished before the given time; returns how many.

@@ -1,32 +1,31 @@
-// fosls-serve: the HTTP job service. Queues contact cases in SQLite and solves them on
-// in-process worker threads (docs/service.md).
+// fosls-serve: the HTTP job service. Queues contact cases in a job store (SQLite, or
+// PostgreSQL shared with other processes) and solves them on in-process worker threads
+// (docs/service.md).
 //
 //   fosls-serve                               # http://127.0.0.1:8080, ./data/fosls.db
 //   fosls-serve --port 0 --db /tmp/jobs.db    # a free port, printed on stdout
 //   fosls-serve --host 0.0.0.0 --workers 2    # in a container
+//   fosls-serve --store postgresql://fosls@db/fosls --workers 0   # API only; fosls-worker solves
 
-#include <fcntl.h>
 #include <httplib.h>
 #include <signal.h>
-#include <sys/file.h>
 #include <unistd.h>
 
 #include <CLI/CLI.hpp>
 #include <algorithm>
 #include <atomic>
 #include <chrono>
-#include <csignal>
-#include <cstdlib>
-#include <filesystem>
 #include <iostream>
 #include <thread>
 
 #include "case_job_runner.hpp"
 #include "event_log.hpp"
 #include "http_api.hpp"
+#include "lease_reaper.hpp"
 #include "metrics.hpp"
 #include "retention_sweeper.hpp"
-#include "sqlite_job_store.hpp"
+#include "store_url.hpp"
+#include "worker_options.hpp"
 #include "worker_pool.hpp"
 
 namespace {
@@ -34,14 +33,13 @@ namespace {
 struct ServeOptions {
   std::string host = "127.0.0.1";
   int port = 8080;
-  std::string db = "data/fosls.db";
-  int workers = static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
+  fosls::service::WorkerOptions worker;  // --store, --workers, leases
+  std::string db;                        // --db PATH: synonym of --store sqlite:PATH
   int http_threads = 16;
   std::string web_root = FOSLS_SOURCE_DIR "/web";
   std::size_t max_queue = 1000;
   std::size_t max_body_bytes = 8u << 20;
   double retention_hours = 168;
-  int max_attempts = 3;
 };
 
 std::string url_host(const std::string& host) {
@@ -52,40 +50,24 @@ int serve(const ServeOptions& o, const sigset_t& stop_signals) {
   using namespace fosls::service;
   EventLog log(std::cerr);
 
-  const std::filesystem::path db_path(o.db);
-  if (db_path.has_parent_path()) std::filesystem::create_directories(db_path.parent_path());
-  // Start-up recovery assumes this process owns every running job of the database; a
-  // second server on the same file would re-queue the first one's jobs. The kernel drops
-  // the lock when the process dies, also on kill -9. The descriptor stays open until exit.
-  const std::string lock_path = o.db + ".lock";
-  const int lock_fd = open(lock_path.c_str(), O_RDWR | O_CREAT | O_CLOEXEC, 0644);
-  if (lock_fd < 0 || flock(lock_fd, LOCK_EX | LOCK_NB) != 0) {
-    std::cerr << "fosls-serve: another fosls-serve is using " << o.db << " (lock " << lock_path
-              << ")\n";
+  OpenedStore opened;
+  try {
+    opened = open_store(parse_store_url(o.worker.store), "fosls-serve", o.worker.max_attempts);
+  } catch (const std::exception& e) {
+    std::cerr << "fosls-serve: " << e.what() << "\n";
     return 1;
   }
-  SqliteJobStore store(o.db);
-  const RecoveryReport recovery = store.recover_interrupted(o.max_attempts);
-  for (auto id : recovery.requeued) {
-    log.write("job_transition", {{"job_id", id},
-                                 {"from", "running"},
-                                 {"to", "queued"},
-                                 {"reason", "recovered after the previous process stopped"}});
-  }
-  for (auto id : recovery.failed) {
-    log.write("job_transition", {{"job_id", id},
-                                 {"from", "running"},
-                                 {"to", "failed"},
-                                 {"reason", "max attempts reached"}});
-  }
-  for (auto id : recovery.cancelled) {
-    log.write("job_transition", {{"job_id", id}, {"from", "running"}, {"to", "cancelled"}});
+  JobStore& store = *opened.store;
+  log_recovery(log, opened.recovered, opened.recovery_reason);
+  if (o.worker.workers == 0 && opened.location.kind == StoreLocation::Kind::kSqlite) {
+    log.write("warning", {{"message",
+                           "--workers 0 on a sqlite: store: nothing will solve the jobs queued "
+                           "here (a SQLite file belongs to one process; fosls-worker needs "
+                           "--store postgresql://…)"}});
   }
 
   Metrics metrics;
-  WorkerPoolOptions pool_options;
-  pool_options.workers = o.workers;
-  WorkerPool pool(store, run_case_job, log, metrics, pool_options);
+  WorkerPool pool(store, service_job_runner(), log, metrics, o.worker.pool_options());
 
   HttpApiOptions api_options;
   api_options.max_queue = o.max_queue;
@@ -111,11 +93,11 @@ int serve(const ServeOptions& o, const sigset_t& stop_signals) {
   std::cout << "listening on http://" << url_host(o.host) << ":" << port << std::endl;
   log.write("started", {{"host", o.host},
                         {"port", port},
-                        {"db", o.db},
+                        {"store", redacted(opened.location)},
                         {"workers", pool.size()},
                         {"http_threads", http_threads},
                         {"web_root", o.web_root},
-                        {"recovered", recovery.requeued.size()}});
+                        {"recovered", opened.recovered.requeued.size()}});
 
   pool.start();
   std::unique_ptr<RetentionSweeper> sweeper;
@@ -127,6 +109,11 @@ int serve(const ServeOptions& o, const sigset_t& stop_signals) {
     sweeper = std::make_unique<RetentionSweeper>(store, log, retention, interval);
     sweeper->start();
   }
+  // Every process on a shared store takes back the jobs of workers that died (the SQLite
+  // owner recovered its file's running jobs above; its own leases only expire if a worker
+  // thread stops renewing them).
+  LeaseReaper reaper(store, log, o.worker.max_attempts, o.worker.reaper_interval());
+  reaper.start();
 
   std::atomic<bool> stopping{false};
   std::thread http([&] {
@@ -135,15 +122,8 @@ int serve(const ServeOptions& o, const sigset_t& stop_signals) {
     if (!stopping.load()) kill(getpid(), SIGTERM);
   });
 
-  int signal_number = 0;
-  sigwait(&stop_signals, &signal_number);
+  const int signal_number = wait_for_stop_signal(stop_signals);
   log.write("stopping", {{"signal", signal_number}});
-  // A second signal means "now": running jobs are recovered at the next start.
-  std::thread([stop_signals] {
-    int again = 0;
-    sigwait(&stop_signals, &again);
-    std::_Exit(128 + again);
-  }).detach();
 
   stopping = true;
   pool.begin_shutdown();  // running solves see their cancel flag and go back to the queue
@@ -151,6 +131,7 @@ int serve(const ServeOptions& o, const sigset_t& stop_signals) {
   http.join();
   pool.join();
   if (sweeper) sweeper->stop();
+  reaper.stop();
   log.write("stopped", {{"busy_workers", pool.busy()}});
   return 0;
 }
@@ -159,16 +140,14 @@ int serve(const ServeOptions& o, const sigset_t& stop_signals) {
 
 int main(int argc, char** argv) {
   ServeOptions o;
+  o.worker.workers = static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
   CLI::App app{"fosls-serve: HTTP job service for FOSLS contact cases (docs/service.md)"};
   app.add_option("--host", o.host, "Address to listen on")->capture_default_str();
   app.add_option("--port", o.port, "TCP port; 0 picks a free port (printed on start)")
       ->check(CLI::Range(0, 65535))
       ->capture_default_str();
-  app.add_option("--db", o.db, "SQLite database file (its folder is created)")
-      ->capture_default_str();
-  app.add_option("--workers", o.workers, "Solver threads (default: hardware cores)")
-      ->check(CLI::Range(1, 256))
-      ->capture_default_str();
+  fosls::service::add_worker_options(app, o.worker, 0);
+  auto* db_option = app.add_option("--db", o.db, "SQLite database file: --store sqlite:PATH");
   app.add_option("--http-threads", o.http_threads, "Threads serving HTTP connections")
       ->check(CLI::Range(1, 1024))
       ->capture_default_str();
@@ -184,20 +163,17 @@ int main(int argc, char** argv) {
                  "Delete finished jobs older than this (0 keeps them)")
       ->check(CLI::Range(0.0, 1e6))
       ->capture_default_str();
-  app.add_option("--max-attempts", o.max_attempts,
-                 "Starts after which a job interrupted by a crash is failed")
-      ->check(CLI::Range(1, 100))
-      ->capture_default_str();
+  db_option->excludes(app.get_option("--store"));
   CLI11_PARSE(app, argc, argv);
+  if (const std::string problem = o.worker.problem(); !problem.empty()) {
+    std::cerr << "fosls-serve: " << problem << "\n";
+    return 2;
+  }
+  if (!o.db.empty()) o.worker.store = "sqlite:" + o.db;
 
-  // Block the stop signals in every thread (threads inherit the mask) and take them with
-  // sigwait, so shutdown runs as ordinary code instead of inside a signal handler.
-  sigset_t stop_signals;
-  sigemptyset(&stop_signals);
-  sigaddset(&stop_signals, SIGINT);
-  sigaddset(&stop_signals, SIGTERM);
-  pthread_sigmask(SIG_BLOCK, &stop_signals, nullptr);
-  std::signal(SIGPIPE, SIG_IGN);  // a client closing early must not kill the process
+  // Blocked in every thread (threads inherit the mask) and taken with sigwait, so shutdown
+  // runs as ordinary code instead of inside a signal handler.
+  const sigset_t stop_signals = fosls::service::block_stop_signals();
 
   try {
     return serve(o, stop_signals);

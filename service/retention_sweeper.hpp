@@ -2,12 +2,10 @@
 // Periodic deletion of finished jobs older than the retention period (--retention-hours).
 
 #include <chrono>
-#include <condition_variable>
-#include <mutex>
-#include <thread>
 
 #include "event_log.hpp"
 #include "job_store.hpp"
+#include "periodic_task.hpp"
 
 namespace fosls::service {
 
@@ -18,12 +16,9 @@ class RetentionSweeper {
   /// `store` and `log` must outlive the sweeper.
   RetentionSweeper(JobStore& store, EventLog& log, std::chrono::milliseconds retention,
                    std::chrono::milliseconds interval);
-  ~RetentionSweeper();
-  RetentionSweeper(const RetentionSweeper&) = delete;
-  RetentionSweeper& operator=(const RetentionSweeper&) = delete;
 
-  void start();
-  void stop();
+  void start() { task_.start(); }
+  void stop() { task_.stop(); }
 
   /// One pass now; returns how many jobs were deleted.
   int sweep_once();
@@ -32,11 +27,7 @@ class RetentionSweeper {
   JobStore& store_;
   EventLog& log_;
   std::chrono::milliseconds retention_;
-  std::chrono::milliseconds interval_;
-  std::mutex mutex_;
-  std::condition_variable wake_;
-  bool stopping_ = false;
-  std::thread thread_;
+  PeriodicTask task_;  ///< last: stopped before the members it uses are destroyed
 };
 
 }  // namespace fosls::service

@@ -1,5 +1,6 @@
 #include "sqlite_connection.hpp"
 
+#include <cmath>
 #include <string>
 
 #include "job_store.hpp"
@@ -17,38 +18,107 @@ SqliteConnection::SqliteConnection(const std::string& path, int busy_timeout_ms)
   if (rc != SQLITE_OK) fail(rc, "opening database '" + path + "'");
   sqlite3_extended_result_codes(db_.get(), 1);
   sqlite3_busy_timeout(db_.get(), busy_timeout_ms);
+  // Before WAL: auto_vacuum takes effect only while the file has no tables, and switching to
+  // WAL already writes the header. Existing files are converted by the schema migration.
+  exec("PRAGMA auto_vacuum=INCREMENTAL");
   exec("PRAGMA journal_mode=WAL");
   exec("PRAGMA synchronous=FULL");
   exec("PRAGMA foreign_keys=ON");
+  // A large result grows the WAL file; a checkpoint truncates it back to this size.
+  exec("PRAGMA journal_size_limit=67108864");
 }
 
-void SqliteConnection::exec(const char* sql) {
+void SqliteConnection::exec(const std::string& sql) {
   char* message = nullptr;
-  const int rc = sqlite3_exec(db_.get(), sql, nullptr, nullptr, &message);
+  const int rc = sqlite3_exec(db_.get(), sql.c_str(), nullptr, nullptr, &message);
   if (rc != SQLITE_OK) {
     std::string text = message ? message : sqlite3_errstr(rc);
     sqlite3_free(message);
-    throw StoreError(std::string(sql) + ": " + text);
+    throw StoreError(sql + ": " + text);
   }
+}
+
+void SqliteConnection::rollback() noexcept {
+  // SQLite may already have rolled back (for example after an I/O error); nothing to undo.
+  sqlite3_exec(db_.get(), "ROLLBACK", nullptr, nullptr, nullptr);
 }
 
 sqlite3_stmt& SqliteConnection::statement(const std::string& sql) {
   auto it = statements_.find(sql);
   if (it != statements_.end()) return *it->second;
+  const std::string text = translate_sql(SqlDialect::kSqlite, sql);
   sqlite3_stmt* raw = nullptr;
-  const int rc = sqlite3_prepare_v3(db_.get(), sql.c_str(), static_cast<int>(sql.size()),
+  const int rc = sqlite3_prepare_v3(db_.get(), text.c_str(), static_cast<int>(text.size()),
                                     SQLITE_PREPARE_PERSISTENT, &raw, nullptr);
   std::unique_ptr<sqlite3_stmt, FinalizeStmt> stmt(raw);
-  if (rc != SQLITE_OK) fail(rc, "preparing '" + sql + "'");
+  if (rc != SQLITE_OK) fail(rc, "preparing '" + text + "'");
   sqlite3_stmt& ref = *stmt;
   statements_.emplace(sql, std::move(stmt));
   return ref;
 }
 
-std::int64_t SqliteConnection::changes() const { return sqlite3_changes64(db_.get()); }
+void SqliteConnection::bind(sqlite3_stmt& stmt, int index, const SqlValue& value) {
+  int rc = SQLITE_OK;
+  if (const auto* i = std::get_if<std::int64_t>(&value)) {
+    rc = sqlite3_bind_int64(&stmt, index, *i);
+  } else if (const auto* d = std::get_if<double>(&value)) {
+    // SQLite would store NaN as NULL anyway; infinities likewise, so both stores agree.
+    rc =
+        std::isfinite(*d) ? sqlite3_bind_double(&stmt, index, *d) : sqlite3_bind_null(&stmt, index);
+  } else if (const auto* s = std::get_if<std::string>(&value)) {
+    rc = sqlite3_bind_text64(&stmt, index, s->data(), s->size(), SQLITE_TRANSIENT, SQLITE_UTF8);
+  } else if (const auto* b = std::get_if<SqlBlob>(&value)) {
+    rc = sqlite3_bind_blob64(&stmt, index, b->bytes.data(), b->bytes.size(), SQLITE_TRANSIENT);
+  } else {
+    rc = sqlite3_bind_null(&stmt, index);
+  }
+  if (rc != SQLITE_OK) fail(rc, "binding parameter " + std::to_string(index));
+}
 
-std::int64_t SqliteConnection::last_insert_rowid() const {
-  return sqlite3_last_insert_rowid(db_.get());
+SqlRows SqliteConnection::query(const std::string& sql, const std::vector<SqlValue>& params) {
+  sqlite3_stmt& stmt = statement(sql);
+  // Reset even when a step throws, so the connection holds no open read.
+  struct Reset {
+    sqlite3_stmt& s;
+    ~Reset() {
+      sqlite3_reset(&s);
+      sqlite3_clear_bindings(&s);
+    }
+  } reset{stmt};
+  for (std::size_t i = 0; i < params.size(); ++i) bind(stmt, static_cast<int>(i + 1), params[i]);
+  SqlRows rows;
+  for (;;) {
+    const int rc = sqlite3_step(&stmt);
+    if (rc == SQLITE_DONE) break;
+    if (rc != SQLITE_ROW) fail(rc, std::string("running '") + sqlite3_sql(&stmt) + "'");
+    const int columns = sqlite3_column_count(&stmt);
+    std::vector<SqlValue> values(static_cast<std::size_t>(columns));
+    for (int c = 0; c < columns; ++c) {
+      auto& v = values[static_cast<std::size_t>(c)];
+      switch (sqlite3_column_type(&stmt, c)) {
+        case SQLITE_INTEGER:
+          v = static_cast<std::int64_t>(sqlite3_column_int64(&stmt, c));
+          break;
+        case SQLITE_FLOAT:
+          v = sqlite3_column_double(&stmt, c);
+          break;
+        case SQLITE_TEXT:
+          v = std::string(reinterpret_cast<const char*>(sqlite3_column_text(&stmt, c)),
+                          static_cast<std::size_t>(sqlite3_column_bytes(&stmt, c)));
+          break;
+        case SQLITE_BLOB: {
+          const auto* data = static_cast<const char*>(sqlite3_column_blob(&stmt, c));
+          v = SqlBlob{std::string(data ? data : "",
+                                  static_cast<std::size_t>(sqlite3_column_bytes(&stmt, c)))};
+          break;
+        }
+        default:
+          break;  // NULL
+      }
+    }
+    rows.emplace_back(std::move(values));
+  }
+  return rows;
 }
 
 void SqliteConnection::fail(int code, std::string_view what) const {
@@ -56,96 +126,6 @@ void SqliteConnection::fail(int code, std::string_view what) const {
   message += db_ ? sqlite3_errmsg(db_.get()) : sqlite3_errstr(code);
   message += " (SQLite code " + std::to_string(code) + ")";
   throw StoreError(message);
-}
-
-SqliteQuery::SqliteQuery(SqliteConnection& connection, const std::string& sql)
-    : connection_(connection), stmt_(connection.statement(sql)) {}
-
-SqliteQuery::~SqliteQuery() {
-  sqlite3_reset(&stmt_);
-  sqlite3_clear_bindings(&stmt_);
-}
-
-SqliteQuery& SqliteQuery::bind(int index, std::int64_t value) {
-  const int rc = sqlite3_bind_int64(&stmt_, index, value);
-  if (rc != SQLITE_OK) connection_.fail(rc, "binding a parameter");
-  return *this;
-}
-
-SqliteQuery& SqliteQuery::bind(int index, double value) {
-  const int rc = sqlite3_bind_double(&stmt_, index, value);
-  if (rc != SQLITE_OK) connection_.fail(rc, "binding a parameter");
-  return *this;
-}
-
-SqliteQuery& SqliteQuery::bind(int index, std::string_view value) {
-  const int rc =
-      sqlite3_bind_text64(&stmt_, index, value.data(), value.size(), SQLITE_TRANSIENT, SQLITE_UTF8);
-  if (rc != SQLITE_OK) connection_.fail(rc, "binding a parameter");
-  return *this;
-}
-
-SqliteQuery& SqliteQuery::bind_null(int index) {
-  const int rc = sqlite3_bind_null(&stmt_, index);
-  if (rc != SQLITE_OK) connection_.fail(rc, "binding a parameter");
-  return *this;
-}
-
-SqliteQuery& SqliteQuery::bind(int index, const std::optional<std::int64_t>& value) {
-  return value ? bind(index, *value) : bind_null(index);
-}
-
-SqliteQuery& SqliteQuery::bind(int index, const std::optional<std::string>& value) {
-  return value ? bind(index, std::string_view(*value)) : bind_null(index);
-}
-
-bool SqliteQuery::step() {
-  const int rc = sqlite3_step(&stmt_);
-  if (rc == SQLITE_ROW) return true;
-  if (rc == SQLITE_DONE) return false;
-  connection_.fail(rc, std::string("running '") + sqlite3_sql(&stmt_) + "'");
-}
-
-void SqliteQuery::run() {
-  while (step()) {
-  }
-}
-
-bool SqliteQuery::is_null(int column) const {
-  return sqlite3_column_type(&stmt_, column) == SQLITE_NULL;
-}
-
-std::int64_t SqliteQuery::int64(int column) const { return sqlite3_column_int64(&stmt_, column); }
-
-double SqliteQuery::real(int column) const { return sqlite3_column_double(&stmt_, column); }
-
-std::string SqliteQuery::text(int column) const {
-  const auto* data = reinterpret_cast<const char*>(sqlite3_column_text(&stmt_, column));
-  if (!data) return {};
-  return std::string(data, static_cast<std::size_t>(sqlite3_column_bytes(&stmt_, column)));
-}
-
-std::optional<std::int64_t> SqliteQuery::optional_int64(int column) const {
-  if (is_null(column)) return std::nullopt;
-  return int64(column);
-}
-
-ImmediateTransaction::ImmediateTransaction(SqliteConnection& connection) : connection_(connection) {
-  connection_.exec("BEGIN IMMEDIATE");
-}
-
-ImmediateTransaction::~ImmediateTransaction() {
-  if (!open_) return;
-  try {
-    connection_.exec("ROLLBACK");
-  } catch (const StoreError&) {
-    // SQLite may already have rolled back (for example after an I/O error); nothing to undo.
-  }
-}
-
-void ImmediateTransaction::commit() {
-  connection_.exec("COMMIT");
-  open_ = false;
 }
 
 }  // namespace fosls::service

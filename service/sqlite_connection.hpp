@@ -1,36 +1,35 @@
 #pragma once
-// A thin RAII layer over one SQLite connection: pragmas every connection needs, cached
-// prepared statements, and BEGIN IMMEDIATE transactions. Errors become StoreError.
+// SqlConnection on one SQLite connection: the pragmas every connection needs, prepared
+// statements compiled once, BEGIN IMMEDIATE for writes. Errors become StoreError.
 
 #include <sqlite3.h>
 
 #include <cstdint>
 #include <memory>
-#include <optional>
 #include <string>
 #include <string_view>
 #include <unordered_map>
 
+#include "sql_connection.hpp"
+
 namespace fosls::service {
 
-/// One connection, to be used by one thread at a time. Opening it applies WAL mode,
-/// busy_timeout, synchronous=FULL and foreign_keys (SQLite defaults none of them).
-class SqliteConnection {
+/// One connection, to be used by one thread at a time. Opening it applies incremental
+/// auto-vacuum (effective when the file is new), WAL mode, busy_timeout, synchronous=FULL,
+/// foreign_keys and a bound on the WAL file left after a checkpoint (SQLite defaults none of
+/// them).
+class SqliteConnection final : public SqlConnection {
  public:
   SqliteConnection(const std::string& path, int busy_timeout_ms);
   SqliteConnection(const SqliteConnection&) = delete;
   SqliteConnection& operator=(const SqliteConnection&) = delete;
 
-  /// Runs SQL without results (several statements allowed).
-  void exec(const char* sql);
-
-  /// A prepared statement for `sql`, compiled once per connection.
-  sqlite3_stmt& statement(const std::string& sql);
-
-  /// Rows changed by the last INSERT, UPDATE or DELETE.
-  std::int64_t changes() const;
-
-  std::int64_t last_insert_rowid() const;
+  SqlDialect dialect() const override { return SqlDialect::kSqlite; }
+  SqlRows query(const std::string& sql, const std::vector<SqlValue>& params = {}) override;
+  void exec(const std::string& sql) override;
+  void begin_write() override { exec("BEGIN IMMEDIATE"); }
+  void commit() override { exec("COMMIT"); }
+  void rollback() noexcept override;
 
   /// Throws StoreError naming `what` and SQLite's message.
   [[noreturn]] void fail(int code, std::string_view what) const;
@@ -42,63 +41,13 @@ class SqliteConnection {
   struct FinalizeStmt {
     void operator()(sqlite3_stmt* s) const { sqlite3_finalize(s); }
   };
+  /// The prepared statement for store SQL `sql`, compiled once per connection.
+  sqlite3_stmt& statement(const std::string& sql);
+  void bind(sqlite3_stmt& stmt, int index, const SqlValue& value);
+
   // Statements are finalized before the connection closes (members destroy in reverse).
   std::unique_ptr<sqlite3, CloseDb> db_;
   std::unordered_map<std::string, std::unique_ptr<sqlite3_stmt, FinalizeStmt>> statements_;
-};
-
-/// One use of a cached statement: bind, step, read columns; resets it when it goes out of
-/// scope so the connection holds no open read.
-class SqliteQuery {
- public:
-  SqliteQuery(SqliteConnection& connection, const std::string& sql);
-  ~SqliteQuery();
-  SqliteQuery(const SqliteQuery&) = delete;
-  SqliteQuery& operator=(const SqliteQuery&) = delete;
-
-  /// Binds parameter `index` (1-based); text is copied.
-  SqliteQuery& bind(int index, std::int64_t value);
-  SqliteQuery& bind(int index, double value);
-  SqliteQuery& bind(int index, std::string_view value);
-  SqliteQuery& bind(int index, const std::string& value) {
-    return bind(index, std::string_view(value));
-  }
-  SqliteQuery& bind_null(int index);
-  SqliteQuery& bind(int index, const std::optional<std::int64_t>& value);
-  SqliteQuery& bind(int index, const std::optional<std::string>& value);
-
-  /// Advances to the next row; false when there is none.
-  bool step();
-
-  /// Runs a statement that returns no rows.
-  void run();
-
-  bool is_null(int column) const;
-  std::int64_t int64(int column) const;
-  double real(int column) const;
-  std::string text(int column) const;
-  std::optional<std::int64_t> optional_int64(int column) const;
-
- private:
-  SqliteConnection& connection_;
-  sqlite3_stmt& stmt_;
-};
-
-/// BEGIN IMMEDIATE ... COMMIT; rolls back when destroyed uncommitted (for example when a
-/// statement throws). Immediate, so that a read-then-write never fails with
-/// SQLITE_BUSY_SNAPSHOT: the write lock is taken (waiting up to busy_timeout) before the read.
-class ImmediateTransaction {
- public:
-  explicit ImmediateTransaction(SqliteConnection& connection);
-  ~ImmediateTransaction();
-  ImmediateTransaction(const ImmediateTransaction&) = delete;
-  ImmediateTransaction& operator=(const ImmediateTransaction&) = delete;
-
-  void commit();
-
- private:
-  SqliteConnection& connection_;
-  bool open_ = true;
 };
 
 }  // namespace fosls::service

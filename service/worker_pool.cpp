@@ -1,18 +1,30 @@
 #include "worker_pool.hpp"
 
 #include <omp.h>
+#include <unistd.h>
 
 #include <algorithm>
-
+#include <cstdio>
 #include <exception>
+#include <random>
 #include <string>
 
 namespace fosls::service {
 
+std::string make_worker_id() {
+  char host[256] = {};
+  if (gethostname(host, sizeof host - 1) != 0) std::snprintf(host, sizeof host, "unknown");
+  std::random_device random;
+  char suffix[16];
+  std::snprintf(suffix, sizeof suffix, "%08x", static_cast<unsigned>(random()));
+  return std::string(host) + ":" + std::to_string(getpid()) + ":" + suffix;
+}
+
 WorkerPool::WorkerPool(JobStore& store, JobRunner runner, EventLog& log, Metrics& metrics,
                        WorkerPoolOptions options)
     : store_(store), runner_(std::move(runner)), log_(log), metrics_(metrics), options_(options) {
-  if (options_.workers < 1) options_.workers = 1;
+  if (options_.workers < 0) options_.workers = 0;
+  if (options_.worker_id.empty()) options_.worker_id = make_worker_id();
 }
 
 WorkerPool::~WorkerPool() {
@@ -24,6 +36,7 @@ void WorkerPool::start() {
   std::lock_guard lock(mutex_);
   if (!threads_.empty() || stopping_) return;
   for (int i = 0; i < options_.workers; ++i) threads_.emplace_back([this, i] { run_worker(i); });
+  if (options_.workers > 0) heartbeat_ = std::thread([this] { run_heartbeat(); });
 }
 
 void WorkerPool::notify_job_available() {
@@ -60,6 +73,54 @@ void WorkerPool::join() {
     if (t.joinable()) t.join();
   }
   threads_.clear();
+  // Leases stay renewed until the last worker has put its job back.
+  {
+    std::lock_guard lock(mutex_);
+    heartbeat_stopping_ = true;
+  }
+  wake_.notify_all();
+  if (heartbeat_.joinable()) heartbeat_.join();
+}
+
+void WorkerPool::run_heartbeat() {
+  for (;;) {
+    {
+      std::unique_lock lock(mutex_);
+      wake_.wait_for(lock, options_.heartbeat_interval, [&] { return heartbeat_stopping_; });
+      if (heartbeat_stopping_) return;
+    }
+    heartbeat_once();
+  }
+}
+
+void WorkerPool::heartbeat_once() {
+  std::vector<Lease> leases;
+  {
+    std::lock_guard lock(mutex_);
+    for (const auto& [id, job] : active_) leases.push_back(job.lease);
+  }
+  for (const Lease& lease : leases) {
+    LeaseStatus status = LeaseStatus::kHeld;
+    try {
+      status = store_.renew_lease(lease, options_.lease_duration);
+    } catch (const std::exception& e) {
+      // The lease lasts lease_duration: a store away for a few heartbeats costs nothing.
+      log_.write("store_error",
+                 {{"job_id", lease.job_id}, {"step", "heartbeat"}, {"error", e.what()}});
+      continue;
+    }
+    if (status == LeaseStatus::kHeld) continue;
+    std::lock_guard lock(mutex_);
+    auto it = active_.find(lease.job_id);
+    if (it == active_.end() || it->second.lease.attempt != lease.attempt) continue;
+    if (status == LeaseStatus::kCancelRequested) {
+      it->second.user_cancel = true;
+    } else {
+      it->second.lease_lost = true;
+      log_.write("lease_lost", {{"job_id", lease.job_id}, {"attempt", lease.attempt}});
+    }
+    it->second.cancel->store(true);
+  }
 }
 
 void WorkerPool::run_worker(int index) {
@@ -75,7 +136,8 @@ void WorkerPool::run_worker(int index) {
     }
     std::optional<ClaimedJob> claimed;
     try {
-      claimed = store_.claim_next();
+      claimed = store_.claim_next(
+          ClaimRequest{options_.worker_id + "/w" + std::to_string(index), options_.lease_duration});
     } catch (const std::exception& e) {
       log_.write("worker_error", {{"worker", index}, {"step", "claim"}, {"error", e.what()}});
     }
@@ -107,11 +169,12 @@ bool WorkerPool::with_retries(const char* what, std::int64_t job_id,
 
 void WorkerPool::run_job(const ClaimedJob& claimed) {
   const Job& job = claimed.job;
-  const int attempt = job.attempts;
+  const Lease& lease = claimed.lease;
+  const int attempt = lease.attempt;
   auto cancel = std::make_shared<std::atomic<bool>>(false);
   {
     std::lock_guard lock(mutex_);
-    ActiveJob active{cancel, early_cancels_.erase(job.id) > 0};
+    ActiveJob active{lease, cancel, early_cancels_.erase(job.id) > 0};
     if (active.user_cancel || stopping_) cancel->store(true);
     active_.emplace(job.id, active);
   }
@@ -134,7 +197,7 @@ void WorkerPool::run_job(const ClaimedJob& claimed) {
                           }
                           last_write = now;
                           try {
-                            store_.update_progress(job.id, attempt, p);
+                            store_.update_progress(lease, p);
                           } catch (const std::exception& e) {
                             // Progress is advisory; a busy store must not fail the solve.
                             log_.write(
@@ -161,15 +224,29 @@ void WorkerPool::run_job(const ClaimedJob& claimed) {
 
   bool user_cancel = false;
   bool stopping = false;
+  bool lease_lost = false;
   {
     std::lock_guard lock(mutex_);
     user_cancel = active_[job.id].user_cancel;
+    lease_lost = active_[job.id].lease_lost;
     stopping = stopping_;
     active_.erase(job.id);
   }
+  if (lease_lost) {
+    // Another worker has (or had) this job now; whatever this run produced is not stored.
+    --busy_;
+    log_.write("job_transition", {{"job_id", job.id},
+                                  {"from", "running"},
+                                  {"to", "abandoned"},
+                                  {"attempt", attempt},
+                                  {"seconds", seconds},
+                                  {"stored", false},
+                                  {"reason", "lease lost"}});
+    return;
+  }
   if (last_progress) {
     try {
-      store_.update_progress(job.id, attempt, *last_progress);
+      store_.update_progress(lease, *last_progress);
     } catch (const std::exception&) {
       // the final state below matters, the last progress figure does not
     }
@@ -182,9 +259,7 @@ void WorkerPool::run_job(const ClaimedJob& claimed) {
     to = "succeeded";
     stored = with_retries(
         "store result", job.id,
-        [&] {
-          return store_.complete_succeeded(job.id, attempt, outcome.result_json, outcome.vtu);
-        },
+        [&] { return store_.complete_succeeded(lease, outcome.result_json, outcome.vtu); },
         store_error);
     if (!stored && !store_error.empty()) {
       // For example a VTU beyond SQLite's size limit: say so rather than stay "running".
@@ -197,19 +272,18 @@ void WorkerPool::run_job(const ClaimedJob& claimed) {
     // Interrupted by shutdown, not by its user: nothing is lost, it runs again next start.
     to = "queued";
     stored = with_retries(
-        "requeue", job.id, [&] { return store_.requeue(job.id, attempt); }, store_error);
+        "requeue", job.id, [&] { return store_.requeue(lease); }, store_error);
   } else if (outcome.kind == JobRunOutcome::Kind::kCancelled) {
     to = "cancelled";
     stored = with_retries(
-        "store cancel", job.id, [&] { return store_.complete_cancelled(job.id, attempt); },
-        store_error);
+        "store cancel", job.id, [&] { return store_.complete_cancelled(lease); }, store_error);
     metrics_.record_run(JobState::kCancelled, seconds);
   }
   if (outcome.kind == JobRunOutcome::Kind::kFailed) {
     to = "failed";
     stored = with_retries(
-        "store failure", job.id,
-        [&] { return store_.complete_failed(job.id, attempt, outcome.error); }, store_error);
+        "store failure", job.id, [&] { return store_.complete_failed(lease, outcome.error); },
+        store_error);
     metrics_.record_run(JobState::kFailed, seconds);
   }
   --busy_;

@@ -1,6 +1,8 @@
 #pragma once
-// In-process solver workers: each thread claims the oldest queued job, runs it with no
-// database transaction open, and records the outcome. HTTP threads never solve.
+// Solver workers: each thread claims the oldest queued job under a lease, runs it with no
+// database transaction open, and records the outcome; a heartbeat thread keeps the leases of
+// running jobs alive and hears about cancels requested through any process. HTTP threads never
+// solve.
 
 #include <atomic>
 #include <chrono>
@@ -10,6 +12,7 @@
 #include <memory>
 #include <mutex>
 #include <set>
+#include <string>
 #include <thread>
 #include <vector>
 
@@ -21,7 +24,14 @@
 namespace fosls::service {
 
 struct WorkerPoolOptions {
+  /// Worker threads; 0 makes an API-only process (another process solves).
   int workers = 1;
+  /// Identifies this process in leases; unique per process (make_worker_id()).
+  std::string worker_id;
+  /// A claimed job whose lease was not renewed for this long is taken back by the store.
+  std::chrono::milliseconds lease_duration{30000};
+  /// How often running jobs' leases are renewed and their cancel flags read from the store.
+  std::chrono::milliseconds heartbeat_interval{1000};
   /// At most one progress write per job per interval.
   std::chrono::milliseconds progress_interval{500};
   /// How often idle workers look for jobs they were not told about.
@@ -29,6 +39,9 @@ struct WorkerPoolOptions {
   /// First pause before retrying a failed store write (doubles; five tries in all).
   std::chrono::milliseconds store_retry_delay{200};
 };
+
+/// hostname:pid:random, unique to one process even where pids repeat (containers).
+std::string make_worker_id();
 
 /// A fixed set of worker threads over a JobStore.
 class WorkerPool {
@@ -62,12 +75,18 @@ class WorkerPool {
 
  private:
   struct ActiveJob {
+    Lease lease;
     std::shared_ptr<std::atomic<bool>> cancel;
     bool user_cancel = false;
+    bool lease_lost = false;  ///< the store gave the attempt to someone else
   };
 
   void run_worker(int index);
   void run_job(const ClaimedJob& claimed);
+  /// Renews the lease of every running job until shutdown; stops a job whose cancel was
+  /// requested (through any process) or whose lease was lost.
+  void run_heartbeat();
+  void heartbeat_once();
   /// Calls `write` until it returns without throwing or attempts run out (the store may be
   /// busy for a while); returns what `write` returned, false after the last failure, whose
   /// message goes to `error`.
@@ -84,10 +103,12 @@ class WorkerPool {
   std::condition_variable wake_;
   std::uint64_t generation_ = 0;  ///< bumped by notify_job_available
   bool stopping_ = false;
+  bool heartbeat_stopping_ = false;  ///< set once every worker has finished
   std::map<std::int64_t, ActiveJob> active_;
   std::set<std::int64_t> early_cancels_;  ///< cancels that arrived before the worker did
   std::atomic<int> busy_{0};
   std::vector<std::thread> threads_;
+  std::thread heartbeat_;
 };
 
 }  // namespace fosls::service

@@ -3,7 +3,7 @@
 //
 // Without a contact group J is a sum of squares. The contact term C3 ⟨u·n − g, σ_nn⟩ is
 // bilinear and indefinite by itself, so too large a C3 makes A indefinite through modes that
-// live at the contact boundary (method.md §2). The check factorises the principal submatrix of
+// live at the contact boundary (docs/method.md §2). The check factorises the principal submatrix of
 // A on the DOFs of the triangles within two layers of the contact boundary: cheap (O(boundary))
 // and, since every principal submatrix of an SPD matrix is SPD, never a false alarm.
 

@@ -25,7 +25,7 @@ class Discretization {
   const ProblemData& data() const { return data_; }
   /// Builds the transfers, patches and contact links of the levels from
   /// coarsest_solver_level() up (not needed by pdas).
-  LevelHierarchy build_hierarchy() const;
+  LevelHierarchy build_level_hierarchy() const;
 
   /// The coarsest mesh level that the multilevel solvers use: the first whose contact edges on
   /// curves turn the boundary normal by at most `max_turn` radians. Where a coarse edge
@@ -44,7 +44,7 @@ class Discretization {
   AssembledProblem problem_;
 };
 
-/// Vertex patches of a space in its free numbering (method.md §4.1).
+/// Vertex patches of a space in its free numbering (docs/method.md §4.1).
 std::vector<std::vector<int>> vertex_patches(const FoslsSpace& space);
 
 /// Free DOFs of the triangles within `layers` layers of the contact boundary (the strip

@@ -335,17 +335,17 @@ Vector FoslsAssembler::full_vector(const AssembledProblem& p, const Vector& x_fr
   return x;
 }
 
-double FoslsAssembler::edge_normal_defect(const Vector& x_full, int e) const {
+double FoslsAssembler::edge_mean_penetration(const Vector& x_full, int e) const {
   const Mesh& mesh = space_.mesh();
   const Point ne = mesh.edge_normal(e);
-  double defect = 0.0;
+  double penetration = 0.0;
   for (int v : mesh.edge(e)) {
     const double un = space_.is_contact_vertex(v) ? x_full[space_.u_dof(v, 0)]
                                                   : ne.x() * x_full[space_.u_dof(v, 0)] +
                                                         ne.y() * x_full[space_.u_dof(v, 1)];
-    defect += 0.5 * (un - vertex_gap_[v]);
+    penetration += 0.5 * (un - vertex_gap_[v]);
   }
-  return defect;
+  return penetration;
 }
 
 FunctionalParts FoslsAssembler::functional(const Vector& x_full) const {
@@ -377,7 +377,7 @@ FunctionalParts FoslsAssembler::functional(const Vector& x_full) const {
   parts.momentum = mom, parts.constitutive = con, parts.asymmetry = asym;
   for (int e = 0; e < mesh.num_edges(); ++e) {
     if (!space_.is_contact_edge(e)) continue;
-    const double term = w.c3 * x_full[space_.sigma_dof(e, 0)] * edge_normal_defect(x_full, e);
+    const double term = w.c3 * x_full[space_.sigma_dof(e, 0)] * edge_mean_penetration(x_full, e);
     parts.contact += term;
     parts.element[mesh.edge_triangles(e)[0]] += term;
   }

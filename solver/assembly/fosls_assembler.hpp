@@ -1,5 +1,5 @@
 #pragma once
-// Assembly of the FOSLS functional (method.md §2–3) into a bound-constrained QP on the free
+// Assembly of the FOSLS functional (docs/method.md §2–3) into a bound-constrained QP on the free
 // DOFs of a FoslsSpace, and element-wise evaluation of the functional (the error estimator).
 
 #include <Eigen/Core>
@@ -44,9 +44,10 @@ class FoslsAssembler {
   /// Full (rotated, scaled) DOF vector from the free DOFs of a solution.
   Vector full_vector(const AssembledProblem& p, const Vector& x_free) const;
 
-  /// Mean of u·n − g over contact edge e, with u·n linear between its end points (U_n at a
-  /// contact vertex, n_e·u at a Dirichlet one): the factor of S_n in the contact term.
-  double edge_normal_defect(const Vector& x_full, int e) const;
+  /// Mean penetration u·n − g over contact edge e (negative where the gap is open), with u·n
+  /// linear between its end points (U_n at a contact vertex, n_e·u at a Dirichlet one): the
+  /// factor of S_n in the contact term.
+  double edge_mean_penetration(const Vector& x_full, int e) const;
 
   /// The functional and its element-wise split at a full DOF vector.
   FunctionalParts functional(const Vector& x_full) const;
@@ -69,7 +70,7 @@ class FoslsAssembler {
 };
 
 /// Constraint directions at contact vertices for groups that constrain along the obstacle
-/// normal (method.md §1); empty when every contact group uses the body normal.
+/// normal (docs/method.md §1); empty when every contact group uses the body normal.
 std::vector<Point> obstacle_vertex_normals(const Mesh& mesh, const ProblemData& data);
 
 }  // namespace fosls

@@ -12,7 +12,7 @@ namespace fosls {
 
 using ScalarFunction = std::function<double(double x, double y)>;
 
-/// Contact data of one group: the rigid obstacle and the constraint direction (method.md §1).
+/// Contact data of one group: the rigid obstacle and the constraint direction (docs/method.md §1).
 struct ContactData {
   Obstacle obstacle;
   ScalarFunction gap;  ///< for Obstacle::Kind::kGap

@@ -1,5 +1,5 @@
 #pragma once
-// Case JSON → CaseSpec, with every problem reported at once (architecture.md, "Case JSON").
+// Case JSON → CaseSpec, with every problem reported at once (docs/case-format.md).
 
 #include <cstddef>
 #include <nlohmann/json.hpp>

@@ -7,10 +7,10 @@
 #include "assembly/definiteness.hpp"
 #include "assembly/discretization.hpp"
 #include "case/expression.hpp"
-#include "mesh/mesh_factory.hpp"
+#include "case/mesh_factory.hpp"
 #include "post/contact_output.hpp"
 #include "post/vtu_writer.hpp"
-#include "solvers/contact_solver.hpp"
+#include "solvers/solve_loop.hpp"
 
 namespace fosls {
 
@@ -152,11 +152,12 @@ bool has_contact(const CaseSpec& spec) {
 
 }  // namespace
 
-std::vector<CaseError> validate_case(const nlohmann::json& j, const CaseReadOptions& options) {
+std::vector<CaseError> validate_case(const nlohmann::json& j, const CaseReadOptions& options,
+                                     const MeshingControl& meshing) {
   CaseReadResult read = read_case(j, options);
   if (!read.errors.empty()) return read.errors;
   try {
-    const Mesh mesh = build_coarse_mesh(read.spec->mesh);
+    const Mesh mesh = build_coarse_mesh(read.spec->mesh, meshing);
     return check_against_mesh(*read.spec, mesh, options.limits);
   } catch (const CaseException& e) {
     return e.errors();
@@ -165,11 +166,18 @@ std::vector<CaseError> validate_case(const nlohmann::json& j, const CaseReadOpti
 
 RunOutput run_case(const CaseSpec& spec, const RunControl& control, const CaseLimits& limits) {
   const auto t0 = Clock::now();
-  Mesh coarse = build_coarse_mesh(spec.mesh);
+  Mesh coarse;
+  try {
+    coarse = build_coarse_mesh(spec.mesh, MeshingControl{control.mesher, control.cancel});
+  } catch (const MeshingCancelled&) {
+    RunOutput cancelled;
+    cancelled.cancelled = true;
+    return cancelled;
+  }
   if (auto errors = check_against_mesh(spec, coarse, limits); !errors.empty())
     throw CaseException(std::move(errors));
   ProblemData data = problem_data(spec, coarse);
-  MeshHierarchy meshes = build_hierarchy(std::move(coarse), spec.mesh.refinements);
+  MeshHierarchy meshes = build_mesh_hierarchy(std::move(coarse), spec.mesh.refinements);
   const auto t_mesh = Clock::now();
   Discretization disc(std::move(meshes), std::move(data));
   const auto& problem = disc.problem();
@@ -177,7 +185,7 @@ RunOutput run_case(const CaseSpec& spec, const RunControl& control, const CaseLi
     throw indefinite(spec.weights);
   const SolverOptions options = solver_options(spec.solver);
   const LevelHierarchy hierarchy =
-      options.method == SolverMethod::kPdas ? LevelHierarchy{} : disc.build_hierarchy();
+      options.method == SolverMethod::kPdas ? LevelHierarchy{} : disc.build_level_hierarchy();
   const auto t_assembly = Clock::now();
 
   SolverObserver observer;
@@ -187,7 +195,7 @@ RunOutput run_case(const CaseSpec& spec, const RunControl& control, const CaseLi
   Vector x;
   SolverReport report;
   try {
-    report = solve_contact(problem.qp, hierarchy, options, observer, x);
+    report = solve_box_qp(problem.qp, hierarchy, options, observer, x);
   } catch (const std::runtime_error& e) {
     // Positive definiteness failing inside a solver is the user's weights, not a crash.
     if (std::string(e.what()).find("positive definite") != std::string::npos)

@@ -58,7 +58,7 @@ struct BoundaryCondition {
   ContactDirection direction = ContactDirection::kBodyNormal;
 };
 
-/// Weights of the FOSLS functional (method.md §2).
+/// Weights of the FOSLS functional (docs/method.md §2).
 struct Weights {
   double c1 = 1.0;
   double c2 = 1.0;

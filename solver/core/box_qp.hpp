@@ -1,5 +1,5 @@
 #pragma once
-// The discrete problem every solver works on (method.md §3):
+// The discrete problem every solver works on (docs/method.md §3):
 //   minimise J(x) = ½ xᵀ A x − bᵀ x + c   subject to   lower ≤ x ≤ upper.
 
 #include <Eigen/Core>

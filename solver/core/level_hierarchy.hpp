@@ -12,7 +12,7 @@ namespace fosls {
 
 /// One coarse contact edge E = (a, b) and its fine children (a, m), (m, b), as DOF indices of
 /// the two levels (-1 where the DOF is fixed). Used to carry the defect obstacle to the coarse
-/// level by the non-linear projections of method.md §4.3.
+/// level by the non-linear projections of docs/method.md §4.3.
 struct ContactLink {
   int coarse_un_a = -1, coarse_un_b = -1;  ///< coarse U_n at a and b
   int fine_un_a = -1, fine_un_mid = -1, fine_un_b = -1;

@@ -1,5 +1,5 @@
 #pragma once
-// P1 and RT0 on one triangle: the local formulas of method.md §3 in one place.
+// P1 and RT0 on one triangle: the local formulas of docs/method.md §3 in one place.
 //
 // Triangle T with counter-clockwise vertices a_0, a_1, a_2, edge e_k opposite a_k.
 // P1:  φ_k linear with φ_k(a_j) = δ_kj, ∇φ_k = R⁻¹(a_{k+2} − a_{k+1}) / (2|T|).

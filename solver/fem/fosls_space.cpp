@@ -13,9 +13,9 @@ FoslsSpace::FoslsSpace(const Mesh& mesh, const std::vector<GroupRole>& roles,
   roles_.assign(num_dofs(), DofRole::kFree);
   contact_vertex_.assign(nv, 0);
   contact_edge_.assign(ne, 0);
-  dirichlet_vertex_.assign(nv, 0);
   vertex_normal_.assign(nv, Point::Zero());
 
+  std::vector<char> dirichlet_vertex(nv, 0);
   std::vector<Point> averaged(nv, Point::Zero());
   std::vector<int> curve_of(nv, -1);
   for (int e = 0; e < ne; ++e) {
@@ -24,7 +24,7 @@ FoslsSpace::FoslsSpace(const Mesh& mesh, const std::vector<GroupRole>& roles,
     const auto& pq = mesh.edge(e);
     switch (roles[g]) {
       case GroupRole::kDirichlet:
-        dirichlet_vertex_[pq[0]] = dirichlet_vertex_[pq[1]] = 1;
+        dirichlet_vertex[pq[0]] = dirichlet_vertex[pq[1]] = 1;
         break;
       case GroupRole::kNeumann:
         roles_[sigma_dof(e, 0)] = roles_[sigma_dof(e, 1)] = DofRole::kFixed;
@@ -42,7 +42,7 @@ FoslsSpace::FoslsSpace(const Mesh& mesh, const std::vector<GroupRole>& roles,
     }
   }
   for (int v = 0; v < nv; ++v) {
-    if (dirichlet_vertex_[v]) {
+    if (dirichlet_vertex[v]) {
       contact_vertex_[v] = 0;  // Dirichlet data win over the contact constraint
       roles_[u_dof(v, 0)] = roles_[u_dof(v, 1)] = DofRole::kFixed;
       continue;

@@ -39,7 +39,6 @@ class FoslsSpace {
   DofRole role(int dof) const { return roles_[dof]; }
   bool is_contact_vertex(int v) const { return contact_vertex_[v] != 0; }
   bool is_contact_edge(int e) const { return contact_edge_[e] != 0; }
-  bool is_dirichlet_vertex(int v) const { return dirichlet_vertex_[v] != 0; }
   /// Constraint direction n_v at a contact vertex.
   const Point& vertex_normal(int v) const { return vertex_normal_[v]; }
 
@@ -54,7 +53,7 @@ class FoslsSpace {
  private:
   const Mesh* mesh_;
   std::vector<DofRole> roles_;
-  std::vector<char> contact_vertex_, contact_edge_, dirichlet_vertex_;
+  std::vector<char> contact_vertex_, contact_edge_;
   std::vector<Point> vertex_normal_;
   Eigen::SparseMatrix<double> rotation_;
   std::vector<int> free_to_full_, full_to_free_;

@@ -1,5 +1,5 @@
 #pragma once
-// Level transfers P_j : X_{j−1} → X_j, the natural embeddings of method.md §4.
+// Level transfers P_j : X_{j−1} → X_j, the natural embeddings of docs/method.md §4.
 
 #include <Eigen/Sparse>
 #include <utility>
@@ -10,10 +10,11 @@
 
 namespace fosls {
 
-/// Prolongation of full Cartesian DOF vectors: P1 interpolation for u; for σ a fine edge inside
-/// a coarse edge gets half the coarse flux (sign by orientation), and an edge inside a coarse
-/// triangle gets the exact flux of the coarse (linear) RT0 field, evaluated on the coarse
-/// triangle's geometry (midpoints at their unsnapped positions).
+/// Prolongation of full Cartesian DOF vectors: P1 interpolation for u; for σ a fine edge that
+/// halves a coarse edge gets half the coarse flux and a kept coarse edge all of it (sign by
+/// orientation), and an edge inside a coarse triangle gets the exact flux of the coarse
+/// (linear) RT0 field, evaluated on the coarse triangle's geometry (midpoints at their
+/// unsnapped positions). Serves red refinement and newest-vertex bisection alike.
 ///
 /// On a curved boundary this keeps two properties that matter more than reproducing the
 /// coarse field where the fine mesh bulges out of it: a fine boundary half's flux depends on

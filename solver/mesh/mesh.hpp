@@ -30,7 +30,7 @@ struct BoundarySegment {
 
 /// Unstructured triangle mesh.
 ///
-/// Conventions (method.md §3):
+/// Conventions (docs/method.md §3):
 /// - triangles are counter-clockwise; edge k of a triangle is opposite its vertex k;
 /// - every edge (p, q) carries the unit normal n_e = R(q − p)/|q − p| with R the clockwise
 ///   rotation by 90°; interior edges have p < q, boundary edges are oriented so that n_e is

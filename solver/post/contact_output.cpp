@@ -60,7 +60,7 @@ ContactResult contact_output(const FoslsAssembler& assembler, const AssembledPro
     const double sn = x_full[space.sigma_dof(e, 0)] * problem.stress_scale;  // ∫_e σ_nn ds
     r.pressure = 0.0 - sn / len;                                             // +0.0 where S_n = 0
     const Point ne = mesh.edge_normal(e);
-    r.gap = 0.0 - assembler.edge_normal_defect(x_full, e);  // +0.0, not −0.0, where closed
+    r.gap = 0.0 - assembler.edge_mean_penetration(x_full, e);  // +0.0, not −0.0, where closed
     r.active = r.pressure > 0.0;
     // σn = σ_nn n on a frictionless contact edge.
     out.force_x += sn * ne.x();

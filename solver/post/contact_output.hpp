@@ -1,5 +1,5 @@
 #pragma once
-// What users look at (method.md §6): contact pressure per contact edge, gap, contact zone and
+// What users look at (docs/method.md §6): contact pressure per contact edge, gap, contact zone and
 // resultant force, from a solution in the space's rotated, scaled coordinates.
 
 #include <vector>

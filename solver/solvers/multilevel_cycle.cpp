@@ -233,7 +233,7 @@ void MultilevelCycle::rebuild_coarse_levels() {
       make_smoother(j);
     }
   }
-  coarse_solver_ = std::make_unique<CoarseBoxQpSolver>(matrix(0));
+  coarse_solver_ = std::make_unique<SparseBoxQpSolver>(matrix(0));
   ++stats_.galerkin_rebuilds;
   stats_.galerkin_s += seconds_since(t0);
 }

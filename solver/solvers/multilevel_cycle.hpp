@@ -1,6 +1,7 @@
 #pragma once
-// The monotone multilevel V-cycle of method.md §4: smoothing, truncated coarse basis,
-// coarse obstacles by non-linear projection, exact coarsest solve, prolongation.
+// The monotone multilevel cycle of docs/method.md §4 (a W-cycle by default, a V-cycle with
+// cycle_index = 1): smoothing, truncated coarse basis, coarse obstacles by non-linear
+// projection, exact coarsest solve, prolongation.
 //
 // Convention: a cycle works on an iterate and its residual in place. On the finest level the
 // iterate is x itself (bounds = the problem's bounds); on coarser levels it is the correction
@@ -12,14 +13,15 @@
 
 #include "core/box_qp.hpp"
 #include "core/level_hierarchy.hpp"
-#include "solvers/box_qp_solver.hpp"
+#include "solvers/exact_box_qp.hpp"
 #include "solvers/smoothers.hpp"
 
 namespace fosls {
 
 enum class SmootherType { kPatch, kPoint };
-/// The seed's options for the normal displacement: (a) least restrictive, (b) min of end and
-/// midpoint, (c) min over the edge.
+/// How the obstacle of the normal displacement is carried to a coarse contact edge
+/// (docs/method.md §4.3): (a) least restrictive, (b) min of end and midpoint, (c) min over the
+/// edge.
 enum class CoarseProjection { kA, kB, kC };
 
 struct MultilevelOptions {
@@ -57,7 +59,7 @@ struct GalerkinChain {
 };
 GalerkinChain galerkin_chain(const SparseMatrix& A, const LevelHierarchy& hierarchy);
 
-/// The coarse obstacle of method.md §4.3: from the defects d ≥ 0 of the bounded DOFs of level
+/// The coarse obstacle of docs/method.md §4.3: from the defects d ≥ 0 of the bounded DOFs of level
 /// j (kNoBound where a DOF is unbounded or truncated) to upper bounds of level j−1 that keep
 /// every prolongated coarse correction below d (exactly where contact normals agree between
 /// the levels). `coarse_hi` must be initialised (e.g. to kNoBound); it is only lowered.
@@ -74,12 +76,12 @@ class MultilevelCycle {
                   std::shared_ptr<const GalerkinChain> chain = nullptr);
   ~MultilevelCycle();
 
-  /// One monotone V-cycle: J(x) does not increase and x stays within [lower, upper].
-  /// The truncated set is the fine active set after pre-smoothing.
+  /// One monotone cycle (V or W by `cycle_index`): J(x) does not increase and x stays within
+  /// [lower, upper]. The truncated set is the fine active set after pre-smoothing.
   void nonlinear_cycle(Vector& x, Vector& r);
 
-  /// One linear V-cycle for the correction c (started at 0) on the DOFs that are not
-  /// `frozen`; coarse basis functions are truncated at the frozen DOFs (TNNMG).
+  /// One linear cycle (V or W by `cycle_index`) for the correction c (started at 0) on the DOFs
+  /// that are not `frozen`; coarse basis functions are truncated at the frozen DOFs (TNNMG).
   void linear_cycle(const std::vector<char>& frozen, Vector& c, Vector& r);
 
   /// One fine-level smoother sweep within [lower, upper].
@@ -115,7 +117,7 @@ class MultilevelCycle {
   /// truncated prolongation P̃_j.
   std::vector<std::vector<char>> level_truncated_;
   std::vector<SparseMatrix> truncated_prolongations_;
-  std::unique_ptr<CoarseBoxQpSolver> coarse_solver_;
+  std::unique_ptr<SparseBoxQpSolver> coarse_solver_;
   std::shared_ptr<const GalerkinChain> chain_;
   /// Per level: the weights of the fine S_n of each link in the truncated prolongation.
   std::vector<std::vector<std::array<double, 2>>> sn_weights_;

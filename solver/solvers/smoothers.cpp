@@ -7,7 +7,7 @@
 #include <stdexcept>
 #include <string>
 
-#include "solvers/box_qp_solver.hpp"
+#include "solvers/exact_box_qp.hpp"
 
 namespace fosls {
 
@@ -82,7 +82,7 @@ void PatchSmoother::solve_patch(int p, const Vector& rl, Vector& x, const Vector
       dlo[k] = std::min(0.0, lo[idx[k]] - x[idx[k]]);
       dhi[k] = std::max(0.0, hi[idx[k]] - x[idx[k]]);
     }
-    solve_box_qp_dense(a, rl, dlo, dhi, delta);
+    solve_dense_box_qp(a, rl, dlo, dhi, delta);
   }
   for (int a = 0; a < m; ++a) {
     if (delta[a] == 0.0) continue;
@@ -112,10 +112,6 @@ void PatchSmoother::sweep(Vector& x, Vector& r, const Vector& lo, const Vector& 
   }
 }
 
-}  // namespace fosls
-
-namespace fosls {
-
 StripSmoother::StripSmoother(const SparseMatrix& A, std::vector<int> strip)
     : A_(A), strip_(std::move(strip)) {
   std::vector<int> local(A.rows(), -1);
@@ -126,10 +122,10 @@ StripSmoother::StripSmoother(const SparseMatrix& A, std::vector<int> strip)
       if (int b = local[it.row()]; b >= 0) t.emplace_back(b, static_cast<int>(a), it.value());
   SparseMatrix sub(strip_.size(), strip_.size());
   sub.setFromTriplets(t.begin(), t.end());
-  solver_ = std::make_unique<CoarseBoxQpSolver>(sub);
+  solver_ = std::make_unique<SparseBoxQpSolver>(sub);
 }
 
-void StripSmoother::solve(Vector& x, Vector& r, const Vector& lo, const Vector& hi) const {
+void StripSmoother::solve(Vector& x, Vector& r, const Vector& lo, const Vector& hi) {
   const int m = static_cast<int>(strip_.size());
   Vector rl(m), dlo(m), dhi(m), delta;
   for (int a = 0; a < m; ++a) {

@@ -1,6 +1,6 @@
 #pragma once
 // Monotone smoothers: successive exact minimisation of J over small subspaces within the
-// bounds (method.md §4.1). Both work on x and the residual r = b − A x, kept up to date.
+// bounds (docs/method.md §4.1). Both work on x and the residual r = b − A x, kept up to date.
 
 #include <memory>
 #include <vector>
@@ -53,12 +53,13 @@ class StripSmoother {
  public:
   /// Throws std::runtime_error when the strip's matrix is not positive definite.
   StripSmoother(const SparseMatrix& A, std::vector<int> strip);
-  void solve(Vector& x, Vector& r, const Vector& lo, const Vector& hi) const;
+  /// Not const: the QP solver keeps the factorisation of the last free set.
+  void solve(Vector& x, Vector& r, const Vector& lo, const Vector& hi);
 
  private:
   const SparseMatrix& A_;
   std::vector<int> strip_;
-  std::unique_ptr<class CoarseBoxQpSolver> solver_;
+  std::unique_ptr<class SparseBoxQpSolver> solver_;
 };
 
 /// Subtracts A[:, j] · d from r (the residual update after x_j changed by d).

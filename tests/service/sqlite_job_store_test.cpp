@@ -1,289 +1,56 @@
-// The SQLite job store: lifecycle, idempotency, pagination, recovery, retention, and many
-// threads at once without "database is locked".
+// What only the SQLite store has (the shared contract is job_store_contract_test.cpp): WAL
+// mode, the schema version in the file header, migration of a first-release file, space given
+// back when jobs are deleted, compressed VTU.
 
 #include "sqlite_job_store.hpp"
 
 #include <gtest/gtest.h>
 #include <sqlite3.h>
 
-#include <atomic>
-#include <set>
-#include <thread>
-#include <vector>
+#include <filesystem>
+#include <random>
 
-#include "request_checks.hpp"
-#include "temp_dir.hpp"
+#include "store_test_support.hpp"
 
 namespace fosls::service {
 namespace {
 
+using testing::claim_as;
+using testing::kUnlimited;
+using testing::make_job;
 using testing::TempDir;
 
-NewJob make_job(const std::string& body, std::optional<std::string> key = std::nullopt) {
-  NewJob job;
-  job.name = "case";
-  job.case_json = body;
-  job.body_hash = sha256_hex(body);
-  job.idempotency_key = std::move(key);
-  return job;
+/// Runs SQL on the file with a separate plain connection; returns the first column of the
+/// first row (or 0).
+std::int64_t sql_int(const std::string& path, const std::string& sql) {
+  sqlite3* db = nullptr;
+  EXPECT_EQ(sqlite3_open(path.c_str(), &db), SQLITE_OK);
+  sqlite3_busy_timeout(db, 5000);
+  sqlite3_stmt* stmt = nullptr;
+  std::int64_t out = 0;
+  EXPECT_EQ(sqlite3_prepare_v2(db, sql.c_str(), -1, &stmt, nullptr), SQLITE_OK) << sql;
+  if (sqlite3_step(stmt) == SQLITE_ROW) out = sqlite3_column_int64(stmt, 0);
+  sqlite3_finalize(stmt);
+  sqlite3_close(db);
+  return out;
 }
 
-constexpr std::size_t kUnlimited = 1'000'000;
-
-TEST(SqliteJobStore, SubmitClaimSucceedStoresResultOnce) {
-  TempDir dir;
-  SqliteJobStore store(dir.file("jobs.db"));
-  const SubmitOutcome submitted = store.submit(make_job(R"({"a":1})"), kUnlimited);
-  ASSERT_EQ(submitted.kind, SubmitOutcome::Kind::kCreated);
-  const std::int64_t id = submitted.job->id;
-  EXPECT_EQ(submitted.job->state, JobState::kQueued);
-  EXPECT_EQ(submitted.job->attempts, 0);
-
-  auto claimed = store.claim_next();
-  ASSERT_TRUE(claimed);
-  EXPECT_EQ(claimed->job.id, id);
-  EXPECT_EQ(claimed->job.state, JobState::kRunning);
-  EXPECT_EQ(claimed->job.attempts, 1);
-  EXPECT_TRUE(claimed->job.started_at_ms);
-  EXPECT_EQ(claimed->case_json, R"({"a":1})");
-  EXPECT_FALSE(store.claim_next());  // nothing else queued
-
-  store.update_progress(id, 1, JobProgress{7, 1e-3, -2.5});
-  auto running = store.find(id);
-  ASSERT_TRUE(running && running->progress);
-  EXPECT_EQ(running->progress->iteration, 7);
-  EXPECT_DOUBLE_EQ(running->progress->kkt_residual, 1e-3);
-
-  EXPECT_TRUE(store.complete_succeeded(id, 1, R"({"converged":true})", "<VTKFile/>"));
-  // A second completion of the same attempt is refused: a result is written once.
-  EXPECT_FALSE(store.complete_succeeded(id, 1, R"({"converged":false})", ""));
-  EXPECT_FALSE(store.complete_failed(id, 1, "late"));
-  auto done = store.find(id);
-  EXPECT_EQ(done->state, JobState::kSucceeded);
-  EXPECT_TRUE(done->finished_at_ms);
-  EXPECT_EQ(store.result_json(id), R"({"converged":true})");
-  EXPECT_EQ(store.vtu(id), "<VTKFile/>");
+void sql_exec(const std::string& path, const std::string& sql) {
+  sqlite3* db = nullptr;
+  ASSERT_EQ(sqlite3_open(path.c_str(), &db), SQLITE_OK);
+  char* error = nullptr;
+  ASSERT_EQ(sqlite3_exec(db, sql.c_str(), nullptr, nullptr, &error), SQLITE_OK)
+      << (error ? error : "") << "\n"
+      << sql;
+  sqlite3_close(db);
 }
 
-TEST(SqliteJobStore, ProgressOfAStaleAttemptIsIgnored) {
-  TempDir dir;
-  SqliteJobStore store(dir.file("jobs.db"));
-  const auto id = store.submit(make_job("{}"), kUnlimited).job->id;
-  ASSERT_TRUE(store.claim_next());
-  store.update_progress(id, 2, JobProgress{3, 1, 1});  // wrong attempt
-  EXPECT_FALSE(store.find(id)->progress);
-}
-
-TEST(SqliteJobStore, FailedJobKeepsItsError) {
-  TempDir dir;
-  SqliteJobStore store(dir.file("jobs.db"));
-  const auto id = store.submit(make_job("{}"), kUnlimited).job->id;
-  ASSERT_TRUE(store.claim_next());
-  EXPECT_TRUE(store.complete_failed(id, 1, "/weights/c1: must be positive"));
-  auto job = store.find(id);
-  EXPECT_EQ(job->state, JobState::kFailed);
-  EXPECT_EQ(job->error, "/weights/c1: must be positive");
-  EXPECT_FALSE(store.result_json(id));
-}
-
-TEST(SqliteJobStore, ClaimsOldestFirst) {
-  TempDir dir;
-  SqliteJobStore store(dir.file("jobs.db"));
-  const auto first = store.submit(make_job("1"), kUnlimited).job->id;
-  const auto second = store.submit(make_job("2"), kUnlimited).job->id;
-  EXPECT_EQ(store.claim_next()->job.id, first);
-  EXPECT_EQ(store.claim_next()->job.id, second);
-}
-
-TEST(SqliteJobStore, IdempotencyKeyReplaysSameBodyAndRejectsDifferentBody) {
-  TempDir dir;
-  SqliteJobStore store(dir.file("jobs.db"));
-  const auto created = store.submit(make_job(R"({"x":1})", "key-1"), kUnlimited);
-  ASSERT_EQ(created.kind, SubmitOutcome::Kind::kCreated);
-  const auto replay = store.submit(make_job(R"({"x":1})", "key-1"), kUnlimited);
-  EXPECT_EQ(replay.kind, SubmitOutcome::Kind::kReplayed);
-  EXPECT_EQ(replay.job->id, created.job->id);
-  const auto conflict = store.submit(make_job(R"({"x":2})", "key-1"), kUnlimited);
-  EXPECT_EQ(conflict.kind, SubmitOutcome::Kind::kKeyConflict);
-  EXPECT_EQ(conflict.job->id, created.job->id);
-  const auto other = store.submit(make_job(R"({"x":1})", "key-2"), kUnlimited);
-  EXPECT_EQ(other.kind, SubmitOutcome::Kind::kCreated);
-  EXPECT_NE(other.job->id, created.job->id);
-  EXPECT_EQ(store.count_by_state()[JobState::kQueued], 2);
-}
-
-TEST(SqliteJobStore, QueueLimitCountsOnlyQueuedJobs) {
-  TempDir dir;
-  SqliteJobStore store(dir.file("jobs.db"));
-  EXPECT_EQ(store.submit(make_job("1"), 2).kind, SubmitOutcome::Kind::kCreated);
-  EXPECT_EQ(store.submit(make_job("2"), 2).kind, SubmitOutcome::Kind::kCreated);
-  const auto full = store.submit(make_job("3"), 2);
-  EXPECT_EQ(full.kind, SubmitOutcome::Kind::kQueueFull);
-  EXPECT_FALSE(full.job);
-  EXPECT_EQ(store.count_by_state()[JobState::kQueued], 2);
-  ASSERT_TRUE(store.claim_next());  // one leaves the queue
-  EXPECT_EQ(store.submit(make_job("3"), 2).kind, SubmitOutcome::Kind::kCreated);
-}
-
-TEST(SqliteJobStore, CancelQueuedRunningAndFinished) {
-  TempDir dir;
-  SqliteJobStore store(dir.file("jobs.db"));
-  const auto running = store.submit(make_job("1"), kUnlimited).job->id;
-  const auto queued = store.submit(make_job("2"), kUnlimited).job->id;
-  ASSERT_EQ(store.claim_next()->job.id, running);
-
-  const auto q = store.cancel(queued);
-  EXPECT_EQ(q.kind, CancelOutcome::Kind::kCancelled);
-  EXPECT_EQ(q.job->state, JobState::kCancelled);
-  EXPECT_TRUE(q.job->finished_at_ms);
-
-  const auto r = store.cancel(running);
-  EXPECT_EQ(r.kind, CancelOutcome::Kind::kRequested);
-  EXPECT_EQ(r.job->state, JobState::kRunning);
-  EXPECT_TRUE(r.job->cancel_requested);
-  EXPECT_TRUE(store.complete_cancelled(running, 1));
-
-  EXPECT_EQ(store.cancel(running).kind, CancelOutcome::Kind::kAlreadyFinished);
-  EXPECT_EQ(store.cancel(999).kind, CancelOutcome::Kind::kNotFound);
-  EXPECT_FALSE(store.claim_next());  // a cancelled queued job is never claimed
-}
-
-TEST(SqliteJobStore, DeleteOnlyFinishedJobsAndTheirResults) {
-  TempDir dir;
-  SqliteJobStore store(dir.file("jobs.db"));
-  const auto id = store.submit(make_job("1"), kUnlimited).job->id;
-  EXPECT_EQ(store.remove(id), DeleteOutcome::kNotFinished);
-  ASSERT_TRUE(store.claim_next());
-  EXPECT_EQ(store.remove(id), DeleteOutcome::kNotFinished);
-  ASSERT_TRUE(store.complete_succeeded(id, 1, "{}", "vtu"));
-  EXPECT_EQ(store.remove(id), DeleteOutcome::kDeleted);
-  EXPECT_EQ(store.remove(id), DeleteOutcome::kNotFound);
-  EXPECT_FALSE(store.find(id));
-  EXPECT_FALSE(store.result_json(id));  // removed with the job (foreign key cascade)
-  // Ids are never reused after a deletion.
-  EXPECT_GT(store.submit(make_job("2"), kUnlimited).job->id, id);
-}
-
-TEST(SqliteJobStore, ListsNewestFirstWithKeysetPages) {
-  TempDir dir;
-  SqliteJobStore store(dir.file("jobs.db"));
-  std::vector<std::int64_t> ids;
-  for (int i = 0; i < 7; ++i) {
-    ids.push_back(store.submit(make_job(std::to_string(i)), kUnlimited).job->id);
-  }
-  ASSERT_TRUE(store.claim_next());  // ids[0] is running
-
-  JobListQuery query;
-  query.page_size = 3;
-  std::vector<std::int64_t> seen;
-  int pages = 0;
-  for (;;) {
-    JobPage page = store.list(query);
-    ++pages;
-    for (const Job& j : page.jobs) seen.push_back(j.id);
-    if (!page.next_before_id) break;
-    query.before_id = page.next_before_id;
-  }
-  EXPECT_EQ(pages, 3);
-  EXPECT_EQ(seen, std::vector<std::int64_t>(ids.rbegin(), ids.rend()));
-
-  JobListQuery running;
-  running.state = JobState::kRunning;
-  JobPage page = store.list(running);
-  ASSERT_EQ(page.jobs.size(), 1u);
-  EXPECT_EQ(page.jobs[0].id, ids[0]);
-  EXPECT_FALSE(page.next_before_id);
-
-  JobListQuery exact;
-  exact.page_size = 7;  // exactly all: no further page
-  EXPECT_FALSE(store.list(exact).next_before_id);
-}
-
-TEST(SqliteJobStore, RecoveryRequeuesThenFailsAtMaxAttemptsAndHonoursCancels) {
-  TempDir dir;
-  const std::string path = dir.file("jobs.db");
-  std::int64_t a = 0, b = 0, c = 0;
-  {
-    SqliteJobStore store(path);
-    a = store.submit(make_job("1"), kUnlimited).job->id;
-    b = store.submit(make_job("2"), kUnlimited).job->id;
-    c = store.submit(make_job("3"), kUnlimited).job->id;
-    ASSERT_EQ(store.claim_next()->job.id, a);
-    ASSERT_EQ(store.claim_next()->job.id, b);
-    ASSERT_EQ(store.cancel(b).kind, CancelOutcome::Kind::kRequested);
-    // The process "crashes" here: the store goes away with a and b running.
-  }
-  {
-    SqliteJobStore store(path);
-    const RecoveryReport report = store.recover_interrupted(2);
-    EXPECT_EQ(report.requeued, std::vector<std::int64_t>{a});
-    EXPECT_EQ(report.cancelled, std::vector<std::int64_t>{b});
-    EXPECT_TRUE(report.failed.empty());
-    EXPECT_EQ(store.find(b)->state, JobState::kCancelled);
-    EXPECT_EQ(store.find(c)->state, JobState::kQueued);
-    auto again = store.claim_next();
-    ASSERT_EQ(again->job.id, a);
-    EXPECT_EQ(again->job.attempts, 2);
-    // ... and crashes again while solving a.
-  }
-  SqliteJobStore store(path);
-  const RecoveryReport report = store.recover_interrupted(2);
-  EXPECT_EQ(report.failed, std::vector<std::int64_t>{a});
-  EXPECT_TRUE(report.requeued.empty());
-  EXPECT_EQ(store.find(a)->state, JobState::kFailed);
-  EXPECT_NE(store.find(a)->error.find("max-attempts"), std::string::npos);
-  EXPECT_EQ(store.find(c)->state, JobState::kQueued);  // never started: untouched
-}
-
-TEST(SqliteJobStore, RecoveryBelowLimitRequeuesAndCountsTheAttempt) {
-  TempDir dir;
-  const std::string path = dir.file("jobs.db");
-  std::int64_t id = 0;
-  {
-    SqliteJobStore store(path);
-    id = store.submit(make_job("1"), kUnlimited).job->id;
-    ASSERT_TRUE(store.claim_next());
-    store.update_progress(id, 1, JobProgress{5, 0.1, 0.2});
-  }
-  SqliteJobStore store(path);
-  const RecoveryReport report = store.recover_interrupted(3);
-  EXPECT_EQ(report.requeued, std::vector<std::int64_t>{id});
-  auto job = store.find(id);
-  EXPECT_EQ(job->state, JobState::kQueued);
-  EXPECT_EQ(job->attempts, 1);
-  EXPECT_FALSE(job->progress);
-  EXPECT_FALSE(job->started_at_ms);
-  auto claimed = store.claim_next();
-  ASSERT_TRUE(claimed);
-  EXPECT_EQ(claimed->job.attempts, 2);
-  // The interrupted attempt can no longer complete the job.
-  EXPECT_FALSE(store.complete_succeeded(id, 1, "{}", ""));
-  EXPECT_TRUE(store.complete_succeeded(id, 2, "{}", ""));
-}
-
-TEST(SqliteJobStore, RequeueAfterCancelRequestCancels) {
-  TempDir dir;
-  SqliteJobStore store(dir.file("jobs.db"));
-  const auto id = store.submit(make_job("1"), kUnlimited).job->id;
-  ASSERT_TRUE(store.claim_next());
-  ASSERT_EQ(store.cancel(id).kind, CancelOutcome::Kind::kRequested);
-  EXPECT_TRUE(store.requeue(id, 1));
-  EXPECT_EQ(store.find(id)->state, JobState::kCancelled);
-}
-
-TEST(SqliteJobStore, RetentionDeletesOnlyOldFinishedJobs) {
-  TempDir dir;
-  SqliteJobStore store(dir.file("jobs.db"));
-  const auto finished = store.submit(make_job("1"), kUnlimited).job->id;
-  const auto queued = store.submit(make_job("2"), kUnlimited).job->id;
-  ASSERT_TRUE(store.claim_next());
-  ASSERT_TRUE(store.complete_succeeded(finished, 1, "{}", ""));
-  const std::int64_t finished_at = *store.find(finished)->finished_at_ms;
-  EXPECT_EQ(store.delete_finished_before(finished_at), 0);  // not older than the cut-off
-  EXPECT_EQ(store.delete_finished_before(finished_at + 1), 1);
-  EXPECT_FALSE(store.find(finished));
-  EXPECT_TRUE(store.find(queued));  // unfinished jobs are never deleted
-  EXPECT_EQ(store.delete_finished_before(now_unix_ms() + 1'000'000), 0);
+/// Text that does not compress (so that page counts measure the rows).
+std::string random_text(std::size_t n) {
+  std::mt19937 rng(7);
+  std::string s(n, ' ');
+  for (char& c : s) c = static_cast<char>('a' + rng() % 26);
+  return s;
 }
 
 TEST(SqliteJobStore, DatabaseIsInWalMode) {
@@ -312,73 +79,124 @@ TEST(SqliteJobStore, SchemaFromANewerProgramIsRefused) {
   EXPECT_THROW(SqliteJobStore store(path), StoreError);
 }
 
+TEST(SqliteJobStore, NewerVersionInTheMigrationTableIsRefused) {
+  TempDir dir;
+  const std::string path = dir.file("jobs.db");
+  { SqliteJobStore store(path); }
+  sql_exec(path, "INSERT INTO schema_migrations VALUES (99, 'from the future', 0)");
+  try {
+    SqliteJobStore store(path);
+    FAIL() << "opened a database of schema version 99";
+  } catch (const StoreError& e) {
+    EXPECT_NE(std::string(e.what()).find("schema version 99"), std::string::npos) << e.what();
+  }
+}
+
 TEST(SqliteJobStore, UnwritableLocationIsAStoreError) {
   EXPECT_THROW(SqliteJobStore store("/proc/no/such/folder/jobs.db"), StoreError);
 }
 
-// Submitters, claimers and readers on separate threads (each with its own connection): every
-// job is claimed exactly once and no call fails with "database is locked".
-TEST(SqliteJobStore, ManyThreadsSubmitClaimAndCompleteWithoutLockErrors) {
+TEST(SqliteJobStore, NewDatabaseRecordsItsVersionAndVacuumsIncrementally) {
   TempDir dir;
-  SqliteJobStore store(dir.file("jobs.db"));
-  constexpr int kSubmitters = 4;
-  constexpr int kPerSubmitter = 50;
-  constexpr int kWorkers = 3;
-  std::atomic<int> errors{0};
-  std::atomic<int> completed{0};
-  std::mutex claimed_mutex;
-  std::multiset<std::int64_t> claimed_ids;
+  const std::string path = dir.file("jobs.db");
+  { SqliteJobStore store(path); }
+  EXPECT_EQ(sql_int(path, "SELECT max(version) FROM schema_migrations"), 2);
+  EXPECT_EQ(sql_int(path, "PRAGMA user_version"), 2);
+  EXPECT_EQ(sql_int(path, "PRAGMA auto_vacuum"), 2);  // incremental
+  { SqliteJobStore again(path); }                     // opening again changes nothing
+  EXPECT_EQ(sql_int(path, "SELECT count(*) FROM schema_migrations"), 2);
+}
 
-  std::vector<std::thread> threads;
-  for (int s = 0; s < kSubmitters; ++s) {
-    threads.emplace_back([&, s] {
-      for (int i = 0; i < kPerSubmitter; ++i) {
-        try {
-          const std::string key = "k" + std::to_string(s) + "-" + std::to_string(i);
-          auto out = store.submit(make_job(std::to_string(i), key), kUnlimited);
-          if (out.kind != SubmitOutcome::Kind::kCreated) ++errors;
-          // Every request is retried once, as a client would after a timeout.
-          if (store.submit(make_job(std::to_string(i), key), kUnlimited).kind !=
-              SubmitOutcome::Kind::kReplayed) {
-            ++errors;
-          }
-          store.find(out.job->id);
-        } catch (const StoreError&) {
-          ++errors;
-        }
-      }
-    });
+// A file written by the first release (schema version 1, no auto-vacuum, VTU as text, a job
+// left running by a crash) is migrated on open: nothing is lost and everything works.
+TEST(SqliteJobStore, MigratesAFirstReleaseDatabase) {
+  TempDir dir;
+  const std::string path = dir.file("jobs.db");
+  sql_exec(path, R"sql(
+PRAGMA journal_mode=WAL;
+CREATE TABLE jobs (
+  id INTEGER PRIMARY KEY AUTOINCREMENT, name TEXT NOT NULL,
+  state TEXT NOT NULL CHECK (state IN ('queued', 'running', 'succeeded', 'failed', 'cancelled')),
+  case_json TEXT NOT NULL, idempotency_key TEXT UNIQUE, body_hash TEXT NOT NULL, error TEXT,
+  progress_iteration INTEGER, progress_kkt_residual REAL, progress_energy REAL,
+  attempts INTEGER NOT NULL DEFAULT 0, cancel_requested INTEGER NOT NULL DEFAULT 0,
+  created_at INTEGER NOT NULL, started_at INTEGER, finished_at INTEGER);
+CREATE INDEX jobs_by_state ON jobs(state, id);
+CREATE INDEX jobs_by_finished_at ON jobs(finished_at) WHERE finished_at IS NOT NULL;
+CREATE TABLE job_results (
+  job_id INTEGER PRIMARY KEY REFERENCES jobs(id) ON DELETE CASCADE,
+  result_json TEXT NOT NULL, vtu TEXT NOT NULL, written_at INTEGER NOT NULL);
+INSERT INTO jobs (name, state, case_json, body_hash, attempts, created_at, started_at, finished_at)
+  VALUES ('old', 'succeeded', '{}', 'h', 1, 1000, 1100, 1200),
+         ('interrupted', 'running', '{"b":2}', 'h2', 1, 1000, 1100, NULL);
+INSERT INTO job_results VALUES (1, '{"old":true}', '<VTKFile old="1"/>', 1200);
+PRAGMA user_version = 1;
+)sql");
+  ASSERT_EQ(sql_int(path, "PRAGMA auto_vacuum"), 0);
+
+  SqliteJobStore store(path);
+  EXPECT_EQ(sql_int(path, "PRAGMA auto_vacuum"), 2);  // converted by VACUUM
+  EXPECT_EQ(sql_int(path, "SELECT max(version) FROM schema_migrations"), 2);
+  EXPECT_EQ(store.result_json(1), R"({"old":true})");
+  EXPECT_EQ(store.vtu(1), R"(<VTKFile old="1"/>)");  // uncompressed rows stay readable
+  const RecoveryReport report = store.recover_interrupted(3);
+  EXPECT_EQ(report.requeued, std::vector<std::int64_t>{2});
+  const auto claimed = store.claim_next(claim_as());
+  ASSERT_TRUE(claimed);
+  EXPECT_EQ(claimed->job.id, 2);
+  EXPECT_EQ(claimed->job.attempts, 2);
+  EXPECT_TRUE(store.complete_succeeded(claimed->lease, "{}", "<VTKFile new=\"1\"/>"));
+  EXPECT_EQ(store.vtu(2), "<VTKFile new=\"1\"/>");
+  EXPECT_EQ(store.submit(make_job("3"), kUnlimited).job->id, 3);
+}
+
+TEST(SqliteJobStore, VtuIsStoredCompressed) {
+  TempDir dir;
+  const std::string path = dir.file("jobs.db");
+  SqliteJobStore store(path);
+  const auto id = store.submit(make_job("1"), kUnlimited).job->id;
+  std::string vtu;
+  for (int i = 0; i < 20000; ++i) vtu += "<DataArray>" + std::to_string(i * 0.5) + "</DataArray>\n";
+  ASSERT_TRUE(store.complete_succeeded(store.claim_next(claim_as())->lease, "{}", vtu));
+  EXPECT_EQ(store.vtu(id), vtu);
+  const auto stored = sql_int(path, "SELECT length(vtu) FROM job_results");
+  EXPECT_EQ(sql_int(path, "SELECT vtu_encoding = 'gzip' FROM job_results"), 1);
+  EXPECT_LT(stored * 4, static_cast<std::int64_t>(vtu.size())) << stored << " of " << vtu.size();
+}
+
+TEST(SqliteJobStore, CorruptCompressedVtuIsAStoreErrorNotACrash) {
+  TempDir dir;
+  const std::string path = dir.file("jobs.db");
+  SqliteJobStore store(path);
+  const auto id = store.submit(make_job("1"), kUnlimited).job->id;
+  ASSERT_TRUE(store.complete_succeeded(store.claim_next(claim_as())->lease, "{}", "<VTKFile/>"));
+  sql_exec(path, "UPDATE job_results SET vtu = substr(vtu, 1, 8)");
+  EXPECT_THROW(store.vtu(id), StoreError);
+}
+
+// Deleting jobs (by the API or by retention) gives their pages back to the file system.
+TEST(SqliteJobStore, DeletingJobsReturnsTheirSpace) {
+  TempDir dir;
+  const std::string path = dir.file("jobs.db");
+  SqliteJobStore store(path);
+  const std::int64_t empty_pages = sql_int(path, "PRAGMA page_count");
+  std::vector<std::int64_t> ids;
+  for (int i = 0; i < 3; ++i) {
+    ids.push_back(store.submit(make_job(std::to_string(i)), kUnlimited).job->id);
+    ASSERT_TRUE(store.complete_succeeded(store.claim_next(claim_as())->lease, "{}",
+                                         random_text(2'000'000)));
   }
-  for (int w = 0; w < kWorkers; ++w) {
-    threads.emplace_back([&] {
-      while (completed.load() < kSubmitters * kPerSubmitter) {
-        try {
-          auto job = store.claim_next();
-          if (!job) {
-            std::this_thread::yield();
-            continue;
-          }
-          {
-            std::lock_guard lock(claimed_mutex);
-            claimed_ids.insert(job->job.id);
-          }
-          store.update_progress(job->job.id, job->job.attempts, JobProgress{1, 0.5, 0.5});
-          if (!store.complete_succeeded(job->job.id, job->job.attempts, "{}", "")) ++errors;
-          ++completed;
-        } catch (const StoreError&) {
-          ++errors;
-          return;
-        }
-      }
-    });
-  }
-  for (auto& t : threads) t.join();
-  EXPECT_EQ(errors.load(), 0);
-  EXPECT_EQ(completed.load(), kSubmitters * kPerSubmitter);
-  EXPECT_EQ(claimed_ids.size(), static_cast<std::size_t>(kSubmitters * kPerSubmitter));
-  EXPECT_EQ(std::set<std::int64_t>(claimed_ids.begin(), claimed_ids.end()).size(),
-            claimed_ids.size());  // nobody claimed a job twice
-  EXPECT_EQ(store.count_by_state()[JobState::kSucceeded], kSubmitters * kPerSubmitter);
+  const std::int64_t full_pages = sql_int(path, "PRAGMA page_count");
+  EXPECT_GT(full_pages, empty_pages + 3 * 300);  // about 1.2 MB each after compression
+  EXPECT_EQ(store.remove(ids[0]), DeleteOutcome::kDeleted);
+  EXPECT_EQ(sql_int(path, "PRAGMA freelist_count"), 0);
+  EXPECT_LT(sql_int(path, "PRAGMA page_count"), full_pages - 250);
+  EXPECT_EQ(store.delete_finished_before(now_unix_ms() + 1'000'000), 2);
+  EXPECT_EQ(sql_int(path, "PRAGMA freelist_count"), 0);
+  EXPECT_LT(sql_int(path, "PRAGMA page_count"), empty_pages + 20);
+  // After a checkpoint the file itself is that small.
+  sql_exec(path, "PRAGMA wal_checkpoint(TRUNCATE)");
+  EXPECT_LT(std::filesystem::file_size(path), static_cast<std::uintmax_t>(1 << 20));
 }
 
 }  // namespace

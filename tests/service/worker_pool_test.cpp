@@ -37,23 +37,26 @@ class CountingStore final : public JobStore {
   JobPage list(const JobListQuery& q) override { return inner_.list(q); }
   CancelOutcome cancel(std::int64_t id) override { return inner_.cancel(id); }
   DeleteOutcome remove(std::int64_t id) override { return inner_.remove(id); }
-  std::optional<ClaimedJob> claim_next() override { return inner_.claim_next(); }
-  void update_progress(std::int64_t id, int a, const JobProgress& p) override {
+  std::optional<ClaimedJob> claim_next(const ClaimRequest& r) override {
+    return inner_.claim_next(r);
+  }
+  LeaseStatus renew_lease(const Lease& l, std::chrono::milliseconds d) override {
+    return inner_.renew_lease(l, d);
+  }
+  void update_progress(const Lease& l, const JobProgress& p) override {
     ++progress_writes;
-    inner_.update_progress(id, a, p);
+    inner_.update_progress(l, p);
   }
-  bool complete_succeeded(std::int64_t id, int a, const std::string& r,
-                          const std::string& v) override {
+  bool complete_succeeded(const Lease& l, const std::string& r, const std::string& v) override {
     if (fail_results) throw StoreError("string or blob too big");
-    return inner_.complete_succeeded(id, a, r, v);
+    return inner_.complete_succeeded(l, r, v);
   }
-  bool complete_failed(std::int64_t id, int a, const std::string& e) override {
-    return inner_.complete_failed(id, a, e);
+  bool complete_failed(const Lease& l, const std::string& e) override {
+    return inner_.complete_failed(l, e);
   }
-  bool complete_cancelled(std::int64_t id, int a) override {
-    return inner_.complete_cancelled(id, a);
-  }
-  bool requeue(std::int64_t id, int a) override { return inner_.requeue(id, a); }
+  bool complete_cancelled(const Lease& l) override { return inner_.complete_cancelled(l); }
+  bool requeue(const Lease& l) override { return inner_.requeue(l); }
+  RecoveryReport requeue_expired_leases(int m) override { return inner_.requeue_expired_leases(m); }
   RecoveryReport recover_interrupted(int m) override { return inner_.recover_interrupted(m); }
   int delete_finished_before(std::int64_t t) override { return inner_.delete_finished_before(t); }
   std::map<JobState, std::int64_t> count_by_state() override { return inner_.count_by_state(); }
@@ -175,6 +178,60 @@ TEST_F(WorkerPoolTest, ShutdownPutsRunningJobsBackWithoutCountingTheAttempt) {
   EXPECT_EQ(job.state, JobState::kQueued);
   EXPECT_EQ(job.attempts, 0);
   EXPECT_FALSE(job.started_at_ms);
+}
+
+// The cancel arrives through the store only (an API process on another host took it): the
+// heartbeat reads it and stops the solve.
+TEST_F(WorkerPoolTest, CancelRequestedThroughTheStoreReachesTheWorker) {
+  const auto id = submit({{"mode", "until_cancel"}});
+  WorkerPoolOptions o = options(1);
+  o.heartbeat_interval = std::chrono::milliseconds(20);
+  WorkerPool pool(store_, fake_job_runner, log_, metrics_, o);
+  pool.start();
+  wait_for(store_, id, [](const Job& j) { return j.progress.has_value(); });
+  ASSERT_EQ(store_.cancel(id).kind, CancelOutcome::Kind::kRequested);  // no request_cancel
+  const Job cancelled = wait_state(id, JobState::kCancelled);
+  EXPECT_EQ(cancelled.attempts, 1);
+}
+
+// The lease is taken away (expired and re-queued by another process while this worker was
+// cut off): the worker stops the solve and stores nothing.
+TEST_F(WorkerPoolTest, ALostLeaseStopsTheSolveAndStoresNothing) {
+  const auto id = submit({{"mode", "until_cancel"}});
+  WorkerPoolOptions o = options(1);
+  o.heartbeat_interval = std::chrono::milliseconds(20);
+  o.lease_duration = std::chrono::milliseconds(60000);
+  WorkerPool pool(store_, fake_job_runner, log_, metrics_, o);
+  pool.start();
+  wait_for(store_, id, [](const Job& j) { return j.progress.has_value(); });
+  // What another process's reaper does once the lease has expired.
+  ASSERT_EQ(store_.recover_interrupted(3).requeued, std::vector<std::int64_t>{id});
+  const auto give_up = std::chrono::steady_clock::now() + std::chrono::seconds(20);
+  while (log_text_.str().find("\"to\":\"abandoned\"") == std::string::npos &&
+         std::chrono::steady_clock::now() < give_up) {
+    std::this_thread::sleep_for(std::chrono::milliseconds(5));
+  }
+  pool.begin_shutdown();
+  pool.join();
+  EXPECT_NE(log_text_.str().find("lease_lost"), std::string::npos) << log_text_.str();
+  const Job job = *store_.find(id);
+  // The worker re-claimed it after giving it up, then shutdown put it back uncounted; or it is
+  // still queued from the recovery. Either way: queued, one counted attempt, no result.
+  EXPECT_EQ(job.state, JobState::kQueued);
+  EXPECT_EQ(job.attempts, 1);
+  EXPECT_FALSE(store_.result_json(id));
+}
+
+TEST_F(WorkerPoolTest, ZeroWorkersIsAnApiOnlyProcess) {
+  const auto id = submit({{"mode", "ok"}});
+  WorkerPool pool(store_, fake_job_runner, log_, metrics_, options(0));
+  pool.start();
+  pool.notify_job_available();
+  std::this_thread::sleep_for(std::chrono::milliseconds(200));
+  EXPECT_EQ(pool.size(), 0);
+  EXPECT_EQ(store_.find(id)->state, JobState::kQueued);  // nobody here solves
+  pool.begin_shutdown();
+  pool.join();
 }
 
 TEST_F(WorkerPoolTest, ProgressWritesAreThrottled) {

@@ -24,7 +24,7 @@ inline ProblemData signorini_square(double lambda) {
   return d;
 }
 
-/// The seed's linear square: pressed by 0.05 onto the flat obstacle y = 0, so that the whole
+/// The linear square: pressed by 0.05 onto the flat obstacle y = 0, so that the whole
 /// bottom is in contact.
 inline ProblemData flat_square(double lambda) {
   ProblemData d = signorini_square(lambda);

@@ -7,8 +7,8 @@
 #include <numbers>
 
 #include "case/case_error.hpp"
+#include "case/mesh_factory.hpp"
 #include "mesh/builtin_meshes.hpp"
-#include "mesh/mesh_factory.hpp"
 #include "mesh/refinement.hpp"
 
 namespace fosls {
@@ -112,7 +112,8 @@ TEST(HertzMesh, IsDeterministic) {
 }
 
 TEST(HertzMesh, RefinementKeepsArcVerticesOnTheCircle) {
-  const MeshHierarchy h = build_hierarchy(make_hertz({.radius = 2.0, .contact_fraction = 0.3}), 3);
+  const MeshHierarchy h =
+      build_mesh_hierarchy(make_hertz({.radius = 2.0, .contact_fraction = 0.3}), 3);
   const Point center(0.0, 2.0);
   for (int level = 0; level < h.num_levels(); ++level) {
     const Mesh& m = h.meshes[level];

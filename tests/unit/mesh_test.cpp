@@ -34,7 +34,7 @@ TEST(Mesh, TriangleEdgeSignsMatchLocalOutwardNormals) {
 }
 
 TEST(Refinement, RedRefinementQuadruplesAndKeepsGroups) {
-  MeshHierarchy h = build_hierarchy(make_square({.size = 0.5}), 2);
+  MeshHierarchy h = build_mesh_hierarchy(make_square({.size = 0.5}), 2);
   ASSERT_EQ(h.num_levels(), 3);
   EXPECT_EQ(h.meshes[1].num_triangles(), 32);
   EXPECT_EQ(h.meshes[2].num_triangles(), 128);

@@ -10,9 +10,9 @@
 #include <sstream>
 
 #include "case/case_error.hpp"
-#include "mesh/gmsh_mesh.hpp"
-#include "mesh/mesh_factory.hpp"
+#include "case/mesh_factory.hpp"
 #include "mesh/msh_reader.hpp"
+#include "mesher/gmsh_session.hpp"
 
 namespace fosls {
 namespace {

@@ -45,7 +45,8 @@ double quantile(std::vector<double> v, double q) {
 nlohmann::json level_row(const SmoothSolution& sol, double lambda, double size, int refinements,
                          bool with_elements) {
   fosls::Discretization disc(
-      fosls::build_hierarchy(fosls::make_square({.size = size}), refinements), sol.problem(lambda));
+      fosls::build_mesh_hierarchy(fosls::make_square({.size = size}), refinements),
+      sol.problem(lambda));
   const auto& p = disc.problem();
   Eigen::CholmodSupernodalLLT<fosls::SparseMatrix> llt(p.qp.A);
   if (llt.info() != Eigen::Success) throw std::runtime_error("CHOLMOD factorisation failed");

@@ -213,7 +213,7 @@ class ShippedBenchmarks(unittest.TestCase):
                 self.assertAlmostEqual(abs(result["contact"]["force"][1]) / force, 1.0,
                                        delta=1e-3)
 
-    def test_hertz_coarse_mesh_is_graded_as_in_the_seed(self):
+    def test_hertz_coarse_mesh_is_graded_seven_to_one(self):
         for lam in (1, "inf"):
             result = vl.solve(BIN, vl.hertz_case(lam, 0), vtu=True)
             h_min, h_max = vl.edge_length_range(result["vtu"]["points"],

@@ -1,5 +1,5 @@
 """Shared pieces of the validation: running fosls-contact on a case, the plane-strain Hertz
-reference (method.md §6) and the measures compared with it.
+reference (docs/method.md §6) and the measures compared with it.
 
 Standard library only, so that the regression tests (test_validation.py) run without numpy or
 matplotlib; run_validation.py adds the tables and figures on top.

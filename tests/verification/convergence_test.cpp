@@ -1,4 +1,5 @@
-// Convergence of the FOSLS discretisation for a smooth manufactured solution (issue: must show 2).
+// Convergence of the FOSLS discretisation for a smooth manufactured solution: the fitted
+// orders of the H1 and H(div) errors and of the functional.
 #include <gtest/gtest.h>
 
 #include <Eigen/CholmodSupport>
@@ -28,7 +29,7 @@ std::vector<Row> convergence_table(double lambda) {
   testing::SmoothSolution sol;
   std::vector<Row> rows;
   for (int r = 1; r <= 5; ++r) {
-    Discretization disc(build_hierarchy(make_square({.size = 0.5}), r), sol.problem(lambda));
+    Discretization disc(build_mesh_hierarchy(make_square({.size = 0.5}), r), sol.problem(lambda));
     const auto& p = disc.problem();
     Eigen::CholmodSupernodalLLT<SparseMatrix> llt(p.qp.A);
     EXPECT_EQ(llt.info(), Eigen::Success);

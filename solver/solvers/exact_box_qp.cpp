@@ -1,9 +1,8 @@
-#include "solvers/box_qp_solver.hpp"
+#include "solvers/exact_box_qp.hpp"
 
 #include <Eigen/SparseCholesky>
 #include <algorithm>
 #include <cmath>
-#include <mutex>
 #include <stdexcept>
 #include <vector>
 
@@ -76,7 +75,7 @@ bool primal_active_set(int n, const Vector& lo, const Vector& hi, Vector& delta,
 
 }  // namespace
 
-bool solve_box_qp_dense(const Eigen::MatrixXd& A, const Vector& r, const Vector& lo,
+bool solve_dense_box_qp(const Eigen::MatrixXd& A, const Vector& r, const Vector& lo,
                         const Vector& hi, Vector& delta) {
   const int n = static_cast<int>(r.size());
   bool definite = true;
@@ -107,14 +106,13 @@ bool solve_box_qp_dense(const Eigen::MatrixXd& A, const Vector& r, const Vector&
   return definite;
 }
 
-struct CoarseBoxQpSolver::Factor {
+struct SparseBoxQpSolver::Factor {
   Eigen::SimplicialLDLT<SparseMatrix> ldlt;
   std::vector<int> free;  ///< the free set `ldlt` factorises (cache of the last one)
-  std::mutex mutex;
 };
 
-CoarseBoxQpSolver::CoarseBoxQpSolver(const SparseMatrix& A)
-    : A_(A), full_(std::make_shared<Factor>()), last_(std::make_shared<Factor>()) {
+SparseBoxQpSolver::SparseBoxQpSolver(const SparseMatrix& A)
+    : A_(A), full_(std::make_unique<Factor>()), last_(std::make_unique<Factor>()) {
   full_->ldlt.compute(A_);
   bool ok = full_->ldlt.info() == Eigen::Success;
   if (ok)
@@ -122,8 +120,9 @@ CoarseBoxQpSolver::CoarseBoxQpSolver(const SparseMatrix& A)
   if (!ok) throw std::runtime_error("the coarse-level matrix is not positive definite");
 }
 
-bool CoarseBoxQpSolver::solve(const Vector& r, const Vector& lo, const Vector& hi,
-                              Vector& delta) const {
+SparseBoxQpSolver::~SparseBoxQpSolver() = default;
+
+bool SparseBoxQpSolver::solve(const Vector& r, const Vector& lo, const Vector& hi, Vector& delta) {
   const int n = static_cast<int>(r.size());
   auto solve_free = [&](const std::vector<signed char>& state, const Vector& d, Vector& y) {
     std::vector<int> free;
@@ -146,7 +145,6 @@ bool CoarseBoxQpSolver::solve(const Vector& r, const Vector& lo, const Vector& h
     for (int a = 0; a < m; ++a) rhs[a] = r[free[a]] - ad[free[a]];
     // The same free set comes back call after call once the active set has settled (the
     // linear phase): keep the factorisation of the last one.
-    std::lock_guard<std::mutex> lock(last_->mutex);
     if (last_->free != free) {
       std::vector<Eigen::Triplet<double>> t;
       for (int a = 0; a < m; ++a)

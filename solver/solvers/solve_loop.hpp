@@ -13,7 +13,7 @@
 namespace fosls {
 
 enum class SolverMethod {
-  kMmg,    ///< monotone multilevel (the seed's method)
+  kMmg,    ///< monotone multilevel (Rovi, Kober, Starke, Krause 2019; docs/method.md §4)
   kTnnmg,  ///< truncated non-smooth Newton multigrid
   kPdas,   ///< primal–dual active set on a CHOLMOD factorisation (direct reference)
   kPgs,    ///< single-level projected Gauss–Seidel (pointwise or patch)
@@ -64,10 +64,11 @@ struct SolverReport {
 /// own factorisation.
 bool chain_is_definite(const SparseMatrix& A, const GalerkinChain& chain, int max_dofs = 50000);
 
-/// Minimises the QP from x (projected onto the bounds first). The hierarchy is needed by mmg
+/// The solve loop: minimises the bound-constrained QP from x (projected onto the bounds
+/// first) by steps of the chosen method. The hierarchy is needed by mmg
 /// and tnnmg only. Non-convergence is reported, not thrown; a matrix that is not positive
 /// definite throws std::runtime_error.
-SolverReport solve_contact(const BoxQp& qp, const LevelHierarchy& hierarchy,
-                           const SolverOptions& options, const SolverObserver& observer, Vector& x);
+SolverReport solve_box_qp(const BoxQp& qp, const LevelHierarchy& hierarchy,
+                          const SolverOptions& options, const SolverObserver& observer, Vector& x);
 
 }  // namespace fosls

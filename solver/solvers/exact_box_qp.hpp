@@ -13,26 +13,29 @@
 
 namespace fosls {
 
-/// Dense version for vertex patches. Returns false when A restricted to the free set is not
-/// positive definite (weights that make the functional indefinite).
-bool solve_box_qp_dense(const Eigen::MatrixXd& A, const Vector& r, const Vector& lo,
+/// Dense version for the vertex patches of the patch smoother. Returns false when A restricted
+/// to the free set is not positive definite (weights that make the functional indefinite).
+bool solve_dense_box_qp(const Eigen::MatrixXd& A, const Vector& r, const Vector& lo,
                         const Vector& hi, Vector& delta);
 
-/// Sparse version for the coarsest level, with the factorisation of the unconstrained matrix
-/// kept between calls while A does not change.
-class CoarseBoxQpSolver {
+/// Sparse version for the coarsest level of the multilevel cycle and the block of the
+/// contact-strip smoother. The factorisation of the whole matrix is computed once, and that of
+/// the last free set is kept while the free set does not change. Not thread-safe: one solver
+/// per cycle or smoother.
+class SparseBoxQpSolver {
  public:
   /// Throws std::runtime_error when A is not positive definite.
-  explicit CoarseBoxQpSolver(const SparseMatrix& A);
+  explicit SparseBoxQpSolver(const SparseMatrix& A);
+  ~SparseBoxQpSolver();
   /// δ = argmin, feasible; returns false if the iteration cap was hit (δ is still a feasible
   /// point with J(δ) ≤ J(0)).
-  bool solve(const Vector& r, const Vector& lo, const Vector& hi, Vector& delta) const;
+  bool solve(const Vector& r, const Vector& lo, const Vector& hi, Vector& delta);
 
  private:
   SparseMatrix A_;
   struct Factor;
-  std::shared_ptr<Factor> full_;
-  std::shared_ptr<Factor> last_;
+  std::unique_ptr<Factor> full_;
+  std::unique_ptr<Factor> last_;
 };
 
 }  // namespace fosls

@@ -1,4 +1,4 @@
-#include "solvers/contact_solver.hpp"
+#include "solvers/solve_loop.hpp"
 
 #include <Eigen/CholmodSupport>
 #include <algorithm>
@@ -85,8 +85,8 @@ class PgsStep : public Step {
   std::unique_ptr<PointSmoother> point_;
 };
 
-/// Gräser & Kornhuber: non-linear smoothing, one truncated linear V-cycle on the inactive
-/// set, projection onto the bounds, exact line search on J.
+/// Gräser & Kornhuber: non-linear smoothing, one truncated linear cycle (V or W, as the
+/// multilevel method's) on the inactive set, projection onto the bounds, exact line search on J.
 class TnnmgStep : public Step {
  public:
   TnnmgStep(const BoxQp& qp, const LevelHierarchy& h, const MultilevelOptions& o,
@@ -248,9 +248,8 @@ bool nested_initial_guess(const BoxQp& qp, const LevelHierarchy& h, const Solver
 
 }  // namespace
 
-SolverReport solve_contact(const BoxQp& qp, const LevelHierarchy& hierarchy,
-                           const SolverOptions& options, const SolverObserver& observer,
-                           Vector& x) {
+SolverReport solve_box_qp(const BoxQp& qp, const LevelHierarchy& hierarchy,
+                          const SolverOptions& options, const SolverObserver& observer, Vector& x) {
   const bool multilevel =
       options.method == SolverMethod::kMmg || options.method == SolverMethod::kTnnmg;
   const auto t0 = Clock::now();

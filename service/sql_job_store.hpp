@@ -1,0 +1,61 @@
+#pragma once
+// The JobStore contract written once in SQL that SQLite and PostgreSQL both run
+// (sql_connection.hpp). The two stores differ only in how they hand out connections, in their
+// schema steps, and in the hooks below.
+
+#include <functional>
+#include <string>
+
+#include "job_store.hpp"
+#include "sql_connection.hpp"
+
+namespace fosls::service {
+
+/// A JobStore over any SqlConnection. Each call borrows a connection for its few statements;
+/// no transaction stays open between calls, so a solve never holds a lock. VTU text is stored
+/// gzip-compressed.
+class SqlJobStore : public JobStore {
+ public:
+  SubmitOutcome submit(const NewJob& job, std::size_t max_queued) override;
+  std::optional<Job> find(std::int64_t id) override;
+  std::optional<std::string> result_json(std::int64_t id) override;
+  std::optional<std::string> vtu(std::int64_t id) override;
+  JobPage list(const JobListQuery& query) override;
+  CancelOutcome cancel(std::int64_t id) override;
+  DeleteOutcome remove(std::int64_t id) override;
+  std::optional<ClaimedJob> claim_next(const ClaimRequest& request) override;
+  LeaseStatus renew_lease(const Lease& lease, std::chrono::milliseconds duration) override;
+  void update_progress(const Lease& lease, const JobProgress& progress) override;
+  bool complete_succeeded(const Lease& lease, const std::string& result_json,
+                          const std::string& vtu) override;
+  bool complete_failed(const Lease& lease, const std::string& error) override;
+  bool complete_cancelled(const Lease& lease) override;
+  bool requeue(const Lease& lease) override;
+  RecoveryReport requeue_expired_leases(int max_attempts) override;
+  RecoveryReport recover_interrupted(int max_attempts) override;
+  int delete_finished_before(std::int64_t unix_ms) override;
+  std::map<JobState, std::int64_t> count_by_state() override;
+  void ping() override;
+
+ protected:
+  /// `acquire` lends a connection to one call.
+  explicit SqlJobStore(std::function<SqlConnectionHandle()> acquire);
+
+  SqlConnectionHandle connection() { return acquire_(); }
+
+  /// Inside a submit transaction, before the queue is read: makes concurrent submits (from
+  /// every process) take turns, so the queue bound and idempotency keys are exact.
+  virtual void serialize_submits(SqlConnection& c) {}
+
+  /// After jobs were deleted, outside any transaction: give the space back if the engine does
+  /// not on its own.
+  virtual void after_delete(SqlConnection& c) {}
+
+ private:
+  std::optional<Job> find_on(SqlConnection& c, std::int64_t id);
+  RecoveryReport recover(int max_attempts, bool only_expired);
+
+  std::function<SqlConnectionHandle()> acquire_;
+};
+
+}  // namespace fosls::service

@@ -1,0 +1,95 @@
+#include "worker_options.hpp"
+
+#include <pthread.h>
+
+#include <algorithm>
+#include <csignal>
+#include <cstdio>
+#include <cstdlib>
+#include <thread>
+
+#include "case_job_runner.hpp"
+
+namespace fosls::service {
+
+namespace {
+std::chrono::milliseconds seconds_to_ms(double seconds) {
+  return std::chrono::milliseconds(static_cast<std::int64_t>(seconds * 1000.0));
+}
+}  // namespace
+
+WorkerPoolOptions WorkerOptions::pool_options() const {
+  WorkerPoolOptions o;
+  o.workers = workers;
+  o.lease_duration = seconds_to_ms(lease_seconds);
+  o.heartbeat_interval = seconds_to_ms(heartbeat_seconds);
+  return o;
+}
+
+std::chrono::milliseconds WorkerOptions::reaper_interval() const {
+  // Often enough that a dead worker's job waits little beyond its lease.
+  return std::clamp(seconds_to_ms(lease_seconds / 4), std::chrono::milliseconds(200),
+                    std::chrono::milliseconds(10000));
+}
+
+std::string WorkerOptions::problem() const {
+  // A lease must survive a late heartbeat or two, or healthy workers lose their jobs.
+  if (heartbeat_seconds * 3 > lease_seconds) {
+    char text[200];
+    std::snprintf(text, sizeof text,
+                  "--heartbeat-seconds %g is too long for --lease-seconds %g: a lease must last "
+                  "at least three heartbeats",
+                  heartbeat_seconds, lease_seconds);
+    return text;
+  }
+  return "";
+}
+
+void add_worker_options(CLI::App& app, WorkerOptions& o, int min_workers) {
+  app.add_option("--store", o.store,
+                 "Job store: sqlite:PATH (one process) or postgresql://USER:PASSWORD@HOST:PORT/DB "
+                 "(shared by several processes)")
+      ->capture_default_str();
+  app.add_option("--workers", o.workers,
+                 min_workers == 0 ? "Solver threads (0: API only; default: hardware cores)"
+                                  : "Solver threads (default: hardware cores)")
+      ->check(CLI::Range(min_workers, 256))
+      ->capture_default_str();
+  app.add_option("--max-attempts", o.max_attempts,
+                 "Starts after which a job whose worker died is failed, not retried")
+      ->check(CLI::Range(1, 100))
+      ->capture_default_str();
+  app.add_option("--lease-seconds", o.lease_seconds,
+                 "A running job whose worker stopped renewing its lease this long is re-queued")
+      ->check(CLI::Range(0.5, 86400.0))
+      ->capture_default_str();
+  app.add_option("--heartbeat-seconds", o.heartbeat_seconds,
+                 "How often running jobs renew their lease and look for cancels")
+      ->check(CLI::Range(0.05, 3600.0))
+      ->capture_default_str();
+}
+
+JobRunner service_job_runner() { return run_case_job; }
+
+sigset_t block_stop_signals() {
+  sigset_t stop_signals;
+  sigemptyset(&stop_signals);
+  sigaddset(&stop_signals, SIGINT);
+  sigaddset(&stop_signals, SIGTERM);
+  pthread_sigmask(SIG_BLOCK, &stop_signals, nullptr);
+  std::signal(SIGPIPE, SIG_IGN);
+  return stop_signals;
+}
+
+int wait_for_stop_signal(const sigset_t& stop_signals) {
+  int signal_number = 0;
+  sigwait(&stop_signals, &signal_number);
+  std::thread([stop_signals] {
+    int again = 0;
+    sigwait(&stop_signals, &again);
+    std::_Exit(128 + again);
+  }).detach();
+  return signal_number;
+}
+
+}  // namespace fosls::service

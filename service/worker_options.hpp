@@ -1,0 +1,48 @@
+#pragma once
+// What fosls-serve and fosls-worker share: the store and worker options, the job runner, and
+// the stop signals. One definition each, so the two programs cannot drift apart.
+
+#include <signal.h>
+
+#include <CLI/CLI.hpp>
+#include <chrono>
+#include <string>
+
+#include "job_runner.hpp"
+#include "worker_pool.hpp"
+
+namespace fosls::service {
+
+/// Options of the solver workers and their store.
+struct WorkerOptions {
+  std::string store = "sqlite:data/fosls.db";  ///< --store URL (store_url.hpp)
+  int workers = 1;
+  int max_attempts = 3;
+  double lease_seconds = 30;
+  double heartbeat_seconds = 1;
+
+  /// The pool options these give (worker id generated per process).
+  WorkerPoolOptions pool_options() const;
+  /// How often this process looks for expired leases.
+  std::chrono::milliseconds reaper_interval() const;
+  /// Why these options cannot work together, or "" when they can.
+  std::string problem() const;
+};
+
+/// Registers --store, --workers, --max-attempts, --lease-seconds, --heartbeat-seconds on
+/// `app`; `min_workers` is 0 for fosls-serve (API only) and 1 for fosls-worker.
+void add_worker_options(CLI::App& app, WorkerOptions& options, int min_workers);
+
+/// The JobRunner both programs solve jobs with.
+JobRunner service_job_runner();
+
+/// Blocks SIGINT and SIGTERM in the calling thread and every thread started after it, so that
+/// stop_signal_wait can take them as ordinary code; ignores SIGPIPE (a client closing early).
+sigset_t block_stop_signals();
+
+/// Waits for the first stop signal and returns its number. A second one then ends the process
+/// at once (running jobs are recovered later: at the next start on SQLite, by lease expiry on
+/// PostgreSQL).
+int wait_for_stop_signal(const sigset_t& stop_signals);
+
+}  // namespace fosls::service

@@ -1,0 +1,501 @@
+// One contract, two stores: every test runs against SQLite and against PostgreSQL (a throwaway
+// server started by the test process). Lifecycle, idempotency, the queue bound, cancel,
+// pagination, recovery, retention, leases (renewal, expiry, late completion refused) and claim
+// exclusivity with many threads on several store objects at once (as several processes).
+
+#include <gtest/gtest.h>
+
+#include <atomic>
+#include <cmath>
+#include <mutex>
+#include <set>
+#include <thread>
+#include <vector>
+
+#include "store_test_support.hpp"
+
+namespace fosls::service {
+namespace {
+
+using testing::claim_as;
+using testing::kUnlimited;
+using testing::make_job;
+using testing::StoreUnderTest;
+using namespace std::chrono_literals;
+
+class JobStoreContract : public ::testing::TestWithParam<std::string> {
+ protected:
+  void SetUp() override {
+    db_ = std::make_unique<StoreUnderTest>(GetParam());
+    store_ = db_->open();
+  }
+  JobStore& store() { return *store_; }
+
+  std::int64_t submit(const std::string& body) {
+    return store().submit(make_job(body), kUnlimited).job->id;
+  }
+
+  std::unique_ptr<StoreUnderTest> db_;
+  std::unique_ptr<JobStore> store_;
+};
+
+TEST_P(JobStoreContract, SubmitClaimSucceedStoresResultOnce) {
+  const SubmitOutcome submitted = store().submit(make_job(R"({"a":1})"), kUnlimited);
+  ASSERT_EQ(submitted.kind, SubmitOutcome::Kind::kCreated);
+  const std::int64_t id = submitted.job->id;
+  EXPECT_EQ(submitted.job->state, JobState::kQueued);
+  EXPECT_EQ(submitted.job->attempts, 0);
+  EXPECT_GT(submitted.job->created_at_ms, 0);
+
+  auto claimed = store().claim_next(claim_as("w1"));
+  ASSERT_TRUE(claimed);
+  EXPECT_EQ(claimed->job.id, id);
+  EXPECT_EQ(claimed->job.state, JobState::kRunning);
+  EXPECT_EQ(claimed->job.attempts, 1);
+  EXPECT_TRUE(claimed->job.started_at_ms);
+  EXPECT_EQ(claimed->case_json, R"({"a":1})");
+  EXPECT_EQ(claimed->lease.job_id, id);
+  EXPECT_EQ(claimed->lease.attempt, 1);
+  EXPECT_EQ(claimed->lease.worker_id, "w1");
+  EXPECT_FALSE(store().claim_next(claim_as("w2")));  // nothing else queued
+
+  const Lease& lease = claimed->lease;
+  store().update_progress(lease, JobProgress{7, 1e-3, -2.5});
+  auto running = store().find(id);
+  ASSERT_TRUE(running && running->progress);
+  EXPECT_EQ(running->progress->iteration, 7);
+  EXPECT_DOUBLE_EQ(running->progress->kkt_residual, 1e-3);
+  EXPECT_DOUBLE_EQ(running->progress->energy, -2.5);
+
+  const std::string vtu = "<VTKFile>" + std::string(100000, 'x') + "</VTKFile>";
+  EXPECT_TRUE(store().complete_succeeded(lease, R"({"converged":true})", vtu));
+  // A second completion of the same attempt is refused: a result is written once.
+  EXPECT_FALSE(store().complete_succeeded(lease, R"({"converged":false})", ""));
+  EXPECT_FALSE(store().complete_failed(lease, "late"));
+  auto done = store().find(id);
+  EXPECT_EQ(done->state, JobState::kSucceeded);
+  EXPECT_TRUE(done->finished_at_ms);
+  EXPECT_GE(*done->finished_at_ms, *done->started_at_ms);
+  EXPECT_EQ(store().result_json(id), R"({"converged":true})");
+  EXPECT_EQ(store().vtu(id), vtu);  // stored compressed, served as written
+  EXPECT_FALSE(store().result_json(id + 1));
+  EXPECT_FALSE(store().vtu(id + 1));
+}
+
+TEST_P(JobStoreContract, NonFiniteProgressIsStoredAsUnknown) {
+  const auto id = submit("{}");
+  const Lease lease = store().claim_next(claim_as())->lease;
+  store().update_progress(lease, JobProgress{2, std::nan(""), INFINITY});
+  const auto job = store().find(id);
+  ASSERT_TRUE(job->progress);
+  EXPECT_EQ(job->progress->iteration, 2);
+  EXPECT_TRUE(std::isnan(job->progress->kkt_residual));
+  EXPECT_TRUE(std::isnan(job->progress->energy));
+}
+
+TEST_P(JobStoreContract, OnlyTheLeaseHolderChangesARunningJob) {
+  const auto id = submit("{}");
+  const Lease lease = store().claim_next(claim_as("w1"))->lease;
+  Lease wrong_attempt = lease;
+  wrong_attempt.attempt = 2;
+  Lease wrong_worker = lease;
+  wrong_worker.worker_id = "w2";
+  for (const Lease& other : {wrong_attempt, wrong_worker}) {
+    store().update_progress(other, JobProgress{3, 1, 1});
+    EXPECT_EQ(store().renew_lease(other, 1min), LeaseStatus::kLost);
+    EXPECT_FALSE(store().complete_succeeded(other, "{}", ""));
+    EXPECT_FALSE(store().complete_failed(other, "x"));
+    EXPECT_FALSE(store().complete_cancelled(other));
+    EXPECT_FALSE(store().requeue(other));
+  }
+  EXPECT_FALSE(store().find(id)->progress);
+  EXPECT_EQ(store().find(id)->state, JobState::kRunning);
+  EXPECT_FALSE(store().result_json(id));
+}
+
+TEST_P(JobStoreContract, FailedJobKeepsItsError) {
+  const auto id = submit("{}");
+  const Lease lease = store().claim_next(claim_as())->lease;
+  EXPECT_TRUE(store().complete_failed(lease, "/weights/c1: must be positive"));
+  auto job = store().find(id);
+  EXPECT_EQ(job->state, JobState::kFailed);
+  EXPECT_EQ(job->error, "/weights/c1: must be positive");
+  EXPECT_TRUE(job->finished_at_ms);
+  EXPECT_FALSE(store().result_json(id));
+}
+
+TEST_P(JobStoreContract, ClaimsOldestFirst) {
+  const auto first = submit("1");
+  const auto second = submit("2");
+  EXPECT_EQ(store().claim_next(claim_as("a"))->job.id, first);
+  EXPECT_EQ(store().claim_next(claim_as("b"))->job.id, second);
+}
+
+TEST_P(JobStoreContract, IdempotencyKeyReplaysSameBodyAndRejectsDifferentBody) {
+  const auto created = store().submit(make_job(R"({"x":1})", "key-1"), kUnlimited);
+  ASSERT_EQ(created.kind, SubmitOutcome::Kind::kCreated);
+  const auto replay = store().submit(make_job(R"({"x":1})", "key-1"), kUnlimited);
+  EXPECT_EQ(replay.kind, SubmitOutcome::Kind::kReplayed);
+  EXPECT_EQ(replay.job->id, created.job->id);
+  const auto conflict = store().submit(make_job(R"({"x":2})", "key-1"), kUnlimited);
+  EXPECT_EQ(conflict.kind, SubmitOutcome::Kind::kKeyConflict);
+  EXPECT_EQ(conflict.job->id, created.job->id);
+  const auto other = store().submit(make_job(R"({"x":1})", "key-2"), kUnlimited);
+  EXPECT_EQ(other.kind, SubmitOutcome::Kind::kCreated);
+  EXPECT_NE(other.job->id, created.job->id);
+  EXPECT_EQ(store().count_by_state()[JobState::kQueued], 2);
+}
+
+TEST_P(JobStoreContract, QueueLimitCountsOnlyQueuedJobs) {
+  EXPECT_EQ(store().submit(make_job("1"), 2).kind, SubmitOutcome::Kind::kCreated);
+  EXPECT_EQ(store().submit(make_job("2"), 2).kind, SubmitOutcome::Kind::kCreated);
+  const auto full = store().submit(make_job("3"), 2);
+  EXPECT_EQ(full.kind, SubmitOutcome::Kind::kQueueFull);
+  EXPECT_FALSE(full.job);
+  EXPECT_EQ(store().count_by_state()[JobState::kQueued], 2);
+  ASSERT_TRUE(store().claim_next(claim_as()));  // one leaves the queue
+  EXPECT_EQ(store().submit(make_job("3"), 2).kind, SubmitOutcome::Kind::kCreated);
+}
+
+TEST_P(JobStoreContract, CancelQueuedRunningAndFinished) {
+  const auto running = submit("1");
+  const auto queued = submit("2");
+  const auto claimed = store().claim_next(claim_as());
+  ASSERT_EQ(claimed->job.id, running);
+  EXPECT_EQ(store().renew_lease(claimed->lease, 1min), LeaseStatus::kHeld);
+
+  const auto q = store().cancel(queued);
+  EXPECT_EQ(q.kind, CancelOutcome::Kind::kCancelled);
+  EXPECT_EQ(q.job->state, JobState::kCancelled);
+  EXPECT_TRUE(q.job->finished_at_ms);
+
+  const auto r = store().cancel(running);
+  EXPECT_EQ(r.kind, CancelOutcome::Kind::kRequested);
+  EXPECT_EQ(r.job->state, JobState::kRunning);
+  EXPECT_TRUE(r.job->cancel_requested);
+  // The worker hears of it through its heartbeat, from whichever process took the cancel.
+  EXPECT_EQ(store().renew_lease(claimed->lease, 1min), LeaseStatus::kCancelRequested);
+  EXPECT_TRUE(store().complete_cancelled(claimed->lease));
+  EXPECT_EQ(store().renew_lease(claimed->lease, 1min), LeaseStatus::kLost);
+
+  EXPECT_EQ(store().cancel(running).kind, CancelOutcome::Kind::kAlreadyFinished);
+  EXPECT_EQ(store().cancel(999).kind, CancelOutcome::Kind::kNotFound);
+  EXPECT_FALSE(store().claim_next(claim_as()));  // a cancelled queued job is never claimed
+}
+
+TEST_P(JobStoreContract, DeleteOnlyFinishedJobsAndTheirResults) {
+  const auto id = submit("1");
+  EXPECT_EQ(store().remove(id), DeleteOutcome::kNotFinished);
+  const Lease lease = store().claim_next(claim_as())->lease;
+  EXPECT_EQ(store().remove(id), DeleteOutcome::kNotFinished);
+  ASSERT_TRUE(store().complete_succeeded(lease, "{}", "vtu"));
+  EXPECT_EQ(store().remove(id), DeleteOutcome::kDeleted);
+  EXPECT_EQ(store().remove(id), DeleteOutcome::kNotFound);
+  EXPECT_FALSE(store().find(id));
+  EXPECT_FALSE(store().result_json(id));  // removed with the job (foreign key cascade)
+  // Ids are never reused after a deletion.
+  EXPECT_GT(submit("2"), id);
+}
+
+TEST_P(JobStoreContract, ListsNewestFirstWithKeysetPages) {
+  std::vector<std::int64_t> ids;
+  for (int i = 0; i < 7; ++i) ids.push_back(submit(std::to_string(i)));
+  ASSERT_TRUE(store().claim_next(claim_as()));  // ids[0] is running
+
+  JobListQuery query;
+  query.page_size = 3;
+  std::vector<std::int64_t> seen;
+  int pages = 0;
+  for (;;) {
+    JobPage page = store().list(query);
+    ++pages;
+    for (const Job& j : page.jobs) seen.push_back(j.id);
+    if (!page.next_before_id) break;
+    query.before_id = page.next_before_id;
+    // Jobs added while paging come before the first page, never into the walk.
+    submit("late-" + std::to_string(pages));
+  }
+  EXPECT_EQ(pages, 3);
+  EXPECT_EQ(seen, std::vector<std::int64_t>(ids.rbegin(), ids.rend()));
+
+  JobListQuery running;
+  running.state = JobState::kRunning;
+  JobPage page = store().list(running);
+  ASSERT_EQ(page.jobs.size(), 1u);
+  EXPECT_EQ(page.jobs[0].id, ids[0]);
+  EXPECT_FALSE(page.next_before_id);
+
+  JobListQuery queued_before;  // both filters at once
+  queued_before.state = JobState::kQueued;
+  queued_before.before_id = ids[4];
+  queued_before.page_size = 2;
+  page = store().list(queued_before);
+  ASSERT_EQ(page.jobs.size(), 2u);
+  EXPECT_EQ(page.jobs[0].id, ids[3]);
+  EXPECT_EQ(page.jobs[1].id, ids[2]);
+  EXPECT_EQ(page.next_before_id, ids[2]);
+  queued_before.before_id = page.next_before_id;
+  page = store().list(queued_before);
+  ASSERT_EQ(page.jobs.size(), 1u);  // ids[0] is running, not queued
+  EXPECT_EQ(page.jobs[0].id, ids[1]);
+  EXPECT_FALSE(page.next_before_id);
+
+  JobListQuery exact;
+  exact.page_size = 9;  // exactly all (7 + 2 added while paging): no further page
+  EXPECT_EQ(store().list(exact).jobs.size(), 9u);
+  EXPECT_FALSE(store().list(exact).next_before_id);
+}
+
+TEST_P(JobStoreContract, RecoveryRequeuesThenFailsAtMaxAttemptsAndHonoursCancels) {
+  const auto a = submit("1");
+  const auto b = submit("2");
+  const auto c = submit("3");
+  ASSERT_EQ(store().claim_next(claim_as())->job.id, a);
+  ASSERT_EQ(store().claim_next(claim_as())->job.id, b);
+  ASSERT_EQ(store().cancel(b).kind, CancelOutcome::Kind::kRequested);
+  // The process "crashes" here: the store goes away with a and b running.
+  store_ = db_->open();
+  RecoveryReport report = store().recover_interrupted(2);
+  EXPECT_EQ(report.requeued, std::vector<std::int64_t>{a});
+  EXPECT_EQ(report.cancelled, std::vector<std::int64_t>{b});
+  EXPECT_TRUE(report.failed.empty());
+  EXPECT_EQ(store().find(b)->state, JobState::kCancelled);
+  EXPECT_EQ(store().find(c)->state, JobState::kQueued);
+  auto again = store().claim_next(claim_as());
+  ASSERT_EQ(again->job.id, a);
+  EXPECT_EQ(again->job.attempts, 2);
+  // ... and crashes again while solving a.
+  store_ = db_->open();
+  report = store().recover_interrupted(2);
+  EXPECT_EQ(report.failed, std::vector<std::int64_t>{a});
+  EXPECT_TRUE(report.requeued.empty());
+  EXPECT_EQ(store().find(a)->state, JobState::kFailed);
+  EXPECT_NE(store().find(a)->error.find("max-attempts"), std::string::npos);
+  EXPECT_EQ(store().find(c)->state, JobState::kQueued);  // never started: untouched
+}
+
+TEST_P(JobStoreContract, RecoveryBelowLimitRequeuesAndCountsTheAttempt) {
+  const auto id = submit("1");
+  const Lease first = store().claim_next(claim_as("w1"))->lease;
+  store().update_progress(first, JobProgress{5, 0.1, 0.2});
+  store_ = db_->open();
+  const RecoveryReport report = store().recover_interrupted(3);
+  EXPECT_EQ(report.requeued, std::vector<std::int64_t>{id});
+  auto job = store().find(id);
+  EXPECT_EQ(job->state, JobState::kQueued);
+  EXPECT_EQ(job->attempts, 1);
+  EXPECT_FALSE(job->progress);
+  EXPECT_FALSE(job->started_at_ms);
+  auto claimed = store().claim_next(claim_as("w1"));  // even the same worker name
+  ASSERT_TRUE(claimed);
+  EXPECT_EQ(claimed->job.attempts, 2);
+  // The interrupted attempt can no longer complete the job.
+  EXPECT_FALSE(store().complete_succeeded(first, "{}", ""));
+  EXPECT_TRUE(store().complete_succeeded(claimed->lease, "{}", ""));
+}
+
+TEST_P(JobStoreContract, ShutdownRequeueDoesNotCountTheAttempt) {
+  const auto id = submit("1");
+  const Lease lease = store().claim_next(claim_as())->lease;
+  EXPECT_TRUE(store().requeue(lease));
+  auto job = store().find(id);
+  EXPECT_EQ(job->state, JobState::kQueued);
+  EXPECT_EQ(job->attempts, 0);
+  EXPECT_FALSE(job->started_at_ms);
+  EXPECT_FALSE(store().requeue(lease));  // only once
+  EXPECT_EQ(store().claim_next(claim_as("w2"))->job.attempts, 1);
+}
+
+TEST_P(JobStoreContract, RequeueAfterCancelRequestCancels) {
+  const auto id = submit("1");
+  const Lease lease = store().claim_next(claim_as())->lease;
+  ASSERT_EQ(store().cancel(id).kind, CancelOutcome::Kind::kRequested);
+  EXPECT_TRUE(store().requeue(lease));
+  EXPECT_EQ(store().find(id)->state, JobState::kCancelled);
+}
+
+TEST_P(JobStoreContract, RenewedLeasesDoNotExpire) {
+  const auto id = submit("1");
+  const Lease lease = store().claim_next(claim_as("w1", 1min))->lease;
+  EXPECT_TRUE(store().requeue_expired_leases(3).requeued.empty());
+  EXPECT_EQ(store().renew_lease(lease, 1min), LeaseStatus::kHeld);
+  EXPECT_TRUE(store().requeue_expired_leases(3).requeued.empty());
+  EXPECT_EQ(store().find(id)->state, JobState::kRunning);
+}
+
+// A worker killed with its job: the lease runs out, whoever notices puts the job back with the
+// attempt counted, another worker claims it, and the first one's late result is refused.
+TEST_P(JobStoreContract, ExpiredLeaseIsRequeuedAndTheLateWorkerRefused) {
+  const auto id = submit("1");
+  const auto other = submit("2");
+  const Lease dead = store().claim_next(claim_as("dead", 50ms))->lease;
+  const Lease alive = store().claim_next(claim_as("alive", 10min))->lease;
+  ASSERT_EQ(alive.job_id, other);
+  std::this_thread::sleep_for(200ms);  // at least the 50 ms lease: expired on any clock
+  auto noticing = db_->open();         // any other process notices
+  const RecoveryReport report = noticing->requeue_expired_leases(3);
+  EXPECT_EQ(report.requeued, std::vector<std::int64_t>{id});
+  EXPECT_TRUE(report.failed.empty());
+  EXPECT_EQ(store().find(other)->state, JobState::kRunning);  // its lease is still valid
+  EXPECT_EQ(store().find(id)->attempts, 1);                   // the lost attempt counts
+
+  const auto retry = noticing->claim_next(claim_as("second"));
+  ASSERT_TRUE(retry);
+  EXPECT_EQ(retry->job.id, id);
+  EXPECT_EQ(retry->lease.attempt, 2);
+  // The first worker was only slow, not dead: everything it does now is refused.
+  EXPECT_EQ(store().renew_lease(dead, 1min), LeaseStatus::kLost);
+  EXPECT_FALSE(store().complete_succeeded(dead, R"({"late":true})", "late"));
+  EXPECT_TRUE(store().complete_succeeded(retry->lease, R"({"late":false})", "v"));
+  EXPECT_EQ(store().result_json(id), R"({"late":false})");
+  EXPECT_TRUE(noticing->requeue_expired_leases(3).requeued.empty());  // nothing twice
+}
+
+TEST_P(JobStoreContract, ExpiredLeasesFailAtMaxAttemptsAndHonourCancels) {
+  const auto doomed = submit("1");
+  const auto cancelled = submit("2");
+  store().claim_next(claim_as("a", 1ms));
+  store().claim_next(claim_as("b", 1ms));
+  ASSERT_EQ(store().cancel(cancelled).kind, CancelOutcome::Kind::kRequested);
+  std::this_thread::sleep_for(100ms);
+  const RecoveryReport report = store().requeue_expired_leases(1);
+  EXPECT_EQ(report.failed, std::vector<std::int64_t>{doomed});
+  EXPECT_EQ(report.cancelled, std::vector<std::int64_t>{cancelled});
+  EXPECT_TRUE(report.requeued.empty());
+  const Job failed = *store().find(doomed);
+  EXPECT_EQ(failed.state, JobState::kFailed);
+  EXPECT_NE(failed.error.find("max-attempts"), std::string::npos) << failed.error;
+  EXPECT_TRUE(failed.finished_at_ms);
+  EXPECT_EQ(store().find(cancelled)->state, JobState::kCancelled);
+}
+
+TEST_P(JobStoreContract, RetentionDeletesOnlyOldFinishedJobs) {
+  const auto finished = submit("1");
+  const auto queued = submit("2");
+  ASSERT_TRUE(store().complete_succeeded(store().claim_next(claim_as())->lease, "{}", ""));
+  const std::int64_t finished_at = *store().find(finished)->finished_at_ms;
+  EXPECT_EQ(store().delete_finished_before(finished_at), 0);  // not older than the cut-off
+  EXPECT_EQ(store().delete_finished_before(finished_at + 1), 1);
+  EXPECT_FALSE(store().find(finished));
+  EXPECT_TRUE(store().find(queued));  // unfinished jobs are never deleted
+  EXPECT_EQ(store().delete_finished_before(now_unix_ms() + 1'000'000), 0);
+}
+
+TEST_P(JobStoreContract, RetentionDeletesInBatchesUntilDone) {
+  for (int i = 0; i < 230; ++i) {
+    submit(std::to_string(i));
+    ASSERT_TRUE(store().complete_failed(store().claim_next(claim_as())->lease, "x"));
+  }
+  EXPECT_EQ(store().delete_finished_before(now_unix_ms() + 1'000'000), 230);
+  EXPECT_EQ(store().count_by_state()[JobState::kFailed], 0);
+}
+
+TEST_P(JobStoreContract, ConcurrentSubmitsWithOneKeyCreateOneJob) {
+  constexpr int kThreads = 6;
+  std::vector<std::unique_ptr<JobStore>> stores;
+  for (int i = 0; i < kThreads; ++i) stores.push_back(db_->open());
+  std::atomic<int> created{0}, replayed{0}, errors{0};
+  std::vector<std::thread> threads;
+  for (int i = 0; i < kThreads; ++i) {
+    threads.emplace_back([&, i] {
+      for (int k = 0; k < 10; ++k) {
+        try {
+          const auto out =
+              stores[i]->submit(make_job("same", "key-" + std::to_string(k)), kUnlimited);
+          (out.kind == SubmitOutcome::Kind::kCreated ? created : replayed)++;
+        } catch (const StoreError&) {
+          ++errors;
+        }
+      }
+    });
+  }
+  for (auto& t : threads) t.join();
+  EXPECT_EQ(errors.load(), 0);
+  EXPECT_EQ(created.load(), 10);
+  EXPECT_EQ(replayed.load(), 10 * (kThreads - 1));
+  EXPECT_EQ(store().count_by_state()[JobState::kQueued], 10);
+}
+
+// Submitters, claimers and readers on separate threads and separate store objects (separate
+// processes, as far as the database can tell): every job is claimed exactly once and no call
+// fails (for SQLite: no "database is locked").
+TEST_P(JobStoreContract, ClaimsAreExclusiveUnderConcurrency) {
+  constexpr int kSubmitters = 4;
+  constexpr int kPerSubmitter = 50;
+  constexpr int kWorkers = 4;
+  std::vector<std::unique_ptr<JobStore>> stores;
+  for (int i = 0; i < kSubmitters + kWorkers; ++i) stores.push_back(db_->open());
+  std::atomic<int> errors{0};
+  std::atomic<int> completed{0};
+  std::mutex claimed_mutex;
+  std::multiset<std::int64_t> claimed_ids;
+
+  std::vector<std::thread> threads;
+  for (int s = 0; s < kSubmitters; ++s) {
+    threads.emplace_back([&, s] {
+      JobStore& st = *stores[s];
+      for (int i = 0; i < kPerSubmitter; ++i) {
+        try {
+          const std::string key = "k" + std::to_string(s) + "-" + std::to_string(i);
+          auto out = st.submit(make_job(std::to_string(i), key), kUnlimited);
+          if (out.kind != SubmitOutcome::Kind::kCreated) ++errors;
+          // Every request is retried once, as a client would after a timeout.
+          if (st.submit(make_job(std::to_string(i), key), kUnlimited).kind !=
+              SubmitOutcome::Kind::kReplayed) {
+            ++errors;
+          }
+          st.find(out.job->id);
+        } catch (const StoreError&) {
+          ++errors;
+        }
+      }
+    });
+  }
+  for (int w = 0; w < kWorkers; ++w) {
+    threads.emplace_back([&, w] {
+      JobStore& st = *stores[kSubmitters + w];
+      const std::string worker = "w" + std::to_string(w);
+      while (completed.load() < kSubmitters * kPerSubmitter) {
+        try {
+          auto job = st.claim_next(claim_as(worker));
+          if (!job) {
+            std::this_thread::yield();
+            continue;
+          }
+          {
+            std::lock_guard lock(claimed_mutex);
+            claimed_ids.insert(job->job.id);
+          }
+          st.update_progress(job->lease, JobProgress{1, 0.5, 0.5});
+          if (st.renew_lease(job->lease, 1min) != LeaseStatus::kHeld) ++errors;
+          if (!st.complete_succeeded(job->lease, "{}", "")) ++errors;
+          ++completed;
+        } catch (const StoreError& e) {
+          ADD_FAILURE() << e.what();
+          ++errors;
+          return;
+        }
+      }
+    });
+  }
+  for (auto& t : threads) t.join();
+  EXPECT_EQ(errors.load(), 0);
+  EXPECT_EQ(completed.load(), kSubmitters * kPerSubmitter);
+  EXPECT_EQ(claimed_ids.size(), static_cast<std::size_t>(kSubmitters * kPerSubmitter));
+  EXPECT_EQ(std::set<std::int64_t>(claimed_ids.begin(), claimed_ids.end()).size(),
+            claimed_ids.size());  // nobody claimed a job twice
+  EXPECT_EQ(store().count_by_state()[JobState::kSucceeded], kSubmitters * kPerSubmitter);
+}
+
+TEST_P(JobStoreContract, PingAndCounts) {
+  EXPECT_NO_THROW(store().ping());
+  const auto counts = store().count_by_state();
+  EXPECT_EQ(counts.size(), kAllJobStates.size());
+  for (const auto& [state, n] : counts) EXPECT_EQ(n, 0);
+}
+
+INSTANTIATE_TEST_SUITE_P(Stores, JobStoreContract, ::testing::Values("sqlite", "postgresql"),
+                         [](const auto& info) { return info.param; });
+
+}  // namespace
+}  // namespace fosls::service
