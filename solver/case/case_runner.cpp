@@ -7,6 +7,7 @@
 #include "assembly/definiteness.hpp"
 #include "assembly/discretization.hpp"
 #include "case/expression.hpp"
+#include "core/indefinite_system.hpp"
 #include "mesh/mesh_factory.hpp"
 #include "post/contact_output.hpp"
 #include "post/vtu_writer.hpp"
@@ -201,11 +202,9 @@ RunOutput run_case(const CaseSpec& spec, const RunControl& control, const CaseLi
   SolverReport report;
   try {
     report = solve_box_qp(problem.qp, hierarchy, options, observer, x);
-  } catch (const std::runtime_error& e) {
+  } catch (const IndefiniteSystemError&) {
     // Positive definiteness failing inside a solver is the user's weights, not a crash.
-    if (std::string(e.what()).find("positive definite") != std::string::npos)
-      throw indefinite(spec.weights);
-    throw;
+    throw indefinite(spec.weights);
   }
   const auto t_solve = Clock::now();
 
