@@ -59,6 +59,12 @@ int serve(const ServeOptions& o, const sigset_t& stop_signals) {
   }
   JobStore& store = *opened.store;
   log_recovery(log, opened.recovered, opened.recovery_reason);
+  if (o.worker.workers == 0 && opened.location.kind == StoreLocation::Kind::kSqlite) {
+    log.write("warning", {{"message",
+                           "--workers 0 on a sqlite: store: nothing will solve the jobs queued "
+                           "here (a SQLite file belongs to one process; fosls-worker needs "
+                           "--store postgresql://…)"}});
+  }
 
   Metrics metrics;
   WorkerPool pool(store, service_job_runner(), log, metrics, o.worker.pool_options());

@@ -25,16 +25,6 @@ DOC = os.path.join(ROOT, "docs", "architecture.md")
 BEGIN, END = "<!-- layers:begin (tests/check_layers.py --write-doc) -->", "<!-- layers:end -->"
 INCLUDE = re.compile(r'^\s*#\s*include\s+"([^"]+)"', re.M)
 
-# Includes the build still allows while the mesh layer reports some errors as CaseException
-# and mesh_factory.* (compiled into the case library) still lives in solver/mesh/. They are
-# left out of the graph. Remove each entry when its include goes.
-INTERIM = {
-    "mesh/gmsh_mesh.hpp": {"case/case_error.hpp"},
-    "mesh/msh_reader.cpp": {"case/case_error.hpp"},
-    "mesh/mesh_factory.hpp": {"case/case_spec.hpp"},
-    "mesh/mesh_factory.cpp": {"case/case_error.hpp"},
-}
-
 
 def read_links(build):
     links = {}
@@ -105,11 +95,8 @@ def check(build):
     for folder in links:
         allowed = closure(links, folder) | {folder}
         for path in sources(os.path.join(ROOT, "solver", folder)):
-            rel = os.path.relpath(path, os.path.join(ROOT, "solver"))
             for target, written in includes(path):
                 target_folder = target.split("/")[0] if "/" in target else folder
-                if target in INTERIM.get(rel, ()):
-                    continue
                 if target_folder not in links:
                     continue  # a header outside the library (none today)
                 if target_folder not in allowed:

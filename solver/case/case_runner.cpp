@@ -7,8 +7,8 @@
 #include "assembly/definiteness.hpp"
 #include "assembly/discretization.hpp"
 #include "case/expression.hpp"
+#include "case/mesh_factory.hpp"
 #include "core/indefinite_system.hpp"
-#include "mesh/mesh_factory.hpp"
 #include "post/contact_output.hpp"
 #include "post/vtu_writer.hpp"
 #include "solvers/solve_loop.hpp"
@@ -166,11 +166,12 @@ bool has_contact(const CaseSpec& spec) {
 
 }  // namespace
 
-std::vector<CaseError> validate_case(const nlohmann::json& j, const CaseReadOptions& options) {
+std::vector<CaseError> validate_case(const nlohmann::json& j, const CaseReadOptions& options,
+                                     const MeshingControl& meshing) {
   CaseReadResult read = read_case(j, options);
   if (!read.errors.empty()) return read.errors;
   try {
-    const Mesh mesh = build_coarse_mesh(read.spec->mesh);
+    const Mesh mesh = build_coarse_mesh(read.spec->mesh, meshing);
     return check_against_mesh(*read.spec, mesh, options.limits);
   } catch (const CaseException& e) {
     return e.errors();
@@ -179,7 +180,14 @@ std::vector<CaseError> validate_case(const nlohmann::json& j, const CaseReadOpti
 
 RunOutput run_case(const CaseSpec& spec, const RunControl& control, const CaseLimits& limits) {
   const auto t0 = Clock::now();
-  Mesh coarse = build_coarse_mesh(spec.mesh);
+  Mesh coarse;
+  try {
+    coarse = build_coarse_mesh(spec.mesh, MeshingControl{control.mesher, control.cancel});
+  } catch (const MeshingCancelled&) {
+    RunOutput cancelled;
+    cancelled.cancelled = true;
+    return cancelled;
+  }
   if (auto errors = check_against_mesh(spec, coarse, limits); !errors.empty())
     throw CaseException(std::move(errors));
   ProblemData data = problem_data(spec, coarse);

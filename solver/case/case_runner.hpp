@@ -10,6 +10,7 @@
 #include "case/case_error.hpp"
 #include "case/case_reader.hpp"
 #include "case/case_spec.hpp"
+#include "mesh/gmsh_mesh.hpp"
 #include "solvers/iteration_record.hpp"
 
 namespace fosls {
@@ -22,6 +23,8 @@ struct RunControl {
   const std::atomic<bool>* cancel = nullptr;
   /// Whether to produce the VTU text.
   bool want_vtu = true;
+  /// Limits of the mesher process (gmsh runs in a child process; see mesh/gmsh_mesh.hpp).
+  MesherLimits mesher;
 };
 
 struct RunOutput {
@@ -32,10 +35,13 @@ struct RunOutput {
 
 /// Everything that validation can say about a case JSON, including what needs the coarse mesh
 /// (mesh errors, groups named in `boundary` that the mesh does not have, DOF limits).
-std::vector<CaseError> validate_case(const nlohmann::json& j, const CaseReadOptions& options = {});
+/// Throws MeshingCancelled when `meshing.cancel` stopped the mesher.
+std::vector<CaseError> validate_case(const nlohmann::json& j, const CaseReadOptions& options = {},
+                                     const MeshingControl& meshing = {});
 
 /// Runs a validated case. Throws CaseException for problems a user caused that only show up
-/// while running (for example weights that make the matrix indefinite).
+/// while running (for example weights that make the matrix indefinite). A cancel while the
+/// coarse mesh is made returns at once with `cancelled` set and an empty result.
 RunOutput run_case(const CaseSpec& spec, const RunControl& control = {},
                    const CaseLimits& limits = {});
 

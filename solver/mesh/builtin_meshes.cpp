@@ -37,7 +37,7 @@ Mesh make_square(const SquareParams& p) {
   return Mesh(std::move(v), std::move(tris), std::move(seg), {"bottom", "right", "top", "left"});
 }
 
-Mesh make_hertz(const HertzParams& p) {
+Mesh make_hertz(const HertzParams& p, const MeshingControl& control) {
   if (!(p.radius > 0) || !std::isfinite(p.radius))
     throw std::invalid_argument("hertz: radius must be a positive number");
   if (!(p.contact_fraction > 0 && p.contact_fraction < 1))
@@ -60,11 +60,12 @@ Mesh make_hertz(const HertzParams& p) {
   g.groups = {{"top", {2}}, {"contact", {0, 4}}, {"free", {1, 3}}};
   // Edge length grows linearly with the distance from the contact point, from size at the
   // origin to grading * size at the corners of the flat side (distance √2 R).
-  const double far = std::sqrt(2.0) * r;
-  auto size = [&p, far](const Point& x) {
-    return p.size * (1.0 + (p.grading - 1.0) * std::min(1.0, x.norm() / far));
-  };
-  return mesh_from_geometry(g, size);
+  SizeField size;
+  size.size = p.size;
+  size.grading = p.grading;
+  size.origin = Point(0, 0);
+  size.reach = std::sqrt(2.0) * r;
+  return mesh_from_geometry(g, size, control);
 }
 
 }  // namespace fosls

@@ -1,6 +1,7 @@
 #pragma once
 // Shipped geometries: the rectangle `square` and the Hertz half disk `hertz`.
 
+#include "mesh/gmsh_mesh.hpp"
 #include "mesh/mesh.hpp"
 
 namespace fosls {
@@ -20,12 +21,14 @@ Mesh make_square(const SquareParams& p);
 /// plane y = 0 at the origin. Groups: `top` (flat side), `contact` (arc points with
 /// |x| ≤ contact_fraction · R) and `free` (rest of the arc). The coarse mesh is graded towards
 /// the contact point: edge length ≈ size near the origin growing to ≈ grading · size far away.
+/// Meshed by gmsh in the mesher process (gmsh_mesh.hpp); throws std::invalid_argument for bad
+/// parameters and MeshError when meshing fails.
 struct HertzParams {
   double radius = 1.0;
   double contact_fraction = 0.5;
   double size = 0.1;
   double grading = 7.0;
 };
-Mesh make_hertz(const HertzParams& p);
+Mesh make_hertz(const HertzParams& p, const MeshingControl& control = {});
 
 }  // namespace fosls

@@ -3,6 +3,7 @@
 // meshed through the gmsh C++ API. No gmsh script text is ever involved.
 
 #include <array>
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -26,6 +27,22 @@ struct GeometrySpec {
   std::vector<Point> points;
   std::vector<Curve> curves;  ///< together they must form one closed loop
   std::vector<Group> groups;  ///< every curve in exactly one group
+};
+
+/// Target edge length of a mesh: `size` at `origin`, growing linearly with the distance to
+/// `grading · size` at distance `reach` and beyond. grading = 1 is a uniform size. A
+/// description rather than a function, so that it can be sent to the mesher process.
+struct SizeField {
+  double size = 0.25;
+  double grading = 1.0;
+  Point origin = Point::Zero();
+  double reach = std::numeric_limits<double>::infinity();
+
+  double at(const Point& x) const {
+    if (grading == 1.0) return size;
+    const double t = (x - origin).norm() / reach;
+    return size * (1.0 + (grading - 1.0) * (t < 1.0 ? t : 1.0));
+  }
 };
 
 }  // namespace fosls

@@ -1,54 +1,59 @@
 #pragma once
-// Meshing through the gmsh C++ API. gmsh keeps global state and is not thread-safe, so every
-// gmsh call in the process goes through gmsh_mutex(); gmsh errors become CaseException.
+// Meshing with gmsh, always in a child process (the program fosls-mesher): gmsh 4.8 can abort
+// the whole process on degenerate input (an exception thrown inside an OpenMP region), loop
+// for minutes or exhaust memory, and none of that may reach the caller. The geometry is
+// checked here first (geometry_checks.hpp, coarse_mesh_estimate.hpp); then the mesher runs
+// under a wall-clock deadline, a CPU limit and an address-space limit, and every way it can
+// end becomes a Mesh or a MeshError whose field is relative to the mesh section.
 
-#include <functional>
-#include <mutex>
+#include <atomic>
+#include <chrono>
+#include <cstddef>
+#include <stdexcept>
 #include <string>
-#include <vector>
 
-#include "case/case_error.hpp"
 #include "mesh/geometry_spec.hpp"
 #include "mesh/mesh.hpp"
+#include "mesh/mesh_error.hpp"
 
 namespace fosls {
 
-/// The one mutex that guards every gmsh call in the process. Hold it for the whole sequence of
-/// calls that builds or reads a model: gmsh's current model is global.
-std::mutex& gmsh_mutex();
+/// Limits of one mesher process.
+struct MesherLimits {
+  std::chrono::milliseconds time{60000};            ///< wall clock (and, plus 5 s, CPU time)
+  std::size_t memory_bytes = std::size_t{2} << 30;  ///< address space of the mesher
+};
 
-/// Initialises gmsh once per process (no configuration files, no terminal output). The caller
-/// must hold gmsh_mutex().
-void ensure_gmsh_initialized();
+/// How a caller steers meshing.
+struct MeshingControl {
+  MesherLimits limits;
+  /// When set and it becomes true, the mesher is killed and MeshingCancelled thrown.
+  const std::atomic<bool>* cancel = nullptr;
+};
 
-/// Target edge length h(x, y) > 0 of a graded mesh.
-using MeshSizeField = std::function<double(const Point&)>;
-
-/// Estimated coarse triangles above which meshing is refused: a too small `size` would
-/// otherwise let gmsh run for minutes and exhaust memory.
-inline constexpr double kMaxCoarseTriangles = 250000;
-
-/// Every problem of a declarative geometry, each with its pointer under /mesh/geometry:
-/// indices out of range, non-finite coordinates, zero-length curves, arcs whose end points are
-/// not equidistant from the centre (1e-9 relative) or that span half a circle, curves that
-/// cross, touch or overlap other than at shared end points, curves that do not form exactly
-/// one closed loop, curves in no group or in two, empty or repeated group names.
-std::vector<CaseError> validate_geometry(const GeometrySpec& geometry);
+/// Thrown when meshing stopped because MeshingControl::cancel was set.
+class MeshingCancelled : public std::runtime_error {
+ public:
+  MeshingCancelled() : std::runtime_error("meshing was cancelled") {}
+};
 
 /// Meshes a declarative geometry with the uniform target edge length `size`. Boundary groups
 /// are the geometry's groups (same order); every edge on an arc carries a BoundaryCurve so that
-/// refinement puts new midpoints on the circle. Throws CaseException listing every problem of
-/// validate_geometry, a too small size (/mesh/size) or a gmsh failure (/mesh/geometry).
-Mesh mesh_from_geometry(const GeometrySpec& geometry, double size);
+/// refinement puts new midpoints on the circle. Throws MeshError listing every problem of
+/// validate_geometry, a too small size (/size), or a mesher failure, crash, timeout or lack
+/// of memory (/geometry). Throws std::runtime_error only when the mesher cannot be run at all.
+Mesh mesh_from_geometry(const GeometrySpec& geometry, double size,
+                        const MeshingControl& control = {});
 
-/// As above with a graded target edge length h(x, y) (used by the shipped Hertz mesh).
-Mesh mesh_from_geometry(const GeometrySpec& geometry, const MeshSizeField& size);
+/// As above with a graded target edge length (used by the shipped Hertz mesh).
+Mesh mesh_from_geometry(const GeometrySpec& geometry, const SizeField& size,
+                        const MeshingControl& control = {});
 
 /// Meshes a gmsh .geo script (command line only: scripts can run shell commands). Physical
 /// curves become boundary groups (named by their physical name, or by their number when
 /// unnamed); circle arcs are recognised so refinement snaps onto them. `size` caps the edge
 /// length (Mesh.MeshSizeMax); sizes set in the script still apply below it. Errors are
-/// CaseException with pointer /mesh/geo_file.
-Mesh mesh_from_geo_file(const std::string& path, double size);
+/// MeshError at /geo_file or /size.
+Mesh mesh_from_geo_file(const std::string& path, double size, const MeshingControl& control = {});
 
 }  // namespace fosls

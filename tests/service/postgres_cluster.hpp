@@ -63,6 +63,14 @@ inline int run_program(const std::vector<std::string>& args, const std::string& 
   return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
 }
 
+/// The whole text of a file ("" when it cannot be read).
+inline std::string read_file(const std::string& path) {
+  std::ifstream in(path);
+  std::stringstream ss;
+  ss << in.rdbuf();
+  return ss.str();
+}
+
 /// A loopback TCP port nobody listens on right now.
 inline int free_port() {
   const int fd = socket(AF_INET, SOCK_STREAM, 0);
@@ -94,7 +102,7 @@ class PostgresCluster {
     if (run_program(as_user({bin + "/initdb", "-D", data, "-U", "fosls", "--auth=trust", "-N", "-E",
                              "UTF8", "--locale=C"}),
                     log) != 0) {
-      throw std::runtime_error("initdb failed:\n" + read(log));
+      throw std::runtime_error("initdb failed:\n" + read_file(log));
     }
     port_ = free_port();
     // fsync off: a test server's data is thrown away; the stores' own durability settings are
@@ -112,7 +120,7 @@ class PostgresCluster {
       int status = 0;
       if (waitpid(pid_, &status, WNOHANG) == pid_ || std::chrono::steady_clock::now() > give_up) {
         pid_ = -1;
-        throw std::runtime_error("the PostgreSQL server did not start:\n" + read(log));
+        throw std::runtime_error("the PostgreSQL server did not start:\n" + read_file(log));
       }
       std::this_thread::sleep_for(std::chrono::milliseconds(50));
     }
@@ -188,13 +196,6 @@ class PostgresCluster {
     if (die_with_parent) out.insert(out.end(), {"--pdeathsig", "QUIT"});
     out.insert(out.end(), args.begin(), args.end());
     return out;
-  }
-
-  static std::string read(const std::string& path) {
-    std::ifstream in(path);
-    std::stringstream ss;
-    ss << in.rdbuf();
-    return ss.str();
   }
 
   TempDir dir_;

@@ -22,13 +22,27 @@ foreach(store sqlite postgresql)
 endforeach()
 
 # Integration: needs the real solver behind fosls-serve.
-add_executable(service_integration_test ${SERVICE_TEST_DIR}/service_integration_test.cpp)
-target_link_libraries(service_integration_test PRIVATE GTest::gtest_main PkgConfig::HTTPLIB
-                                                       PkgConfig::SQLITE3 nlohmann_json::nlohmann_json)
-target_include_directories(service_integration_test PRIVATE ${SERVICE_TEST_DIR})
-target_compile_definitions(service_integration_test PRIVATE
+foreach(name service_integration_test service_isolation_test)
+  add_executable(${name} ${SERVICE_TEST_DIR}/${name}.cpp)
+  target_link_libraries(${name} PRIVATE GTest::gtest_main PkgConfig::HTTPLIB PkgConfig::SQLITE3
+                                        nlohmann_json::nlohmann_json)
+  target_include_directories(${name} PRIVATE ${SERVICE_TEST_DIR})
+  target_compile_definitions(${name} PRIVATE
+    FOSLS_SERVE_PATH="$<TARGET_FILE:fosls-serve>"
+    FOSLS_EXAMPLES_DIR="${PROJECT_SOURCE_DIR}/solver/examples")
+  add_dependencies(${name} fosls-serve)
+  gtest_discover_tests(${name} PROPERTIES LABELS integration TIMEOUT 240 DISCOVERY_TIMEOUT 60)
+endforeach()
+
+# Several processes on one PostgreSQL database (a throwaway server the test starts): one
+# API-only fosls-serve and three fosls-worker, with workers and the API killed during the run.
+add_executable(cluster_integration_test ${SERVICE_TEST_DIR}/cluster_integration_test.cpp)
+target_link_libraries(cluster_integration_test PRIVATE fosls_service GTest::gtest_main)
+target_include_directories(cluster_integration_test PRIVATE ${SERVICE_TEST_DIR})
+target_compile_definitions(cluster_integration_test PRIVATE
   FOSLS_SERVE_PATH="$<TARGET_FILE:fosls-serve>"
+  FOSLS_WORKER_PATH="$<TARGET_FILE:fosls-worker>"
   FOSLS_EXAMPLES_DIR="${PROJECT_SOURCE_DIR}/solver/examples")
-add_dependencies(service_integration_test fosls-serve)
-gtest_discover_tests(service_integration_test PROPERTIES LABELS integration TIMEOUT 240
+add_dependencies(cluster_integration_test fosls-serve fosls-worker)
+gtest_discover_tests(cluster_integration_test PROPERTIES LABELS integration TIMEOUT 400
                      DISCOVERY_TIMEOUT 60)

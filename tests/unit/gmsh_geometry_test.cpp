@@ -10,9 +10,9 @@
 #include <numbers>
 #include <thread>
 
-#include "case/case_error.hpp"
+#include "case/mesh_factory.hpp"
 #include "mesh/gmsh_mesh.hpp"
-#include "mesh/mesh_factory.hpp"
+#include "mesh/mesh_error.hpp"
 #include "mesh/refinement.hpp"
 
 namespace fosls {
@@ -40,24 +40,24 @@ double area(const Mesh& m) {
   return a;
 }
 
-/// All (pointer, detail) pairs of the CaseException thrown by meshing g.
-std::vector<CaseError> errors_of(const GeometrySpec& g, double size = 0.5) {
+/// All (pointer, detail) pairs of the MeshError thrown by meshing g.
+std::vector<MeshProblem> errors_of(const GeometrySpec& g, double size = 0.5) {
   try {
     mesh_from_geometry(g, size);
-  } catch (const CaseException& e) {
-    return e.errors();
+  } catch (const MeshError& e) {
+    return e.problems();
   }
   return {};
 }
 
-bool has_pointer(const std::vector<CaseError>& errors, const std::string& pointer) {
+bool has_pointer(const std::vector<MeshProblem>& errors, const std::string& pointer) {
   return std::any_of(errors.begin(), errors.end(),
-                     [&](const CaseError& e) { return e.pointer == pointer; });
+                     [&](const MeshProblem& e) { return e.field == pointer; });
 }
 
-std::string all_details(const std::vector<CaseError>& errors) {
+std::string all_details(const std::vector<MeshProblem>& errors) {
   std::string s;
-  for (const auto& e : errors) s += e.pointer + ": " + e.detail + "\n";
+  for (const auto& e : errors) s += e.field + ": " + e.detail + "\n";
   return s;
 }
 
@@ -124,7 +124,7 @@ TEST(GmshGeometry, RejectsCrossingSegments) {
   g.groups = {{"all", {0, 1, 2, 3}}};
   const auto errors = errors_of(g);
   ASSERT_EQ(errors.size(), 1u) << all_details(errors);
-  EXPECT_EQ(errors[0].pointer, "/mesh/geometry/curves/3");
+  EXPECT_EQ(errors[0].field, "/geometry/curves/3");
   EXPECT_NE(errors[0].detail.find("crosses or touches curve 1 at (0.5, 0.5)"), std::string::npos)
       << errors[0].detail;
 }
@@ -136,7 +136,7 @@ TEST(GmshGeometry, RejectsOverlappingSegments) {
   g.groups = {{"all", {0, 1, 2, 3}}};
   const auto errors = errors_of(g);
   ASSERT_FALSE(errors.empty());
-  EXPECT_TRUE(has_pointer(errors, "/mesh/geometry/curves/3")) << all_details(errors);
+  EXPECT_TRUE(has_pointer(errors, "/geometry/curves/3")) << all_details(errors);
   EXPECT_NE(all_details(errors).find("overlaps curve 0"), std::string::npos);
 }
 
@@ -147,7 +147,7 @@ TEST(GmshGeometry, RejectsAnArcCrossingASegment) {
   g.points = {Point(1.8, 0), Point(2, 0), Point(2, 2), Point(1.8, 2), Point(3, 1)};
   const auto errors = errors_of(g, 0.1);
   ASSERT_FALSE(errors.empty());
-  EXPECT_TRUE(has_pointer(errors, "/mesh/geometry/curves/3")) << all_details(errors);
+  EXPECT_TRUE(has_pointer(errors, "/geometry/curves/3")) << all_details(errors);
 }
 
 TEST(GmshGeometry, RejectsArcsOnOneCircleThatOverlap) {
@@ -157,7 +157,7 @@ TEST(GmshGeometry, RejectsArcsOnOneCircleThatOverlap) {
   g.curves = {arc(0, 1, 3), arc(1, 2, 3), line(2, 0)};
   g.groups = {{"all", {0, 1, 2}}};
   const auto errors = errors_of(g);
-  EXPECT_TRUE(has_pointer(errors, "/mesh/geometry/curves/1")) << all_details(errors);
+  EXPECT_TRUE(has_pointer(errors, "/geometry/curves/1")) << all_details(errors);
   EXPECT_NE(all_details(errors).find("overlaps curve 0"), std::string::npos);
 }
 
@@ -166,8 +166,8 @@ TEST(GmshGeometry, RejectsLoopsThatDoNotClose) {
   g.curves.pop_back();  // left side missing: points 3 and 0 end one curve each
   g.groups[2].curves = {2};
   const auto errors = errors_of(g);
-  EXPECT_TRUE(has_pointer(errors, "/mesh/geometry/points/0")) << all_details(errors);
-  EXPECT_TRUE(has_pointer(errors, "/mesh/geometry/points/3")) << all_details(errors);
+  EXPECT_TRUE(has_pointer(errors, "/geometry/points/0")) << all_details(errors);
+  EXPECT_TRUE(has_pointer(errors, "/geometry/points/3")) << all_details(errors);
   EXPECT_NE(all_details(errors).find("one closed loop"), std::string::npos);
 
   GeometrySpec two;  // two separate triangles
@@ -176,12 +176,12 @@ TEST(GmshGeometry, RejectsLoopsThatDoNotClose) {
   two.groups = {{"all", {0, 1, 2, 3, 4, 5}}};
   const auto errors2 = errors_of(two);
   ASSERT_EQ(errors2.size(), 1u) << all_details(errors2);
-  EXPECT_EQ(errors2[0].pointer, "/mesh/geometry/curves");
+  EXPECT_EQ(errors2[0].field, "/geometry/curves");
 
   GeometrySpec twin = square_with_arc();  // a second point at (0, 0) breaks the loop
   twin.points.push_back(Point(0, 0));
   twin.curves[3] = line(3, 5);
-  EXPECT_TRUE(has_pointer(errors_of(twin), "/mesh/geometry/points/5"));
+  EXPECT_TRUE(has_pointer(errors_of(twin), "/geometry/points/5"));
 }
 
 TEST(GmshGeometry, RejectsArcsWithUnequalRadiiOrHalfCircles) {
@@ -189,13 +189,13 @@ TEST(GmshGeometry, RejectsArcsWithUnequalRadiiOrHalfCircles) {
   g.points[4] = Point(1.2, 1.1);
   auto errors = errors_of(g);
   ASSERT_EQ(errors.size(), 1u) << all_details(errors);
-  EXPECT_EQ(errors[0].pointer, "/mesh/geometry/curves/1");
+  EXPECT_EQ(errors[0].field, "/geometry/curves/1");
   EXPECT_NE(errors[0].detail.find("must be equal"), std::string::npos);
 
   g.points[4] = Point(2.0, 1.0);
   errors = errors_of(g);
   ASSERT_EQ(errors.size(), 1u) << all_details(errors);
-  EXPECT_EQ(errors[0].pointer, "/mesh/geometry/curves/1");
+  EXPECT_EQ(errors[0].field, "/geometry/curves/1");
   EXPECT_NE(errors[0].detail.find("half a circle"), std::string::npos);
 }
 
@@ -204,14 +204,14 @@ TEST(GmshGeometry, RejectsCurvesInTwoGroupsOrInNone) {
   g.groups.push_back({"again", {1}});
   auto errors = errors_of(g);
   ASSERT_EQ(errors.size(), 1u) << all_details(errors);
-  EXPECT_EQ(errors[0].pointer, "/mesh/geometry/groups/3/curves/0");
+  EXPECT_EQ(errors[0].field, "/geometry/groups/3/curves/0");
   EXPECT_NE(errors[0].detail.find("already in group 'arc'"), std::string::npos);
 
   g = square_with_arc();
   g.groups[2].curves = {2};
   errors = errors_of(g);
   ASSERT_EQ(errors.size(), 1u) << all_details(errors);
-  EXPECT_EQ(errors[0].pointer, "/mesh/geometry/curves/3");
+  EXPECT_EQ(errors[0].field, "/geometry/curves/3");
 }
 
 TEST(GmshGeometry, ListsEveryProblemAtOnce) {
@@ -220,10 +220,10 @@ TEST(GmshGeometry, ListsEveryProblemAtOnce) {
   g.curves.push_back(line(0, 9));
   g.points[2] = Point(2, std::nan(""));
   const auto errors = errors_of(g);
-  for (const char* p : {"/mesh/geometry/points/2", "/mesh/geometry/curves/1/points/1",
-                        "/mesh/geometry/groups/0/name", "/mesh/geometry/groups/1/curves/1",
-                        "/mesh/geometry/groups/2/name", "/mesh/geometry/curves/4/points/1",
-                        "/mesh/geometry/curves/4"})
+  for (const char* p :
+       {"/geometry/points/2", "/geometry/curves/1/points/1", "/geometry/groups/0/name",
+        "/geometry/groups/1/curves/1", "/geometry/groups/2/name", "/geometry/curves/4/points/1",
+        "/geometry/curves/4"})
     EXPECT_TRUE(has_pointer(errors, p)) << p << "\n" << all_details(errors);
   EXPECT_FALSE(errors_of(GeometrySpec{}).empty());
 }
@@ -231,9 +231,9 @@ TEST(GmshGeometry, ListsEveryProblemAtOnce) {
 TEST(GmshGeometry, RefusesSizesThatWouldMakeHugeMeshes) {
   const auto errors = errors_of(square_with_arc(), 1e-4);
   ASSERT_EQ(errors.size(), 1u);
-  EXPECT_EQ(errors[0].pointer, "/mesh/size");
-  EXPECT_EQ(errors_of(square_with_arc(), 0.0).at(0).pointer, "/mesh/size");
-  EXPECT_EQ(errors_of(square_with_arc(), std::nan("")).at(0).pointer, "/mesh/size");
+  EXPECT_EQ(errors[0].field, "/size");
+  EXPECT_EQ(errors_of(square_with_arc(), 0.0).at(0).field, "/size");
+  EXPECT_EQ(errors_of(square_with_arc(), std::nan("")).at(0).field, "/size");
 }
 
 TEST(GmshGeometry, FourThreadsMeshAtOnce) {
@@ -284,14 +284,14 @@ TEST_F(GeoFile, ReportsMissingFilesScriptErrorsAndMissingGroups) {
   auto pointer_of = [](const std::string& path) {
     try {
       mesh_from_geo_file(path, 0.3);
-    } catch (const CaseException& e) {
-      return e.errors().at(0).pointer + ": " + e.errors().at(0).detail;
+    } catch (const MeshError& e) {
+      return e.problems().at(0).field + ": " + e.problems().at(0).detail;
     }
     return std::string("no error");
   };
-  EXPECT_EQ(pointer_of("/nonexistent/dir/x.geo").rfind("/mesh/geo_file: cannot read", 0), 0u);
+  EXPECT_EQ(pointer_of("/nonexistent/dir/x.geo").rfind("/geo_file: cannot read", 0), 0u);
   write("Point(1) = {0, 0, 0;\n");
-  EXPECT_EQ(pointer_of(path_).rfind("/mesh/geo_file: the .geo script failed", 0), 0u);
+  EXPECT_EQ(pointer_of(path_).rfind("/geo_file: the .geo script failed", 0), 0u);
   write("Point(1) = {0, 0, 0};\n");
   EXPECT_NE(pointer_of(path_).find("no surface"), std::string::npos);
   write("Point(1) = {0, 0, 0};\nLine(1) = {1, 7};\n");
@@ -309,7 +309,7 @@ TEST_F(GeoFile, ReportsMissingFilesScriptErrorsAndMissingGroups) {
     Physical Curve("base") = {1};
   )");
   const std::string missing = pointer_of(path_);
-  EXPECT_EQ(missing.rfind("/mesh/geo_file", 0), 0u) << missing;
+  EXPECT_EQ(missing.rfind("/geo_file", 0), 0u) << missing;
   EXPECT_NE(missing.find("Physical Curve"), std::string::npos) << missing;
 }
 

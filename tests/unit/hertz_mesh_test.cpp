@@ -7,8 +7,8 @@
 #include <numbers>
 
 #include "case/case_error.hpp"
+#include "case/mesh_factory.hpp"
 #include "mesh/builtin_meshes.hpp"
-#include "mesh/mesh_factory.hpp"
 #include "mesh/refinement.hpp"
 
 namespace fosls {

@@ -1,13 +1,12 @@
-#include "mesh/mesh_factory.hpp"
+#include "case/mesh_factory.hpp"
 
 #include <cmath>
 #include <stdexcept>
 #include <string>
 #include <vector>
 
-#include "case/case_error.hpp"
 #include "mesh/builtin_meshes.hpp"
-#include "mesh/gmsh_mesh.hpp"
+#include "mesh/coarse_mesh_estimate.hpp"
 #include "mesh/msh_reader.hpp"
 
 namespace fosls {
@@ -39,7 +38,7 @@ void take_params(const MeshSpec& spec, const std::vector<std::pair<std::string, 
   }
 }
 
-Mesh build_builtin(const MeshSpec& spec) {
+Mesh build_builtin(const MeshSpec& spec, const MeshingControl& control) {
   std::vector<CaseError> errors;
   if (!(spec.size > 0) || !std::isfinite(spec.size))
     errors.push_back({kSizePointer, "the mesh size must be a positive number"});
@@ -69,7 +68,7 @@ Mesh build_builtin(const MeshSpec& spec) {
         errors);
     p.size = spec.size;
     if (!errors.empty()) throw CaseException(std::move(errors));
-    return make_hertz(p);
+    return make_hertz(p, control);
   }
   throw CaseException(kBuiltinPointer,
                       "unknown built-in geometry '" + spec.builtin + "'; use 'square' or 'hertz'");
@@ -91,24 +90,36 @@ std::string source_pointer(MeshSpec::Kind kind) {
 
 }  // namespace
 
-Mesh build_coarse_mesh(const MeshSpec& spec) {
+Mesh build_coarse_mesh(const MeshSpec& spec, const MeshingControl& control) {
   try {
     switch (spec.kind) {
       case MeshSpec::Kind::kBuiltin:
-        return build_builtin(spec);
+        return build_builtin(spec, control);
       case MeshSpec::Kind::kGeometry:
-        return mesh_from_geometry(spec.geometry, spec.size);
+        return mesh_from_geometry(spec.geometry, spec.size, control);
       case MeshSpec::Kind::kMsh:
         return mesh_from_msh(spec.msh_text);
       case MeshSpec::Kind::kGeoFile:
-        return mesh_from_geo_file(spec.geo_path, spec.size);
+        return mesh_from_geo_file(spec.geo_path, spec.size, control);
     }
+  } catch (const MeshError& e) {
+    throw to_case_exception(e, spec.kind);
   } catch (const std::invalid_argument& e) {
     // Raised by the Mesh constructor and the built-in generators: the source gave a mesh that
     // is not a valid triangulation, or parameters they reject.
     throw CaseException(source_pointer(spec.kind), e.what());
   }
   throw CaseException("/mesh", "unknown kind of mesh source");
+}
+
+CaseException to_case_exception(const MeshError& error, MeshSpec::Kind kind) {
+  std::vector<CaseError> errors;
+  for (const MeshProblem& p : error.problems()) {
+    std::string field = p.field;
+    if (kind == MeshSpec::Kind::kBuiltin && field.rfind("/geometry", 0) == 0) field = "/builtin";
+    errors.push_back({"/mesh" + field, p.detail});
+  }
+  return CaseException(std::move(errors));
 }
 
 }  // namespace fosls

@@ -1,0 +1,25 @@
+#pragma once
+// MeshSpec → coarse Mesh: built-in geometries, declarative geometry and .geo files (meshed by
+// gmsh in the mesher process), and msh text. The one place where the mesh layer's errors
+// (MeshError, fields relative to the mesh section) become CaseException with JSON pointers
+// under /mesh.
+
+#include "case/case_error.hpp"
+#include "case/case_spec.hpp"
+#include "mesh/gmsh_mesh.hpp"
+#include "mesh/mesh.hpp"
+
+namespace fosls {
+
+/// Builds the coarse mesh of a case. Errors a user can cause (corrupt msh, crossing segments,
+/// gmsh failing, crashing or running out of time or memory, an unreadable .geo file) are
+/// thrown as CaseException with the pointer of the offending field under /mesh. Throws
+/// MeshingCancelled when `control.cancel` stopped the mesher.
+Mesh build_coarse_mesh(const MeshSpec& spec, const MeshingControl& control = {});
+
+/// A MeshError of the mesh source `kind` as the case's problems: each field prefixed with
+/// /mesh; for built-in geometries, problems of the generated outline are put at
+/// /mesh/builtin, the field the user wrote.
+CaseException to_case_exception(const MeshError& error, MeshSpec::Kind kind);
+
+}  // namespace fosls

@@ -1,0 +1,42 @@
+#pragma once
+// How large the coarse mesh of a declarative geometry will be, estimated before anything is
+// meshed, so that sizes that would let the mesher run for minutes or exhaust memory are
+// refused up front.
+
+#include <vector>
+
+#include "mesh/geometry_spec.hpp"
+#include "mesh/mesh_error.hpp"
+
+namespace fosls {
+
+/// Estimated coarse triangles above which meshing is refused: use a larger size and
+/// refinements instead.
+inline constexpr double kMaxCoarseTriangles = 250000;
+
+/// Estimated coarse boundary edges above which meshing is refused. Within the triangle limit a
+/// mesh has this many boundary edges only when the domain is very long and thin (aspect ratio
+/// beyond ~400) or much thinner than the mesh size, and there gmsh's 2D Delaunay is slow and
+/// fragile. Measured on rectangles of height 1e-4 with size 1e-3 (gmsh 4.8, loaded machine):
+/// 18 000 boundary edges 6.4 s, 40 000 12.7 s, 200 000 59 s, 300 000 and more abort.
+inline constexpr double kMaxCoarseBoundaryEdges = 10000;
+
+/// Estimated counts of the coarse mesh for a size field.
+struct CoarseMeshEstimate {
+  double area_triangles = 0;  ///< ∫ 1 / (√3/4 h²) over the domain: triangles of good shape
+  double boundary_edges = 0;  ///< ∮ 1 / h along the boundary
+  /// The triangles the mesher makes: at least one per boundary edge, however thin the domain.
+  double triangles() const { return area_triangles + boundary_edges; }
+};
+
+/// Problems of a size field itself (at /size): a non-positive or non-finite size, a grading
+/// below 1, a non-positive reach.
+std::vector<MeshProblem> check_size_field(const SizeField& size);
+
+/// Estimates the coarse mesh of a geometry that validate_geometry accepted.
+CoarseMeshEstimate estimate_coarse_mesh(const GeometrySpec& geometry, const SizeField& size);
+
+/// The problem (at /size) with an estimate beyond the limits, if any.
+std::vector<MeshProblem> check_coarse_mesh_estimate(const CoarseMeshEstimate& estimate);
+
+}  // namespace fosls

@@ -1,0 +1,75 @@
+#pragma once
+// Runs a program as a child process under limits: its input is written to its stdin, its
+// stdout is collected (or streamed), the tail of its stderr is kept. The child is started with
+// posix_spawn (never by forking this multithreaded, OpenMP-using process and continuing in the
+// copy), in its own process group, with default signal dispositions and an empty signal mask,
+// and it is killed on a wall-clock deadline, on cancel, or when its output grows too large.
+
+#include <atomic>
+#include <chrono>
+#include <cstddef>
+#include <functional>
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace fosls {
+
+/// Limits applied to a child. Zero means "no limit".
+struct ChildLimits {
+  /// Wall-clock time from start to exit; the child is killed (SIGKILL) when it passes.
+  std::chrono::milliseconds wall{0};
+  /// CPU seconds (RLIMIT_CPU: the kernel sends SIGXCPU when they are used up).
+  double cpu_seconds = 0;
+  /// Address space in bytes (RLIMIT_AS: allocations beyond it fail inside the child).
+  std::size_t address_space_bytes = 0;
+  /// Collected stdout beyond this kills the child.
+  std::size_t max_output_bytes = std::size_t{1} << 30;
+};
+
+/// What to run and how.
+struct ChildOptions {
+  std::vector<std::string> argv;  ///< argv[0] is the path of the program
+  std::string input;              ///< written to the child's stdin, which is then closed
+  ChildLimits limits;
+  /// When set and it becomes true, the child is killed (checked every 20 ms).
+  const std::atomic<bool>* cancel = nullptr;
+  /// When set, stdout is passed here as it arrives instead of being collected.
+  std::function<void(std::string_view)> on_output;
+};
+
+/// How a child ended.
+struct ChildResult {
+  enum class End {
+    kExited,          ///< exited on its own; see exit_code
+    kSignaled,        ///< killed by a signal it did not expect (crash, abort, SIGXCPU, OOM killer)
+    kTimedOut,        ///< killed by us at the wall-clock deadline
+    kCancelled,       ///< killed by us on cancel
+    kOutputTooLarge,  ///< killed by us: stdout exceeded max_output_bytes
+  };
+  End end = End::kExited;
+  int exit_code = -1;  ///< kExited
+  int signal = 0;      ///< kSignaled
+  std::string output;  ///< stdout (empty when on_output was given)
+  std::string errors;  ///< the last 16 KiB of stderr
+  double seconds = 0;  ///< wall-clock time from start to exit
+  /// Whether stderr shows that an allocation failed (std::bad_alloc, "out of memory").
+  bool ran_out_of_memory() const;
+  /// "exit code 3", "signal 6 (Aborted)", "timed out", ... for messages.
+  std::string describe() const;
+};
+
+/// Starts the child and waits for it. Throws std::runtime_error when it cannot be started
+/// (missing program, no processes left); every way the child itself ends is a ChildResult.
+ChildResult run_child(const ChildOptions& options);
+
+/// For child programs, first thing in main(): die with SIGKILL when the parent dies, so that
+/// nothing outlives a killed server or CLI. Exits at once when the parent is already gone.
+void die_with_parent();
+
+/// The path of a program installed beside this one: `override_env` (when that environment
+/// variable is set), else the folder of /proc/self/exe, else the build's bin folder. Throws
+/// std::runtime_error naming the places it looked when none holds an executable `name`.
+std::string sibling_program(const std::string& name, const char* override_env);
+
+}  // namespace fosls
