@@ -165,6 +165,10 @@ int main(int argc, char** argv) {
       ->capture_default_str();
   db_option->excludes(app.get_option("--store"));
   CLI11_PARSE(app, argc, argv);
+  if (const std::string problem = o.worker.problem(); !problem.empty()) {
+    std::cerr << "fosls-serve: " << problem << "\n";
+    return 2;
+  }
   if (!o.db.empty()) o.worker.store = "sqlite:" + o.db;
 
   // Blocked in every thread (threads inherit the mask) and taken with sigwait, so shutdown

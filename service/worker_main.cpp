@@ -53,12 +53,17 @@ int work(const fosls::service::WorkerOptions& o, const sigset_t& stop_signals) {
 int main(int argc, char** argv) {
   fosls::service::WorkerOptions o;
   o.workers = static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
+  o.store.clear();  // required: no default to show
   CLI::App app{
       "fosls-worker: solver workers of the FOSLS contact job service, without HTTP "
       "(docs/service.md)"};
   fosls::service::add_worker_options(app, o, 1);
   app.get_option("--store")->required();
   CLI11_PARSE(app, argc, argv);
+  if (const std::string problem = o.problem(); !problem.empty()) {
+    std::cerr << "fosls-worker: " << problem << "\n";
+    return 2;
+  }
   const sigset_t stop_signals = fosls::service::block_stop_signals();
   try {
     return work(o, stop_signals);

@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <csignal>
+#include <cstdio>
 #include <cstdlib>
 #include <thread>
 
@@ -29,6 +30,19 @@ std::chrono::milliseconds WorkerOptions::reaper_interval() const {
   // Often enough that a dead worker's job waits little beyond its lease.
   return std::clamp(seconds_to_ms(lease_seconds / 4), std::chrono::milliseconds(200),
                     std::chrono::milliseconds(10000));
+}
+
+std::string WorkerOptions::problem() const {
+  // A lease must survive a late heartbeat or two, or healthy workers lose their jobs.
+  if (heartbeat_seconds * 3 > lease_seconds) {
+    char text[200];
+    std::snprintf(text, sizeof text,
+                  "--heartbeat-seconds %g is too long for --lease-seconds %g: a lease must last "
+                  "at least three heartbeats",
+                  heartbeat_seconds, lease_seconds);
+    return text;
+  }
+  return "";
 }
 
 void add_worker_options(CLI::App& app, WorkerOptions& o, int min_workers) {

@@ -25,6 +25,8 @@ struct WorkerOptions {
   WorkerPoolOptions pool_options() const;
   /// How often this process looks for expired leases.
   std::chrono::milliseconds reaper_interval() const;
+  /// Why these options cannot work together, or "" when they can.
+  std::string problem() const;
 };
 
 /// Registers --store, --workers, --max-attempts, --lease-seconds, --heartbeat-seconds on

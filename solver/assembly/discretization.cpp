@@ -80,17 +80,21 @@ LevelHierarchy Discretization::build_level_hierarchy() const {
     const RefinementMaps& maps = meshes_.maps[j];
     level.prolongation =
         free_prolongation(coarse, fine, cartesian_prolongation(coarse.mesh(), fine.mesh(), maps));
-    // Contact links: every coarse contact edge with its fine midpoint and halves.
+    // Contact links: every coarse contact edge with its fine children (its two halves and
+    // their midpoint, or the edge itself where it was kept).
     const Mesh& cm = coarse.mesh();
     const Mesh& fm = fine.mesh();
     const int ncv = cm.num_vertices();
-    std::vector<std::array<int, 2>> halves(cm.num_edges(), {-1, -1});
+    std::vector<int> midpoint(cm.num_edges(), -1);
+    for (std::size_t k = 0; k < maps.midpoint_edge.size(); ++k)
+      midpoint[maps.midpoint_edge[k]] = ncv + static_cast<int>(k);
+    std::vector<std::array<int, 2>> children(cm.num_edges(), {-1, -1});
     for (int f = 0; f < fm.num_edges(); ++f) {
       int e = maps.parent_edge[f];
       if (e < 0 || !coarse.is_contact_edge(e)) continue;
       // The half that touches the coarse edge's first end point comes first.
       bool first = fm.edge(f)[0] == cm.edge(e)[0] || fm.edge(f)[1] == cm.edge(e)[0];
-      halves[e][first ? 0 : 1] = f;
+      children[e][first ? 0 : 1] = f;
     }
     auto normal_u = [](const FoslsSpace& s, int v) {
       return s.is_contact_vertex(v) ? s.free_index(s.u_dof(v, 0)) : -1;
@@ -103,10 +107,11 @@ LevelHierarchy Discretization::build_level_hierarchy() const {
       link.coarse_un_b = normal_u(coarse, ab[1]);
       link.fine_un_a = normal_u(fine, ab[0]);
       link.fine_un_b = normal_u(fine, ab[1]);
-      link.fine_un_mid = normal_u(fine, ncv + e);
+      link.fine_un_mid = midpoint[e] >= 0 ? normal_u(fine, midpoint[e]) : -1;
       link.coarse_sn = coarse.free_index(coarse.sigma_dof(e, 0));
       for (int k = 0; k < 2; ++k) {
-        link.fine_sn[k] = fine.free_index(fine.sigma_dof(halves[e][k], 0));
+        if (children[e][k] < 0) continue;  // a kept edge has one child
+        link.fine_sn[k] = fine.free_index(fine.sigma_dof(children[e][k], 0));
         link.sn_weight[k] = level.prolongation.coeff(link.fine_sn[k], link.coarse_sn);
       }
       level.links.push_back(link);

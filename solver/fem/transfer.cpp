@@ -18,21 +18,28 @@ Eigen::SparseMatrix<double> cartesian_prolongation(const Mesh& coarse, const Mes
       if (v < ncv) {
         t.emplace_back(u(v, c), u(v, c), 1.0);
       } else {
-        const auto& pq = coarse.edge(v - ncv);
+        const auto& pq = coarse.edge(maps.midpoint_edge[v - ncv]);
         t.emplace_back(u(v, c), u(pq[0], c), 0.5);
         t.emplace_back(u(v, c), u(pq[1], c), 0.5);
       }
     }
+  // Where a fine vertex lies on the coarse mesh: a midpoint at its unsnapped position.
+  auto coarse_position = [&](int v) {
+    return v < ncv ? coarse.vertex(v) : coarse.edge_midpoint(maps.midpoint_edge[v - ncv]);
+  };
   for (int f = 0; f < nfe; ++f) {
+    const auto& pq = fine.edge(f);
     if (maps.parent_edge[f] >= 0) {
+      // The normal component of RT0 is constant along an edge: a half carries half the flux,
+      // a kept edge all of it.
+      const double share = (pq[0] < ncv && pq[1] < ncv) ? 1.0 : 0.5;
       for (int i = 0; i < 2; ++i)
-        t.emplace_back(sf(f, i), sc(maps.parent_edge[f], i), 0.5 * maps.parent_sign[f]);
+        t.emplace_back(sf(f, i), sc(maps.parent_edge[f], i), share * maps.parent_sign[f]);
       continue;
     }
     const int tc = maps.parent_triangle[f];
     ElementGeometry geo(coarse, tc);
-    const auto& pq = fine.edge(f);
-    Point p = coarse.edge_midpoint(pq[0] - ncv), q = coarse.edge_midpoint(pq[1] - ncv);
+    Point p = coarse_position(pq[0]), q = coarse_position(pq[1]);
     Point d = q - p;
     Point scaled_normal(d.y(), -d.x());  // |f| n_f
     Point mid = 0.5 * (p + q);

@@ -8,10 +8,11 @@
 
 namespace fosls {
 
-/// Prolongation of full Cartesian DOF vectors: P1 interpolation for u; for σ a fine edge inside
-/// a coarse edge gets half the coarse flux (sign by orientation), and an edge inside a coarse
-/// triangle gets the exact flux of the coarse (linear) RT0 field, evaluated on the coarse
-/// triangle's geometry (midpoints at their unsnapped positions).
+/// Prolongation of full Cartesian DOF vectors: P1 interpolation for u; for σ a fine edge that
+/// halves a coarse edge gets half the coarse flux and a kept coarse edge all of it (sign by
+/// orientation), and an edge inside a coarse triangle gets the exact flux of the coarse
+/// (linear) RT0 field, evaluated on the coarse triangle's geometry (midpoints at their
+/// unsnapped positions). Serves red refinement and newest-vertex bisection alike.
 Eigen::SparseMatrix<double> cartesian_prolongation(const Mesh& coarse, const Mesh& fine,
                                                    const RefinementMaps& maps);
 

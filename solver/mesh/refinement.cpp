@@ -40,6 +40,10 @@ Refinement refine_uniformly(const Mesh& coarse) {
   const Mesh& fine = out.fine;
   auto& maps = out.maps;
   maps.num_coarse_vertices = nv;
+  maps.midpoint_edge.resize(ne);
+  for (int e = 0; e < ne; ++e) maps.midpoint_edge[e] = e;
+  maps.triangle_parent.resize(fine.num_triangles());
+  for (int t = 0; t < fine.num_triangles(); ++t) maps.triangle_parent[t] = t / 4;
   const int nfe = fine.num_edges();
   maps.parent_edge.assign(nfe, -1);
   maps.parent_triangle.assign(nfe, -1);

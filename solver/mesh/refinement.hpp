@@ -7,18 +7,27 @@
 
 namespace fosls {
 
-/// Parent/child relation between a coarse mesh and its red refinement.
+/// Parent/child relation between a coarse mesh and a refinement of it in which every coarse
+/// edge is either kept or halved and every fine triangle lies in one coarse triangle (a red
+/// refinement, or one step of newest-vertex bisection).
 ///
-/// Fine vertex v < num_coarse_vertices is coarse vertex v; fine vertex num_coarse_vertices + e
-/// is the midpoint of coarse edge e (moved onto the boundary curve where the edge is curved).
+/// Fine vertex v < num_coarse_vertices is coarse vertex v; fine vertex num_coarse_vertices + k
+/// is the midpoint of coarse edge midpoint_edge[k] (moved onto the boundary curve where the
+/// edge is curved).
 struct RefinementMaps {
   int num_coarse_vertices = 0;
-  /// For each fine edge: the coarse edge it halves (-1 if interior to a coarse triangle).
+  /// For each new fine vertex: the coarse edge it halves.
+  std::vector<int> midpoint_edge;
+  /// For each fine edge along a coarse edge (one of its halves, or the whole edge when it was
+  /// kept): that coarse edge; -1 for edges inside a coarse triangle. A kept edge is the one
+  /// whose end points are both coarse vertices.
   std::vector<int> parent_edge;
   /// For each fine edge inside a coarse triangle: that triangle (-1 otherwise).
   std::vector<int> parent_triangle;
-  /// For a fine half edge: +1 when its normal agrees with the coarse edge's normal.
+  /// For a fine edge along a coarse edge: +1 when its normal agrees with the coarse edge's.
   std::vector<signed char> parent_sign;
+  /// For each fine triangle: the coarse triangle that contains it.
+  std::vector<int> triangle_parent;
 };
 
 /// One red refinement: every triangle split into four by its edge midpoints.

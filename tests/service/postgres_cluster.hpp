@@ -104,13 +104,20 @@ class PostgresCluster {
                     log) != 0) {
       throw std::runtime_error("initdb failed:\n" + read_file(log));
     }
+    bin_ = bin;
     port_ = free_port();
+    start();
+  }
+
+  /// Starts the server (again, after stop(): same data, same port).
+  void start() {
+    const std::string log = dir_.file("server.log");
     // fsync off: a test server's data is thrown away; the stores' own durability settings are
     // what the tests exercise, not the disk.
     // (setpriv re-arms the parent-death signal after changing the user, which clears it.)
     pid_ = spawn(
-        as_user({bin + "/postgres", "-D", data, "-p", std::to_string(port_), "-k", dir_.path(),
-                 "-h", "127.0.0.1", "-c", "fsync=off", "-c", "max_connections=200"},
+        as_user({bin_ + "/postgres", "-D", dir_.file("data"), "-p", std::to_string(port_), "-k",
+                 dir_.path(), "-h", "127.0.0.1", "-c", "fsync=off", "-c", "max_connections=200"},
                 /*die_with_parent=*/true),
         log, /*die_with_parent=*/true);
     if (pid_ < 0) throw std::runtime_error("fork failed");
@@ -199,6 +206,7 @@ class PostgresCluster {
   }
 
   TempDir dir_;
+  std::string bin_;
   pid_t pid_ = -1;
   int port_ = 0;
 };

@@ -3,8 +3,10 @@
 
 #include "fem/fosls_space.hpp"
 #include "fem/transfer.hpp"
+#include "mesh/bisection.hpp"
 #include "mesh/builtin_meshes.hpp"
 #include "mesh/refinement.hpp"
+#include "perturbed_square.hpp"
 #include "post/fe_field.hpp"
 
 namespace fosls {
@@ -29,23 +31,7 @@ Vector interpolate(const FoslsSpace& s) {
   return x;
 }
 
-/// The unit square with its interior vertices moved off the grid (an unstructured mesh).
-Mesh perturbed_square() {
-  Mesh sq = make_square({.size = 0.2});
-  std::vector<Point> v = sq.vertices();
-  for (std::size_t i = 0; i < v.size(); ++i) {
-    Point& p = v[i];
-    if (p.x() > 0 && p.x() < 1 && p.y() > 0 && p.y() < 1)
-      p += 0.05 * Point(std::sin(7.0 * i), std::cos(3.0 * i));
-  }
-  std::vector<std::array<int, 3>> tris;
-  for (int t = 0; t < sq.num_triangles(); ++t) tris.push_back(sq.triangle(t));
-  std::vector<BoundarySegment> segs;
-  for (int e = 0; e < sq.num_edges(); ++e)
-    if (sq.is_boundary_edge(e))
-      segs.push_back({sq.edge(e)[0], sq.edge(e)[1], sq.edge_group(e), -1});
-  return Mesh(v, tris, segs, sq.group_names());
-}
+using testing::perturbed_square;
 
 std::vector<GroupRole> neumann_everywhere(const Mesh& m) {
   return std::vector<GroupRole>(m.group_names().size(), GroupRole::kNeumann);
@@ -76,6 +62,34 @@ TEST(Exactness, ProlongationOfACoarseInterpolantIsTheFineInterpolant) {
     Vector diff = p * interpolate(coarse) - interpolate(fine);
     EXPECT_LT(diff.lpNorm<Eigen::Infinity>(), 1e-12);
   }
+}
+
+// The same on a bisection hierarchy: kept edges, halves, and edges inside triangles split into
+// two, three and four.
+TEST(Exactness, ProlongationOnBisectedMeshesIsExact) {
+  Mesh mesh = perturbed_square();
+  BisectionState state = longest_edge_state(mesh);
+  int kept = 0, split_in_four = 0;
+  for (int step = 0; step < 4; ++step) {
+    std::vector<int> marked;
+    for (int t = 0; t < mesh.num_triangles(); t += 3 + step) marked.push_back(t);
+    Bisection b = refine_by_bisection(mesh, state, marked);
+    FoslsSpace coarse(mesh, neumann_everywhere(mesh));
+    FoslsSpace fine(b.fine, neumann_everywhere(b.fine));
+    SparseMatrix p = cartesian_prolongation(mesh, b.fine, b.maps);
+    Vector diff = p * interpolate(coarse) - interpolate(fine);
+    EXPECT_LT(diff.lpNorm<Eigen::Infinity>(), 1e-12) << "step " << step;
+    for (int f = 0; f < b.fine.num_edges(); ++f)
+      kept += b.maps.parent_edge[f] >= 0 && b.fine.edge(f)[0] < mesh.num_vertices() &&
+              b.fine.edge(f)[1] < mesh.num_vertices();
+    std::vector<int> children(mesh.num_triangles(), 0);
+    for (int parent : b.maps.triangle_parent) ++children[parent];
+    split_in_four += static_cast<int>(std::count(children.begin(), children.end(), 4));
+    mesh = std::move(b.fine);
+    state = std::move(b.state);
+  }
+  EXPECT_GT(kept, 0);
+  EXPECT_GT(split_in_four, 0);
 }
 
 }  // namespace
