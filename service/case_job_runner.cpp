@@ -1,5 +1,6 @@
 #include "case_job_runner.hpp"
 
+#include "case/case_admission.hpp"
 #include "case/case_reader.hpp"
 #include "case/case_runner.hpp"
 
@@ -22,8 +23,17 @@ std::string describe(const std::vector<CaseError>& errors) {
 }
 }  // namespace
 
-std::vector<CaseError> validate_submitted_case(const nlohmann::json& case_json) {
-  return validate_case(case_json, service_read_options());
+std::function<std::vector<CaseError>(const nlohmann::json&)> submitted_case_validator(
+    std::size_t job_memory_bytes, bool check_memory) {
+  return [job_memory_bytes, check_memory](const nlohmann::json& case_json) {
+    CaseAdmission admission = admit_case(case_json, service_read_options());
+    if (check_memory && admission.estimate)
+      if (auto e = check_memory_budget(*admission.estimate, admission.spec->solver.method,
+                                       static_cast<double>(job_memory_bytes),
+                                       "the service's --max-job-memory"))
+        admission.errors.push_back(*e);
+    return admission.errors;
+  };
 }
 
 JobRunOutcome run_case_job(const nlohmann::json& case_json, const JobRunContext& context) {

@@ -2,6 +2,8 @@
 // Production wiring of the service to the solver library: validation of submitted cases and
 // the job runner that solves them (case/case_runner.hpp).
 
+#include <cstddef>
+#include <functional>
 #include <nlohmann/json.hpp>
 #include <vector>
 
@@ -10,9 +12,13 @@
 
 namespace fosls::service {
 
-/// Validates a submitted case as the service must: `mesh.geo_file` is refused, because a gmsh
-/// .geo script can run shell commands and read or write files.
-std::vector<CaseError> validate_submitted_case(const nlohmann::json& case_json);
+/// Validates a submitted case as the service must, on the request thread and without gmsh
+/// (case/case_admission.hpp): `mesh.geo_file` is refused, because a gmsh .geo script can run
+/// shell commands and read or write files; problems that need the coarse mesh of a geometry
+/// are found by the job (it fails naming them). With `check_memory`, a case whose estimated
+/// memory exceeds `job_memory_bytes` is refused at /mesh/refinements.
+std::function<std::vector<CaseError>(const nlohmann::json&)> submitted_case_validator(
+    std::size_t job_memory_bytes, bool check_memory = true);
 
 /// Solves a case with read_case + run_case, honouring cancellation through RunControl::cancel
 /// and reporting every iteration. Case problems that only show while running

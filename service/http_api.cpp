@@ -7,7 +7,9 @@
 #include <optional>
 #include <sstream>
 
+#include "json_duplicates.hpp"
 #include "problem.hpp"
+#include "problem_catalogue.hpp"
 #include "request_checks.hpp"
 #include "static_files.hpp"
 
@@ -21,10 +23,6 @@ using HandlerResponse = httplib::Server::HandlerResponse;
 // Each request is handled start to finish on one httplib thread, so its start time can live
 // in a thread_local between the pre-routing handler and the logger.
 thread_local std::optional<Clock::time_point> request_start;
-
-constexpr const char* kProblemPrefix = "urn:fosls:problem:";
-
-std::string problem_type(const char* name) { return std::string(kProblemPrefix) + name; }
 
 std::string dump(const nlohmann::json& j) {
   return j.dump(-1, ' ', false, nlohmann::json::error_handler_t::replace);
@@ -65,29 +63,22 @@ std::string method_label(const std::string& method) {
   return "other";
 }
 
-Problem bad_length_problem(const std::string& why) {
-  Problem p;
-  p.status = 411;
-  p.type = problem_type("length-required");
-  p.detail = why;
-  return p;
-}
-
-Problem too_large_problem(std::size_t limit) {
-  Problem p;
-  p.status = 413;
-  p.type = problem_type("payload-too-large");
-  p.detail = "the request body is larger than the limit of " + std::to_string(limit) + " bytes";
-  return p;
-}
-
-Problem media_type_problem(const std::string& got) {
-  Problem p;
-  p.status = 415;
-  p.type = problem_type("unsupported-media-type");
-  p.detail = "send the case with 'Content-Type: application/json' (got '" +
-             (got.empty() ? std::string("none") : got) + "')";
-  return p;
+/// 400 for a Content-Length that is not one non-negative decimal integer: cpp-httplib would
+/// read "abc" as 0 and leave the body on the connection as the next request.
+std::optional<Problem> content_length_problem(const httplib::Request& req) {
+  const std::size_t count = req.get_header_value_count("Content-Length");
+  if (count == 0) return std::nullopt;
+  const std::string value = req.get_header_value("Content-Length");
+  std::string why;
+  if (value.empty() || value.size() > 19 ||
+      value.find_first_not_of("0123456789") != std::string::npos)
+    why =
+        "Content-Length must be a non-negative decimal integer, got '" + value.substr(0, 40) + "'";
+  for (std::size_t i = 1; why.empty() && i < count; ++i)
+    if (req.get_header_value("Content-Length", i) != value)
+      why = "the request has several Content-Length headers with different values";
+  if (why.empty()) return std::nullopt;
+  return problems::invalid_content_length(why);
 }
 
 /// nlohmann's message for unparsable text (where and why); only called on the error path.
@@ -99,16 +90,6 @@ std::string parse_error_message(const std::string& text) {
   }
   return "unknown parse error";
 }
-
-Problem invalid_parameter(const std::string& name, const std::string& detail) {
-  Problem p;
-  p.status = 400;
-  p.type = problem_type("invalid-parameter");
-  p.detail = "query parameter '" + name + "': " + detail;
-  p.extra["errors"] = nlohmann::json::array({{{"parameter", name}, {"detail", detail}}});
-  return p;
-}
-
 }  // namespace
 
 HttpApi::HttpApi(JobStore& store, WorkerPool& workers, CaseValidator validator, Metrics& metrics,
@@ -155,10 +136,9 @@ void HttpApi::install(httplib::Server& server) {
       if (auto id = parse_job_id(text)) {
         (this->*handler)(req, res, *id);
       } else {
-        Problem p;
-        p.status = 404;
-        p.detail = "there is no job '" + text + "' (job ids are positive integers)";
-        send_problem(req, res, p);
+        send_problem(
+            req, res,
+            problems::not_found("there is no job '" + text + "' (job ids are positive integers)"));
       }
     };
   };
@@ -180,12 +160,18 @@ HandlerResponse HttpApi::pre_route(const Request& req, Response& res) {
   // cpp-httplib 0.11.4 reads chunked bodies without applying the payload limit.
   if (req.has_header("Transfer-Encoding")) {
     res.set_header("Connection", "close");
-    send_problem(req, res,
-                 bad_length_problem(is_chunked(req.get_header_value("Transfer-Encoding"))
-                                        ? "chunked request bodies are not accepted; send the "
-                                          "body with a Content-Length header"
-                                        : "Transfer-Encoding is not supported; send the body "
-                                          "with a Content-Length header"));
+    send_problem(
+        req, res,
+        problems::length_required(is_chunked(req.get_header_value("Transfer-Encoding"))
+                                      ? "chunked request bodies are not accepted; send the "
+                                        "body with a Content-Length header"
+                                      : "Transfer-Encoding is not supported; send the body "
+                                        "with a Content-Length header"));
+    return HandlerResponse::Handled;
+  }
+  if (auto p = content_length_problem(req)) {
+    res.set_header("Connection", "close");  // the body's bytes must not be read as a request
+    send_problem(req, res, *p);
     return HandlerResponse::Handled;
   }
   const bool body_method = req.method == "POST" || req.method == "PUT" || req.method == "PATCH" ||
@@ -207,7 +193,7 @@ HandlerResponse HttpApi::pre_route(const Request& req, Response& res) {
     }
   }
   if (req.path == "/v1/jobs" && req.method == "POST") {
-    send_problem(req, res, bad_length_problem("send the case with a Content-Length header"));
+    send_problem(req, res, problems::length_required("send the case with a Content-Length header"));
     return HandlerResponse::Handled;
   }
   res.status = 404;  // on_error fills in the problem (or turns it into 405)
@@ -219,7 +205,8 @@ int HttpApi::expect_continue(const Request& req, Response& res) {
   // Refuse before the client sends a body that would be discarded anyway.
   if (req.method == "POST" && req.path == "/v1/jobs") {
     if (req.has_header("Transfer-Encoding")) {
-      send_problem(req, res, bad_length_problem("send the body with a Content-Length header"));
+      send_problem(req, res,
+                   problems::length_required("send the body with a Content-Length header"));
       return res.status;
     }
     const std::string length = req.get_header_value("Content-Length");
@@ -227,11 +214,12 @@ int HttpApi::expect_continue(const Request& req, Response& res) {
     auto [end, ec] = std::from_chars(length.data(), length.data() + length.size(), n);
     if (ec == std::errc::result_out_of_range ||
         (ec == std::errc() && n > options_.max_body_bytes)) {
-      send_problem(req, res, too_large_problem(options_.max_body_bytes));
+      send_problem(req, res, problems::payload_too_large(options_.max_body_bytes));
       return res.status;
     }
     if (!is_json_media_type(req.get_header_value("Content-Type"))) {
-      send_problem(req, res, media_type_problem(req.get_header_value("Content-Type")));
+      send_problem(req, res,
+                   problems::unsupported_media_type(req.get_header_value("Content-Type")));
       return res.status;
     }
   }
@@ -247,18 +235,17 @@ HandlerResponse HttpApi::on_error(const Request& req, Response& res) {
   if (res.status == 404) {
     const std::string allowed = allowed_methods(req.path);
     if (!allowed.empty()) {
-      p.status = 405;
-      p.detail = req.method + " is not supported on " + req.path + " (allowed: " + allowed + ")";
+      p = problems::method_not_allowed(req.method, req.path, allowed);
       res.set_header("Allow", allowed);
     } else {
-      p.detail = "there is nothing at " + req.path;
+      p = problems::not_found("there is nothing at " + req.path);
     }
   } else if (res.status == 413) {
-    p = too_large_problem(options_.max_body_bytes);
+    p = problems::payload_too_large(options_.max_body_bytes);
   } else if (res.status == 400) {
-    p.detail = "the HTTP request is malformed or its body could not be read";
+    p = problems::bad_request("the HTTP request is malformed or its body could not be read");
   } else if (res.status == 414) {
-    p.detail = "the request URI is too long";
+    p = problems::uri_too_long();
   }
   send_problem(req, res, p);
   return HandlerResponse::Handled;
@@ -269,18 +256,14 @@ void HttpApi::on_exception(const Request& req, Response& res, std::exception_ptr
   try {
     std::rethrow_exception(error);
   } catch (const StoreError& e) {
-    p.status = 503;
-    p.type = problem_type("store-unavailable");
-    p.detail = "the job store is busy or unavailable; retry later";
+    p = problems::store_unavailable();
     res.set_header("Retry-After", std::to_string(options_.retry_after_seconds));
     log_.write("store_error", {{"path", req.path}, {"error", e.what()}});
   } catch (const std::exception& e) {
-    p.status = 500;
-    p.detail = "internal error; the request was not completed";
+    p = problems::internal_error();
     log_.write("internal_error", {{"path", req.path}, {"error", e.what()}});
   } catch (...) {
-    p.status = 500;
-    p.detail = "internal error; the request was not completed";
+    p = problems::internal_error();
     log_.write("internal_error", {{"path", req.path}, {"error", "unknown exception"}});
   }
   send_problem(req, res, p);
@@ -303,11 +286,7 @@ void HttpApi::on_logged(const Request& req, const Response& res) {
 }
 
 void HttpApi::not_found(const Request& req, Response& res, std::int64_t id) {
-  Problem p;
-  p.status = 404;
-  p.type = problem_type("job-not-found");
-  p.detail = "there is no job " + std::to_string(id) + " (it may have been deleted)";
-  send_problem(req, res, p);
+  send_problem(req, res, problems::job_not_found(id));
 }
 
 void HttpApi::send_job(Response& res, int status, const Job& job) {
@@ -318,50 +297,41 @@ void HttpApi::send_job(Response& res, int status, const Job& job) {
 void HttpApi::post_job(const Request& req, Response& res) {
   const std::string content_type = req.get_header_value("Content-Type");
   if (!is_json_media_type(content_type)) {
-    send_problem(req, res, media_type_problem(content_type));
+    send_problem(req, res, problems::unsupported_media_type(content_type));
     return;
   }
   if (json_nesting_depth(req.body, options_.max_json_depth) > options_.max_json_depth) {
-    Problem p;
-    p.status = 400;
-    p.type = problem_type("unparsable-json");
-    p.detail =
-        "the JSON is nested deeper than " + std::to_string(options_.max_json_depth) + " levels";
-    send_problem(req, res, p);
+    send_problem(req, res,
+                 problems::unparsable_json("the JSON is nested deeper than " +
+                                           std::to_string(options_.max_json_depth) + " levels"));
     return;
   }
   nlohmann::json case_json = nlohmann::json::parse(req.body, nullptr, false);
   if (case_json.is_discarded()) {
-    Problem p;
-    p.status = 400;
-    p.type = problem_type("unparsable-json");
-    p.detail = "the body is not valid JSON";
-    p.detail += ": " + parse_error_message(req.body);
-    send_problem(req, res, p);
+    send_problem(
+        req, res,
+        problems::unparsable_json("the body is not valid JSON: " + parse_error_message(req.body)));
+    return;
+  }
+  if (auto pointer = first_duplicate_key(req.body)) {
+    send_problem(req, res,
+                 problems::invalid_case({{*pointer,
+                                          "this key appears twice in its object; give "
+                                          "each key once (JSON parsers disagree on "
+                                          "which one counts)"}}));
     return;
   }
   std::optional<std::string> key;
   if (req.has_header("Idempotency-Key")) {
     key = req.get_header_value("Idempotency-Key");
     if (!is_valid_idempotency_key(*key)) {
-      Problem p;
-      p.status = 400;
-      p.type = problem_type("invalid-idempotency-key");
-      p.detail = "Idempotency-Key must be 1 to 255 visible ASCII characters";
-      send_problem(req, res, p);
+      send_problem(req, res, problems::invalid_idempotency_key());
       return;
     }
   }
   std::vector<CaseError> errors = validator_(case_json);
   if (!errors.empty()) {
-    Problem p;
-    p.status = 422;
-    p.type = problem_type("invalid-case");
-    p.title = "The case is not valid";
-    p.detail = std::to_string(errors.size()) + (errors.size() == 1 ? " problem" : " problems") +
-               " in the case; each entry of errors names the field (JSON pointer) and the fix";
-    p.errors = std::move(errors);
-    send_problem(req, res, p);
+    send_problem(req, res, problems::invalid_case(std::move(errors)));
     return;
   }
 
@@ -389,27 +359,13 @@ void HttpApi::post_job(const Request& req, Response& res) {
       res.set_header("Location", "/v1/jobs/" + std::to_string(outcome.job->id));
       send_job(res, 200, *outcome.job);
       return;
-    case SubmitOutcome::Kind::kKeyConflict: {
-      Problem p;
-      p.status = 422;
-      p.type = problem_type("idempotency-key-reused");
-      p.detail = "this Idempotency-Key was already used for job " +
-                 std::to_string(outcome.job->id) +
-                 " with a different body; use a new key for a new case";
-      p.extra["job"] = "/v1/jobs/" + std::to_string(outcome.job->id);
-      send_problem(req, res, p);
+    case SubmitOutcome::Kind::kKeyConflict:
+      send_problem(req, res, problems::idempotency_key_reused(outcome.job->id));
       return;
-    }
-    case SubmitOutcome::Kind::kQueueFull: {
-      Problem p;
-      p.status = 503;
-      p.type = problem_type("queue-full");
-      p.detail = "the queue already holds " + std::to_string(options_.max_queue) +
-                 " waiting jobs; retry later";
+    case SubmitOutcome::Kind::kQueueFull:
       res.set_header("Retry-After", std::to_string(options_.retry_after_seconds));
-      send_problem(req, res, p);
+      send_problem(req, res, problems::queue_full(options_.max_queue));
       return;
-    }
   }
 }
 
@@ -419,11 +375,11 @@ void HttpApi::list_jobs(const Request& req, Response& res) {
     const std::string state = req.get_param_value("state");
     query.state = parse_job_state(state);
     if (!query.state) {
-      send_problem(
-          req, res,
-          invalid_parameter("state", "'" + state +
-                                         "' is not a state; use queued, running, succeeded, "
-                                         "failed or cancelled"));
+      send_problem(req, res,
+                   problems::invalid_parameter(
+                       "state", "'" + state +
+                                    "' is not a state; use queued, running, succeeded, "
+                                    "failed or cancelled"));
       return;
     }
   }
@@ -432,7 +388,8 @@ void HttpApi::list_jobs(const Request& req, Response& res) {
     int n = 0;
     auto [end, ec] = std::from_chars(text.data(), text.data() + text.size(), n);
     if (ec != std::errc() || end != text.data() + text.size() || n < 1 || n > 100) {
-      send_problem(req, res, invalid_parameter("page_size", "must be an integer from 1 to 100"));
+      send_problem(req, res,
+                   problems::invalid_parameter("page_size", "must be an integer from 1 to 100"));
       return;
     }
     query.page_size = n;
@@ -440,9 +397,9 @@ void HttpApi::list_jobs(const Request& req, Response& res) {
   if (req.has_param("page_token") && !req.get_param_value("page_token").empty()) {
     query.before_id = parse_job_id(req.get_param_value("page_token"));
     if (!query.before_id) {
-      send_problem(
-          req, res,
-          invalid_parameter("page_token", "not a token from next_page_token of an earlier page"));
+      send_problem(req, res,
+                   problems::invalid_parameter(
+                       "page_token", "not a token from next_page_token of an earlier page"));
       return;
     }
   }
@@ -462,37 +419,6 @@ void HttpApi::get_job(const Request& req, Response& res, std::int64_t id) {
   send_job(res, 200, *job);
 }
 
-namespace {
-/// 409 for a job whose result cannot be fetched (yet or ever).
-Problem not_succeeded_problem(const Job& job) {
-  Problem p;
-  p.status = 409;
-  p.extra["state"] = std::string(to_string(job.state));
-  const std::string which = "job " + std::to_string(job.id);
-  switch (job.state) {
-    case JobState::kQueued:
-    case JobState::kRunning:
-      p.type = problem_type("job-not-finished");
-      p.detail = which + " is " + std::string(to_string(job.state)) + "; poll /v1/jobs/" +
-                 std::to_string(job.id) + " until its state is succeeded";
-      break;
-    case JobState::kFailed:
-      p.type = problem_type("job-failed");
-      p.detail = which + " failed: " + job.error;
-      break;
-    case JobState::kCancelled:
-      p.type = problem_type("job-cancelled");
-      p.detail = which + " was cancelled; it has no result";
-      break;
-    case JobState::kSucceeded:
-      p.status = 500;
-      p.detail = which + " succeeded but its result is missing";
-      break;
-  }
-  return p;
-}
-}  // namespace
-
 void HttpApi::get_result(const Request& req, Response& res, std::int64_t id) {
   auto job = store_.find(id);
   if (!job) return not_found(req, res, id);
@@ -502,7 +428,7 @@ void HttpApi::get_result(const Request& req, Response& res, std::int64_t id) {
       return;
     }
   }
-  send_problem(req, res, not_succeeded_problem(*job));
+  send_problem(req, res, problems::job_without_result(*job));
 }
 
 void HttpApi::get_solution(const Request& req, Response& res, std::int64_t id) {
@@ -516,7 +442,7 @@ void HttpApi::get_solution(const Request& req, Response& res, std::int64_t id) {
       return;
     }
   }
-  send_problem(req, res, not_succeeded_problem(*job));
+  send_problem(req, res, problems::job_without_result(*job));
 }
 
 void HttpApi::cancel_job(const Request& req, Response& res, std::int64_t id) {
@@ -531,15 +457,8 @@ void HttpApi::cancel_job(const Request& req, Response& res, std::int64_t id) {
       workers_.request_cancel(id);
       log_.write("job_cancel_requested", {{"job_id", id}});
       return send_job(res, 202, *outcome.job);
-    case CancelOutcome::Kind::kAlreadyFinished: {
-      Problem p;
-      p.status = 409;
-      p.type = problem_type("job-finished");
-      p.detail = "job " + std::to_string(id) + " is already " +
-                 std::string(to_string(outcome.job->state)) + "; there is nothing to cancel";
-      p.extra["state"] = std::string(to_string(outcome.job->state));
-      return send_problem(req, res, p);
-    }
+    case CancelOutcome::Kind::kAlreadyFinished:
+      return send_problem(req, res, problems::job_finished(id, outcome.job->state));
   }
 }
 
@@ -551,14 +470,8 @@ void HttpApi::delete_job(const Request& req, Response& res, std::int64_t id) {
       log_.write("job_deleted", {{"job_id", id}});
       res.status = 204;
       return;
-    case DeleteOutcome::kNotFinished: {
-      Problem p;
-      p.status = 409;
-      p.type = problem_type("job-not-finished");
-      p.detail = "job " + std::to_string(id) +
-                 " is still queued or running; cancel it first, then delete it";
-      return send_problem(req, res, p);
-    }
+    case DeleteOutcome::kNotFinished:
+      return send_problem(req, res, problems::job_not_finished(id));
   }
 }
 
@@ -585,12 +498,7 @@ void HttpApi::static_file(const Request& req, Response& res) {
     if (in) content.assign(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
     if (!in || in.bad()) file.reset();
   }
-  if (!file) {
-    Problem p;
-    p.status = 404;
-    p.detail = "there is nothing at " + req.path;
-    return send_problem(req, res, p);
-  }
+  if (!file) return send_problem(req, res, problems::not_found("there is nothing at " + req.path));
   res.set_header("Cache-Control", "no-cache");
   res.set_content(content, std::string(content_type_for(*file)));
 }

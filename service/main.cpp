@@ -19,6 +19,7 @@
 #include <thread>
 
 #include "case_job_runner.hpp"
+#include "elastic_thread_pool.hpp"
 #include "event_log.hpp"
 #include "http_api.hpp"
 #include "lease_reaper.hpp"
@@ -40,6 +41,7 @@ struct ServeOptions {
   std::size_t max_queue = 1000;
   std::size_t max_body_bytes = 8u << 20;
   double retention_hours = 168;
+  bool admit_over_budget = false;  // queue cases estimated above --max-job-memory anyway
 };
 
 std::string url_host(const std::string& host) {
@@ -67,18 +69,26 @@ int serve(const ServeOptions& o, const sigset_t& stop_signals) {
   }
 
   Metrics metrics;
-  WorkerPool pool(store, service_job_runner(), log, metrics, o.worker.pool_options());
+  WorkerPool pool(store, service_job_runner(o.worker), log, metrics, o.worker.pool_options());
 
   HttpApiOptions api_options;
   api_options.max_queue = o.max_queue;
   api_options.max_body_bytes = o.max_body_bytes;
   api_options.web_root = o.web_root;
-  HttpApi api(store, pool, validate_submitted_case, metrics, log, api_options);
+  HttpApi api(store, pool,
+              submitted_case_validator(o.worker.job_memory_bytes(), !o.admit_over_budget), metrics,
+              log, api_options);
 
   httplib::Server server;
   // The Debian library is compiled: CPPHTTPLIB_THREAD_POOL_COUNT has no effect, only this.
   const int http_threads = o.http_threads;
-  server.new_task_queue = [http_threads] { return new httplib::ThreadPool(http_threads); };
+  // Grows up to 16 times that while every thread holds a connection, so slow or silent
+  // clients cannot keep /healthz and everyone else waiting; a silent one is dropped after
+  // the read timeout.
+  server.new_task_queue = [http_threads] {
+    return new ElasticThreadPool(http_threads, 16 * http_threads);
+  };
+  server.set_read_timeout(2);
   server.set_keep_alive_timeout(2);  // idle keep-alive connections delay shutdown this long
   server.set_keep_alive_max_count(1000);
   api.install(server);
@@ -163,6 +173,9 @@ int main(int argc, char** argv) {
                  "Delete finished jobs older than this (0 keeps them)")
       ->check(CLI::Range(0.0, 1e6))
       ->capture_default_str();
+  app.add_flag("--admit-over-budget", o.admit_over_budget,
+               "Queue cases estimated above --max-job-memory anyway (they run under the limit "
+               "and fail if they exceed it)");
   db_option->excludes(app.get_option("--store"));
   CLI11_PARSE(app, argc, argv);
   if (const std::string problem = o.worker.problem(); !problem.empty()) {

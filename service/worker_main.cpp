@@ -30,7 +30,7 @@ int work(const fosls::service::WorkerOptions& o, const sigset_t& stop_signals) {
   log_recovery(log, opened.recovered, opened.recovery_reason);
   Metrics metrics;  // recorded for the log only: this process serves no /metrics
   WorkerPoolOptions pool_options = o.pool_options();
-  WorkerPool pool(*opened.store, service_job_runner(), log, metrics, pool_options);
+  WorkerPool pool(*opened.store, service_job_runner(o), log, metrics, pool_options);
   LeaseReaper reaper(*opened.store, log, o.max_attempts, o.reaper_interval());
   log.write("started", {{"program", "fosls-worker"},
                         {"store", redacted(opened.location)},

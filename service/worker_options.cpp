@@ -8,7 +8,8 @@
 #include <cstdlib>
 #include <thread>
 
-#include "case_job_runner.hpp"
+#include "memory_budget.hpp"
+#include "process_job_runner.hpp"
 
 namespace fosls::service {
 
@@ -24,6 +25,11 @@ WorkerPoolOptions WorkerOptions::pool_options() const {
   o.lease_duration = seconds_to_ms(lease_seconds);
   o.heartbeat_interval = seconds_to_ms(heartbeat_seconds);
   return o;
+}
+
+std::size_t WorkerOptions::job_memory_bytes() const {
+  if (auto bytes = parse_byte_size(max_job_memory)) return *bytes;
+  return default_job_memory(workers);
 }
 
 std::chrono::milliseconds WorkerOptions::reaper_interval() const {
@@ -67,9 +73,28 @@ void add_worker_options(CLI::App& app, WorkerOptions& o, int min_workers) {
                  "How often running jobs renew their lease and look for cancels")
       ->check(CLI::Range(0.05, 3600.0))
       ->capture_default_str();
+  app.add_option("--max-job-memory", o.max_job_memory,
+                 "Memory one job may use, e.g. 512M or 2G (default: 3/4 of RAM / workers); cases "
+                 "estimated above it are refused, a solve that exceeds it fails its job")
+      ->check([](const std::string& text) {
+        return parse_byte_size(text) ? std::string()
+                                     : "expected a size such as 512M or 2G, got '" + text + "'";
+      });
+  app.add_option("--max-job-seconds", o.max_job_seconds,
+                 "Wall-clock time one job may run (0: no limit); a solve still running then is "
+                 "killed and its job fails")
+      ->check(CLI::Range(0.0, 1e7))
+      ->capture_default_str();
 }
 
-JobRunner service_job_runner() { return run_case_job; }
+JobRunner service_job_runner(const WorkerOptions& options) {
+  ProcessJobRunnerOptions runner;
+  runner.memory_bytes = options.job_memory_bytes();
+  const int cores = static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
+  runner.threads = std::max(1, cores / std::max(1, options.workers));
+  runner.time_limit = seconds_to_ms(options.max_job_seconds);
+  return process_job_runner(runner);
+}
 
 sigset_t block_stop_signals() {
   sigset_t stop_signals;

@@ -20,6 +20,13 @@ struct WorkerOptions {
   int max_attempts = 3;
   double lease_seconds = 30;
   double heartbeat_seconds = 1;
+  /// --max-job-memory as written ("2G"); empty: default_job_memory(workers).
+  std::string max_job_memory;
+  /// --max-job-seconds: wall-clock time one job may run, 0 for no limit.
+  double max_job_seconds = 0;
+
+  /// The memory each job may use, in bytes.
+  std::size_t job_memory_bytes() const;
 
   /// The pool options these give (worker id generated per process).
   WorkerPoolOptions pool_options() const;
@@ -29,12 +36,14 @@ struct WorkerOptions {
   std::string problem() const;
 };
 
-/// Registers --store, --workers, --max-attempts, --lease-seconds, --heartbeat-seconds on
-/// `app`; `min_workers` is 0 for fosls-serve (API only) and 1 for fosls-worker.
+/// Registers --store, --workers, --max-attempts, --lease-seconds, --heartbeat-seconds and
+/// --max-job-memory on `app`; `min_workers` is 0 for fosls-serve (API only) and 1 for
+/// fosls-worker.
 void add_worker_options(CLI::App& app, WorkerOptions& options, int min_workers);
 
-/// The JobRunner both programs solve jobs with.
-JobRunner service_job_runner();
+/// The JobRunner both programs solve jobs with: each job in a fosls-solve-job process under
+/// the job memory limit, with cores / workers threads.
+JobRunner service_job_runner(const WorkerOptions& options);
 
 /// Blocks SIGINT and SIGTERM in the calling thread and every thread started after it, so that
 /// stop_signal_wait can take them as ordinary code; ignores SIGPIPE (a client closing early).

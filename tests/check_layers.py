@@ -117,8 +117,9 @@ def check(build):
                 if target not in public:
                     problems.append(
                         f"{rel}: #include \"{written}\" is not a public header of the library "
-                        f"(public: {', '.join(sorted(public))}); use the case layer's API or add "
-                        "an entry header to FOSLS_PUBLIC_ENTRY_HEADERS in solver/CMakeLists.txt")
+                        f"(public: {', '.join(sorted(public))}); use the case layer's API "
+                        "(case/*.hpp) or add an entry header to FOSLS_PUBLIC_ENTRY_HEADERS in "
+                        "solver/CMakeLists.txt")
     for name, g in (("includes", graph), ("links", {k: set(v) for k, v in links.items()})):
         cycle = find_cycle(g)
         if cycle:

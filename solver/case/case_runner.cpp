@@ -6,6 +6,7 @@
 
 #include "assembly/definiteness.hpp"
 #include "assembly/discretization.hpp"
+#include "case/case_admission.hpp"
 #include "case/expression.hpp"
 #include "case/mesh_factory.hpp"
 #include "core/indefinite_system.hpp"
@@ -22,49 +23,13 @@ double seconds(Clock::time_point a, Clock::time_point b) {
   return std::chrono::duration<double>(b - a).count();
 }
 
-std::string group_list(const Mesh& mesh) {
-  std::string s;
-  for (const auto& g : mesh.group_names()) s += (s.empty() ? "'" : ", '") + g + "'";
-  return s;
-}
-
-/// DOFs of the finest level after `r` red refinements, from the coarse mesh's counts: each
-/// refinement adds a vertex per edge, halves every edge and adds three edges inside every
-/// triangle, which it splits into four.
-long long estimated_dofs(const Mesh& coarse, int r) {
-  long long nt = coarse.num_triangles(), ne = coarse.num_edges(), nv = coarse.num_vertices();
-  for (int k = 0; k < r; ++k) {
-    nv = nv + ne;
-    ne = 2 * ne + 3 * nt;
-    nt = 4 * nt;
-  }
-  return 2 * nv + 2 * ne;
-}
-
 /// Problems that need the coarse mesh: unknown groups, no Dirichlet group, size limits.
 std::vector<CaseError> check_against_mesh(const CaseSpec& spec, const Mesh& mesh,
                                           const CaseLimits& limits) {
-  std::vector<CaseError> errors;
-  bool dirichlet = false;
-  for (const auto& [name, bc] : spec.boundary) {
-    if (mesh.group_index(name) < 0)
-      errors.push_back({"/boundary/" + name, "the mesh has no boundary group '" + name +
-                                                 "'; its groups are " + group_list(mesh)});
-    dirichlet |= bc.type == BoundaryCondition::Type::kDirichlet;
-  }
-  if (!dirichlet)
-    errors.push_back({"/boundary",
-                      "no group has a dirichlet condition: without one the body can move "
-                      "freely (rigid body motions) and the problem has no unique solution; "
-                      "fix the displacement on at least one group"});
-  const long long dofs = estimated_dofs(mesh, spec.mesh.refinements);
-  if (dofs > limits.max_dofs)
-    errors.push_back({"/mesh/refinements",
-                      std::to_string(spec.mesh.refinements) + " refinements of this mesh give " +
-                          std::to_string(dofs) + " unknowns, more than the limit of " +
-                          std::to_string(limits.max_dofs) +
-                          "; use fewer refinements or a coarser mesh.size"});
-  return errors;
+  return check_against_groups(spec, mesh.group_names(),
+                              unknowns_after_refinement(mesh.num_triangles(), mesh.num_edges(),
+                                                        mesh.num_vertices(), spec.mesh.refinements),
+                              true, limits);
 }
 
 RigidObstacle rigid_obstacle(const Obstacle& o) {

@@ -38,6 +38,21 @@ void take_params(const MeshSpec& spec, const std::vector<std::pair<std::string, 
   }
 }
 
+/// The parameters of the built-in hertz; CaseException for unknown or non-finite ones.
+HertzParams hertz_params(const MeshSpec& spec) {
+  std::vector<CaseError> errors;
+  if (!(spec.size > 0) || !std::isfinite(spec.size))
+    errors.push_back({kSizePointer, "the mesh size must be a positive number"});
+  HertzParams p;
+  take_params(
+      spec,
+      {{"radius", &p.radius}, {"contact_fraction", &p.contact_fraction}, {"grading", &p.grading}},
+      errors);
+  p.size = spec.size;
+  if (!errors.empty()) throw CaseException(std::move(errors));
+  return p;
+}
+
 Mesh build_builtin(const MeshSpec& spec, const MeshingControl& control) {
   std::vector<CaseError> errors;
   if (!(spec.size > 0) || !std::isfinite(spec.size))
@@ -60,16 +75,7 @@ Mesh build_builtin(const MeshSpec& spec, const MeshingControl& control) {
                               "); use a larger size and refinements instead");
     return make_square(p);
   }
-  if (spec.builtin == "hertz") {
-    HertzParams p;
-    take_params(
-        spec,
-        {{"radius", &p.radius}, {"contact_fraction", &p.contact_fraction}, {"grading", &p.grading}},
-        errors);
-    p.size = spec.size;
-    if (!errors.empty()) throw CaseException(std::move(errors));
-    return make_hertz(p, control);
-  }
+  if (spec.builtin == "hertz") return make_hertz(hertz_params(spec), control);
   throw CaseException(kBuiltinPointer,
                       "unknown built-in geometry '" + spec.builtin + "'; use 'square' or 'hertz'");
 }
@@ -110,6 +116,20 @@ Mesh build_coarse_mesh(const MeshSpec& spec, const MeshingControl& control) {
     throw CaseException(source_pointer(spec.kind), e.what());
   }
   throw CaseException("/mesh", "unknown kind of mesh source");
+}
+
+std::optional<GmshOutline> gmsh_outline(const MeshSpec& spec) {
+  if (spec.kind == MeshSpec::Kind::kGeometry) {
+    SizeField size;
+    size.size = spec.size;
+    return GmshOutline{spec.geometry, size};
+  }
+  if (spec.kind != MeshSpec::Kind::kBuiltin || spec.builtin != "hertz") return std::nullopt;
+  try {
+    return hertz_outline(hertz_params(spec));
+  } catch (const std::invalid_argument& e) {
+    throw CaseException(kBuiltinPointer, e.what());
+  }
 }
 
 CaseException to_case_exception(const MeshError& error, MeshSpec::Kind kind) {

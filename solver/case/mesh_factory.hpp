@@ -4,8 +4,11 @@
 // (MeshError, fields relative to the mesh section) become CaseException with JSON pointers
 // under /mesh.
 
+#include <optional>
 #include "case/case_error.hpp"
+
 #include "case/case_spec.hpp"
+#include "mesh/builtin_meshes.hpp"
 #include "mesh/gmsh_mesh.hpp"
 #include "mesh/mesh.hpp"
 
@@ -16,6 +19,11 @@ namespace fosls {
 /// thrown as CaseException with the pointer of the offending field under /mesh. Throws
 /// MeshingCancelled when `control.cancel` stopped the mesher.
 Mesh build_coarse_mesh(const MeshSpec& spec, const MeshingControl& control = {});
+
+/// The outline and size field gmsh would mesh for this source (a geometry, or the built-in
+/// hertz), after the parameter checks that need no gmsh; nothing for sources built without gmsh
+/// (the built-in square, msh text) or a .geo file. Throws CaseException for bad parameters.
+std::optional<GmshOutline> gmsh_outline(const MeshSpec& spec);
 
 /// A MeshError of the mesh source `kind` as the case's problems: each field prefixed with
 /// /mesh; for built-in geometries, problems of the generated outline are put at

@@ -6,6 +6,7 @@
 //   fosls-contact solve hertz.json --out result.json --vtu solution.vtu
 //   fosls-contact example hertz | fosls-contact solve - --quiet
 //   fosls-contact bench hertz --levels 2..5 --methods mmg,tnnmg,pdas
+//   fosls-contact estimate hertz.json          memory the solve will need
 //
 // Exit codes: 0 converged, 1 unexpected failure, 2 bad command line or invalid case,
 // 3 solved but not converged (the result is still written).
@@ -15,6 +16,7 @@
 #include <iostream>
 
 #include "cli/bench_command.hpp"
+#include "cli/estimate_command.hpp"
 #include "cli/example_command.hpp"
 #include "cli/exit_codes.hpp"
 #include "cli/solve_command.hpp"
@@ -29,6 +31,7 @@ int main(int argc, char** argv) {
     add_solve_command(app, exit_code);
     add_example_command(app, exit_code);
     add_bench_command(app, exit_code);
+    add_estimate_command(app, exit_code);
     try {
       app.parse(argc, argv);
     } catch (const CLI::ParseError& e) {

@@ -37,7 +37,7 @@ Mesh make_square(const SquareParams& p) {
   return Mesh(std::move(v), std::move(tris), std::move(seg), {"bottom", "right", "top", "left"});
 }
 
-Mesh make_hertz(const HertzParams& p, const MeshingControl& control) {
+GmshOutline hertz_outline(const HertzParams& p) {
   if (!(p.radius > 0) || !std::isfinite(p.radius))
     throw std::invalid_argument("hertz: radius must be a positive number");
   if (!(p.contact_fraction > 0 && p.contact_fraction < 1))
@@ -65,7 +65,12 @@ Mesh make_hertz(const HertzParams& p, const MeshingControl& control) {
   size.grading = p.grading;
   size.origin = Point(0, 0);
   size.reach = std::sqrt(2.0) * r;
-  return mesh_from_geometry(g, size, control);
+  return {std::move(g), size};
+}
+
+Mesh make_hertz(const HertzParams& p, const MeshingControl& control) {
+  const GmshOutline outline = hertz_outline(p);
+  return mesh_from_geometry(outline.geometry, outline.size, control);
 }
 
 }  // namespace fosls

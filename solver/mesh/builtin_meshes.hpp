@@ -1,6 +1,7 @@
 #pragma once
 // Shipped geometries: the rectangle `square` and the Hertz half disk `hertz`.
 
+#include "mesh/geometry_spec.hpp"
 #include "mesh/gmsh_mesh.hpp"
 #include "mesh/mesh.hpp"
 
@@ -30,5 +31,15 @@ struct HertzParams {
   double grading = 7.0;
 };
 Mesh make_hertz(const HertzParams& p, const MeshingControl& control = {});
+
+/// An outline and the size field gmsh meshes it with.
+struct GmshOutline {
+  GeometrySpec geometry;
+  SizeField size;
+};
+
+/// The outline make_hertz meshes, without meshing it; throws std::invalid_argument for bad
+/// parameters.
+GmshOutline hertz_outline(const HertzParams& p);
 
 }  // namespace fosls

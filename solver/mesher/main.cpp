@@ -7,8 +7,6 @@
 // document, {"mesh": ...} or {"problems": [...]}, and exit code 0. Exit code 2: the request
 // was unreadable; 3: out of memory (also said on stderr). Anything gmsh prints goes to stderr.
 
-#include <unistd.h>
-
 #include <cerrno>
 #include <iostream>
 #include <iterator>
@@ -19,28 +17,11 @@
 #include "mesher/gmsh_meshing.hpp"
 #include "process/child_process.hpp"
 
-namespace {
-
-bool write_all(int fd, const std::string& text) {
-  std::size_t done = 0;
-  while (done < text.size()) {
-    const ssize_t n = ::write(fd, text.data() + done, text.size() - done);
-    if (n < 0 && errno == EINTR) continue;
-    if (n <= 0) return false;
-    done += static_cast<std::size_t>(n);
-  }
-  return true;
-}
-
-}  // namespace
-
 int main() {
   using namespace fosls;
   die_with_parent();
-  // The answer gets a descriptor of its own; fd 1 becomes stderr, so nothing gmsh or a
-  // library prints can corrupt it.
-  const int answer_fd = ::dup(STDOUT_FILENO);
-  ::dup2(STDERR_FILENO, STDOUT_FILENO);
+  // Nothing a library prints can corrupt the answer: fd 1 now writes to stderr.
+  const int answer_fd = fosls::take_stdout_for_answer();
   try {
     const std::string text{std::istreambuf_iterator<char>(std::cin),
                            std::istreambuf_iterator<char>()};
@@ -59,7 +40,7 @@ int main() {
     } catch (const MeshError& e) {
       answer = problems_answer(e.problems());
     }
-    return write_all(answer_fd, answer.dump()) ? 0 : 1;
+    return fosls::write_all(answer_fd, answer.dump()) ? 0 : 1;
   } catch (const std::bad_alloc&) {
     std::cerr << "fosls-mesher: out of memory (std::bad_alloc)\n";
     return 3;

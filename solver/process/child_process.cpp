@@ -105,13 +105,21 @@ class FileActions {
   posix_spawn_file_actions_t actions_;
 };
 
-/// This process's environment plus FOSLS_PARENT_PID, for die_with_parent() in the child.
-std::vector<std::string> child_environment() {
+/// This process's environment with `extra` entries and FOSLS_PARENT_PID (for
+/// die_with_parent() in the child) replacing any of the same names.
+std::vector<std::string> child_environment(std::vector<std::string> extra) {
+  extra.push_back(std::string(kParentPidVariable) + "=" + std::to_string(::getpid()));
+  auto replaced = [&extra](const char* entry) {
+    for (const auto& e : extra) {
+      const auto eq = e.find('=');
+      if (std::strncmp(entry, e.c_str(), eq + 1) == 0) return true;
+    }
+    return false;
+  };
   std::vector<std::string> env;
-  const std::string prefix = std::string(kParentPidVariable) + "=";
   for (char** e = environ; e && *e; ++e)
-    if (std::strncmp(*e, prefix.c_str(), prefix.size()) != 0) env.emplace_back(*e);
-  env.push_back(prefix + std::to_string(::getpid()));
+    if (!replaced(*e)) env.emplace_back(*e);
+  env.insert(env.end(), extra.begin(), extra.end());
   return env;
 }
 
@@ -188,7 +196,7 @@ ChildResult run_child(const ChildOptions& options) {
   actions.dup2(out.write.get(), STDOUT_FILENO);
   actions.dup2(err.write.get(), STDERR_FILENO);
   SpawnAttributes attributes;
-  std::vector<std::string> argv = options.argv, env = child_environment();
+  std::vector<std::string> argv = options.argv, env = child_environment(options.environment);
   std::vector<char*> argv_p = pointers(argv), env_p = pointers(env);
 
   const auto started = Clock::now();
@@ -290,6 +298,23 @@ void die_with_parent() {
   // The parent may have died before prctl: then we were re-parented already.
   if (const char* expected = std::getenv(kParentPidVariable))
     if (std::to_string(::getppid()) != expected) std::_Exit(137);
+}
+
+int take_stdout_for_answer() {
+  const int answer_fd = ::dup(STDOUT_FILENO);
+  ::dup2(STDERR_FILENO, STDOUT_FILENO);
+  return answer_fd;
+}
+
+bool write_all(int fd, std::string_view text) {
+  std::size_t done = 0;
+  while (done < text.size()) {
+    const ssize_t n = ::write(fd, text.data() + done, text.size() - done);
+    if (n < 0 && errno == EINTR) continue;
+    if (n <= 0) return false;
+    done += static_cast<std::size_t>(n);
+  }
+  return true;
 }
 
 std::string sibling_program(const std::string& name, const char* override_env) {

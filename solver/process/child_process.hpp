@@ -31,6 +31,8 @@ struct ChildLimits {
 struct ChildOptions {
   std::vector<std::string> argv;  ///< argv[0] is the path of the program
   std::string input;              ///< written to the child's stdin, which is then closed
+  /// NAME=value entries added to (or replacing) this process's environment for the child.
+  std::vector<std::string> environment;
   ChildLimits limits;
   /// When set and it becomes true, the child is killed (checked every 20 ms).
   const std::atomic<bool>* cancel = nullptr;
@@ -66,6 +68,13 @@ ChildResult run_child(const ChildOptions& options);
 /// For child programs, first thing in main(): die with SIGKILL when the parent dies, so that
 /// nothing outlives a killed server or CLI. Exits at once when the parent is already gone.
 void die_with_parent();
+
+/// For child programs: a descriptor of their own for the answer to the parent, after which
+/// fd 1 writes to stderr, so that nothing a library prints can corrupt the answer.
+int take_stdout_for_answer();
+
+/// Writes all of `text` to `fd`; false when the reader is gone.
+bool write_all(int fd, std::string_view text);
 
 /// The path of a program installed beside this one: `override_env` (when that environment
 /// variable is set), else the folder of /proc/self/exe, else the build's bin folder. Throws

@@ -225,6 +225,48 @@ TEST(HttpApi, ChunkedAndLengthlessBodiesAreRefusedWithoutReading) {
   EXPECT_EQ(svc.store().count_by_state()[JobState::kQueued], 0);
 }
 
+TEST(HttpApi, DuplicateKeysAreRefusedWithTheirPointer) {
+  Service svc({}, false);
+  auto cli = svc.client();
+  const std::pair<const char*, const char*> cases[] = {
+      {R"({"name": "a", "name": "b"})", "/name"},
+      {R"({"mesh": {"size": 1, "refinements": 2, "size": 2}})", "/mesh/size"},
+      {R"({"boundary": {"top": {"values": [{"x": 1}, {"x": 1, "x": 2}]}}})",
+       "/boundary/top/values/1/x"},
+      {R"({"a/b~c": [1, [2, 3], {"k": 0}], "a/b~c": 1})", "/a~1b~0c"},
+  };
+  for (const auto& [body, pointer] : cases) {
+    auto res = post_json(cli, "/v1/jobs", body);
+    expect_problem(res, 422, "invalid-case");
+    const json p = json::parse(res->body);
+    ASSERT_EQ(p["errors"].size(), 1u) << res->body;
+    EXPECT_EQ(p["errors"][0]["pointer"], pointer) << body;
+    EXPECT_NE(p["errors"][0]["detail"].get<std::string>().find("twice"), std::string::npos);
+  }
+  EXPECT_EQ(svc.store().count_by_state()[JobState::kQueued], 0);
+}
+
+TEST(HttpApi, MalformedOrNegativeContentLengthIs400AndItsBodyIsNeverARequest) {
+  Service svc({}, false);
+  for (const char* length : {"abc", "-5", "12x", "1e3", "99999999999999999999"}) {
+    // The bytes after the headers would otherwise be read as the next request.
+    auto res = raw_http(svc.port(),
+                        std::string("POST /v1/jobs HTTP/1.1\r\nHost: x\r\n"
+                                    "Content-Type: application/json\r\nContent-Length: ") +
+                            length + "\r\n\r\nGET /v1/jobs HTTP/1.1\r\nHost: x\r\n\r\n",
+                        1);
+    EXPECT_EQ(res.status, 400) << length << "\n" << res.text;
+    EXPECT_NE(raw_body(res).find("invalid-content-length"), std::string::npos) << res.text;
+    EXPECT_EQ(res.text.find("HTTP/1.1 200"), std::string::npos)
+        << "the body was served as a request: " << res.text;
+  }
+  auto twice = raw_http(svc.port(),
+                        "POST /v1/jobs HTTP/1.1\r\nHost: x\r\nContent-Type: application/json\r\n"
+                        "Content-Length: 2\r\nContent-Length: 3\r\nConnection: close\r\n\r\n{}");
+  EXPECT_EQ(twice.status, 400) << twice.text;
+  EXPECT_EQ(svc.store().count_by_state()[JobState::kQueued], 0);
+}
+
 TEST(HttpApi, CancelAndDeleteWorkWithoutABody) {
   Service svc({}, false);
   auto cli = svc.client();

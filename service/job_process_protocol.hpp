@@ -1,0 +1,50 @@
+#pragma once
+// What a solve process (fosls-solve-job) says to the worker that started it, on its stdout:
+// progress lines while it runs, then how the run ended. Framed with byte counts, so a VTU of
+// any size passes through without being scanned:
+//
+//   P <iteration> <kkt_residual> <energy>\n        progress (any number)
+//   S <n>\n<n bytes: result JSON>V <m>\n<m bytes: VTU>E\n        succeeded
+//   F <n>\n<n bytes: message>E\n                  failed (a case problem found while running)
+//   C\nE\n                                         cancelled (from inside the run)
+
+#include <cstddef>
+#include <functional>
+#include <optional>
+#include <string>
+#include <string_view>
+
+#include "job.hpp"
+#include "job_runner.hpp"
+
+namespace fosls::service {
+
+/// Child side: the text of one message.
+std::string progress_message(const JobProgress& progress);
+std::string outcome_message(const JobRunOutcome& outcome);
+
+/// Parent side: reads the stream as it arrives.
+class JobProcessReader {
+ public:
+  explicit JobProcessReader(std::function<void(const JobProgress&)> on_progress)
+      : on_progress_(std::move(on_progress)) {}
+
+  /// Consumes the next piece of the stream.
+  void feed(std::string_view data);
+  /// The outcome, once the end marker has been read.
+  const std::optional<JobRunOutcome>& outcome() const { return outcome_; }
+  /// Set when the stream is not in this format (then nothing more is read).
+  const std::string& malformed() const { return malformed_; }
+
+ private:
+  /// Parses complete messages at the front of buffer_; false when more bytes are needed.
+  bool parse_one();
+
+  std::function<void(const JobProgress&)> on_progress_;
+  std::string buffer_;
+  JobRunOutcome pending_;
+  std::optional<JobRunOutcome> outcome_;
+  std::string malformed_;
+};
+
+}  // namespace fosls::service

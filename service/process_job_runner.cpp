@@ -1,0 +1,92 @@
+#include "process_job_runner.hpp"
+
+#include <signal.h>
+
+#include <cstdio>
+
+#include "job_process_protocol.hpp"
+#include "memory_budget.hpp"
+#include "process/child_process.hpp"
+
+namespace fosls::service {
+
+namespace {
+
+std::string last_line(const std::string& text) {
+  std::string t = text;
+  while (!t.empty() && (t.back() == '\n' || t.back() == '\r')) t.pop_back();
+  const auto nl = t.rfind('\n');
+  return nl == std::string::npos ? t : t.substr(nl + 1);
+}
+
+JobRunOutcome failed(std::string error) {
+  JobRunOutcome o;
+  o.kind = JobRunOutcome::Kind::kFailed;
+  o.error = std::move(error);
+  return o;
+}
+
+/// Every way the solve process can end, as the job's outcome.
+JobRunOutcome outcome_of(const ChildResult& r, const JobProcessReader& reader,
+                         const ProcessJobRunnerOptions& options) {
+  const std::string memory =
+      "the solve ran out of memory: a job may use " + format_bytes(options.memory_bytes) +
+      " (the service's --max-job-memory); use fewer refinements, a coarser mesh.size or "
+      "another solver.method";
+  switch (r.end) {
+    case ChildResult::End::kCancelled: {
+      JobRunOutcome o;
+      o.kind = JobRunOutcome::Kind::kCancelled;
+      return o;
+    }
+    case ChildResult::End::kTimedOut: {
+      char limit[32];
+      std::snprintf(limit, sizeof limit, "%g", options.time_limit.count() / 1000.0);
+      return failed(std::string("the solve did not finish within ") + limit +
+                    " s (the service's --max-job-seconds); use fewer refinements, a looser "
+                    "solver.tolerance or fewer solver.max_iterations");
+    }
+    case ChildResult::End::kOutputTooLarge:
+      return failed("the result is too large to be stored");
+    case ChildResult::End::kSignaled:
+      if (r.ran_out_of_memory()) return failed(memory);
+      if (r.signal == SIGKILL)
+        return failed(
+            "the solve was killed (signal 9), most likely by the system running out "
+            "of memory; " +
+            memory.substr(memory.find("a job may use")));
+      return failed("the solver crashed (" + r.describe() + "); " +
+                    (r.errors.empty() ? std::string("no message")
+                                      : "its last message: " + last_line(r.errors)));
+    case ChildResult::End::kExited:
+      break;
+  }
+  if (r.exit_code == 0 && reader.outcome()) return *reader.outcome();
+  if (r.ran_out_of_memory()) return failed(memory);
+  if (!reader.malformed().empty())
+    return failed("internal error: the solve process answered " + reader.malformed());
+  return failed("internal error while solving (" + r.describe() + "): " + last_line(r.errors));
+}
+
+}  // namespace
+
+JobRunner process_job_runner(ProcessJobRunnerOptions options) {
+  if (options.program.empty())
+    options.program = sibling_program("fosls-solve-job", "FOSLS_SOLVE_JOB");
+  return [options](const nlohmann::json& case_json, const JobRunContext& context) {
+    JobProcessReader reader(context.report_progress);
+    ChildOptions child;
+    child.argv = {options.program};
+    child.input = case_json.dump(-1, ' ', false, nlohmann::json::error_handler_t::replace);
+    child.limits.address_space_bytes = options.memory_bytes + kSolveAddressSpaceHeadroom;
+    child.limits.max_output_bytes = std::size_t{4} << 30;
+    child.limits.wall = options.time_limit;
+    child.cancel = &context.cancel;
+    child.on_output = [&reader](std::string_view data) { reader.feed(data); };
+    const std::string threads = std::to_string(options.threads);
+    child.environment = {"OMP_NUM_THREADS=" + threads, "OPENBLAS_NUM_THREADS=" + threads};
+    return outcome_of(run_child(child), reader, options);
+  };
+}
+
+}  // namespace fosls::service

@@ -1,0 +1,117 @@
+#include "case/case_admission.hpp"
+
+#include <algorithm>
+#include <cstdio>
+
+#include "case/mesh_factory.hpp"
+#include "mesh/coarse_mesh_estimate.hpp"
+#include "mesh/geometry_checks.hpp"
+
+namespace fosls {
+
+namespace {
+
+std::string quoted_list(const std::vector<std::string>& names) {
+  std::string s;
+  for (const auto& g : names) s += (s.empty() ? "'" : ", '") + g + "'";
+  return s;
+}
+
+std::string bytes_text(double bytes) {
+  char text[32];
+  if (bytes >= (1 << 30))
+    std::snprintf(text, sizeof text, "%.3g GiB", bytes / (1 << 30));
+  else
+    std::snprintf(text, sizeof text, "%.0f MiB", bytes / (1 << 20));
+  return text;
+}
+
+/// The geometry checks and size guards of a gmsh outline, as the case's problems.
+std::vector<CaseError> outline_problems(const GmshOutline& outline, MeshSpec::Kind kind,
+                                        CoarseMeshEstimate& estimate) {
+  std::vector<MeshProblem> problems = check_size_field(outline.size);
+  for (auto& p : validate_geometry(outline.geometry)) problems.push_back(std::move(p));
+  if (problems.empty()) {
+    estimate = estimate_coarse_mesh(outline.geometry, outline.size);
+    problems = check_coarse_mesh_estimate(estimate);
+  }
+  if (problems.empty()) return {};
+  return to_case_exception(MeshError(std::move(problems)), kind).errors();
+}
+
+}  // namespace
+
+std::vector<CaseError> check_against_groups(const CaseSpec& spec,
+                                            const std::vector<std::string>& group_names,
+                                            long long unknowns, bool unknowns_exact,
+                                            const CaseLimits& limits) {
+  std::vector<CaseError> errors;
+  bool dirichlet = false;
+  for (const auto& [name, bc] : spec.boundary) {
+    if (std::find(group_names.begin(), group_names.end(), name) == group_names.end())
+      errors.push_back({"/boundary/" + name, "the mesh has no boundary group '" + name +
+                                                 "'; its groups are " + quoted_list(group_names)});
+    dirichlet |= bc.type == BoundaryCondition::Type::kDirichlet;
+  }
+  if (!dirichlet)
+    errors.push_back({"/boundary",
+                      "no group has a dirichlet condition: without one the body can move "
+                      "freely (rigid body motions) and the problem has no unique solution; "
+                      "fix the displacement on at least one group"});
+  if (unknowns_exact && unknowns > limits.max_dofs)
+    errors.push_back({"/mesh/refinements",
+                      std::to_string(spec.mesh.refinements) + " refinements of this mesh give " +
+                          std::to_string(unknowns) + " unknowns, more than the limit of " +
+                          std::to_string(limits.max_dofs) +
+                          "; use fewer refinements or a coarser mesh.size"});
+  return errors;
+}
+
+CaseAdmission admit_case(const nlohmann::json& j, const CaseReadOptions& options) {
+  CaseAdmission out;
+  CaseReadResult read = read_case(j, options);
+  if (!read.errors.empty()) {
+    out.errors = std::move(read.errors);
+    return out;
+  }
+  out.spec = std::move(read.spec);
+  const CaseSpec& spec = *out.spec;
+  std::vector<std::string> groups;
+  long long unknowns = 0;
+  bool exact = false;
+  try {
+    if (auto outline = gmsh_outline(spec.mesh)) {
+      CoarseMeshEstimate coarse;
+      out.errors = outline_problems(*outline, spec.mesh.kind, coarse);
+      if (!out.errors.empty()) return out;
+      for (const auto& g : outline->geometry.groups) groups.push_back(g.name);
+      unknowns = unknowns_after_refinement(coarse.triangles(), coarse.boundary_edges,
+                                           spec.mesh.refinements);
+    } else {
+      const Mesh mesh = build_coarse_mesh(spec.mesh);  // square or msh: no gmsh
+      groups = mesh.group_names();
+      unknowns = unknowns_after_refinement(mesh.num_triangles(), mesh.num_edges(),
+                                           mesh.num_vertices(), spec.mesh.refinements);
+      exact = true;
+    }
+  } catch (const CaseException& e) {
+    out.errors = e.errors();
+    return out;
+  }
+  out.errors = check_against_groups(spec, groups, unknowns, exact, options.limits);
+  if (out.errors.empty()) out.estimate = estimate_resources(unknowns, exact, spec.solver.method);
+  return out;
+}
+
+std::optional<CaseError> check_memory_budget(const ResourceEstimate& estimate, Method method,
+                                             double budget_bytes, const std::string& budget_name) {
+  if (estimate.memory_bytes <= budget_bytes) return std::nullopt;
+  return CaseError{
+      "/mesh/refinements",
+      "the solve needs " + describe(estimate, method) + ", more than the " +
+          bytes_text(budget_bytes) + " a job may use (" + budget_name +
+          "); use fewer refinements or a coarser mesh.size" +
+          (method == Method::kPgs ? std::string() : ", or solver.method pgs (the leanest)")};
+}
+
+}  // namespace fosls

@@ -1,0 +1,58 @@
+#include "case/resource_estimate.hpp"
+
+#include <cmath>
+#include <cstdio>
+
+namespace fosls {
+
+double bytes_per_unknown(Method method) {
+  // tests/benchmarks/memory_calibration.py, fitted on relative error; see docs/case-format.md.
+  switch (method) {
+    case Method::kMmg:
+      return 1585;
+    case Method::kTnnmg:
+      return 1592;
+    case Method::kPdas:
+      return 2095;
+    case Method::kPgs:
+      return 1042;
+  }
+  return 2095;
+}
+
+long long unknowns_after_refinement(long long triangles, long long edges, long long vertices,
+                                    int refinements) {
+  long long nt = triangles, ne = edges, nv = vertices;
+  for (int k = 0; k < refinements; ++k) {
+    nv = nv + ne;
+    ne = 2 * ne + 3 * nt;
+    nt = 4 * nt;
+  }
+  return 2 * nv + 2 * ne;
+}
+
+long long unknowns_after_refinement(double triangles, double boundary_edges, int refinements) {
+  // A triangulated disk: 3T = 2E − B (every interior edge in two triangles) and V − E + T = 1.
+  const double edges = (3 * triangles + boundary_edges) / 2;
+  const double vertices = 1 + edges - triangles;
+  return unknowns_after_refinement(std::llround(triangles), std::llround(edges),
+                                   std::llround(vertices), refinements);
+}
+
+ResourceEstimate estimate_resources(long long unknowns, bool exact, Method method) {
+  return {unknowns, exact, kSolveBaseBytes + bytes_per_unknown(method) * unknowns};
+}
+
+std::string describe(const ResourceEstimate& e, Method method) {
+  static const char* names[] = {"mmg", "tnnmg", "pdas", "pgs"};
+  char text[160];
+  const double mib = e.memory_bytes / (1 << 20);
+  if (mib >= 1024)
+    std::snprintf(text, sizeof text, "about %.3g GiB", mib / 1024);
+  else
+    std::snprintf(text, sizeof text, "about %.0f MiB", mib);
+  return std::string(text) + " for " + (e.unknowns_exact ? "" : "about ") +
+         std::to_string(e.unknowns) + " unknowns with " + names[static_cast<int>(method)];
+}
+
+}  // namespace fosls

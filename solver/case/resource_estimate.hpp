@@ -1,0 +1,44 @@
+#pragma once
+// How much memory a case's solve needs, from its unknowns and its method, before it is solved:
+// the service admits a case only when the estimate fits its per-job budget, and the CLI prints
+// the estimate (`fosls-contact solve --dry-run`). The coefficients are measured, not derived:
+// tests/benchmarks/memory_calibration.py re-measures them (docs/case-format.md, "Resources").
+
+#include <cstddef>
+#include <string>
+
+#include "case/case_spec.hpp"
+#include "mesh/mesh.hpp"
+
+namespace fosls {
+
+/// Peak resident memory of a solve ≈ kSolveBaseBytes + bytes_per_unknown(method) · unknowns,
+/// fitted over the Signorini square at 8 000 to 2 100 000 unknowns (VTU included).
+inline constexpr double kSolveBaseBytes = 10.0 * (1 << 20);
+
+/// The fitted slope of a method, bytes per unknown of the finest level.
+double bytes_per_unknown(Method method);
+
+/// Unknowns of the finest level (2 per vertex, 2 per edge) after `refinements` red
+/// refinements of a coarse mesh with these counts: each refinement adds a vertex per edge,
+/// halves every edge and adds three edges inside every triangle, which it splits into four.
+long long unknowns_after_refinement(long long triangles, long long edges, long long vertices,
+                                    int refinements);
+
+/// The same from a coarse triangle and boundary edge count only (estimated before meshing):
+/// the other counts follow from Euler's formula for a disk.
+long long unknowns_after_refinement(double triangles, double boundary_edges, int refinements);
+
+/// What admission and --dry-run report.
+struct ResourceEstimate {
+  long long unknowns = 0;
+  bool unknowns_exact = false;  ///< false when the coarse mesh was estimated, not built
+  double memory_bytes = 0;      ///< estimated peak resident memory of the solve
+};
+
+ResourceEstimate estimate_resources(long long unknowns, bool exact, Method method);
+
+/// The estimate as one sentence ("about 1.2 GiB for 850 000 unknowns with mmg").
+std::string describe(const ResourceEstimate& estimate, Method method);
+
+}  // namespace fosls

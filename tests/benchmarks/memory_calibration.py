@@ -1,0 +1,110 @@
+#!/usr/bin/env python3
+"""Peak memory of a solve per method and size, and the coefficients of the job memory estimate.
+
+Runs `fosls-contact solve` (the same library call a service job makes, VTU included) on the
+shipped Signorini square at several refinement levels with each method, each in its own
+process, and records the peak resident set (VmHWM) and the unknowns. It then fits
+    peak_bytes ≈ base + per_unknown[method] · unknowns
+by least squares on relative error and prints the table for docs/case-format.md and the
+coefficients for solver/case/resource_estimate.cpp.
+
+    tests/benchmarks/memory_calibration.py build/bin/fosls-contact [--levels 4,5,6,7] [--hertz]
+
+Only two iterations are run: the peak is reached while setting up (hierarchy, factorisation)
+and in the first cycles; later iterations allocate nothing new.
+"""
+import argparse
+import json
+import subprocess
+import sys
+import tempfile
+import time
+
+METHODS = ["mmg", "tnnmg", "pdas", "pgs"]
+
+
+def peak_of(cmd):
+    """Runs cmd; returns (peak RSS in bytes, wall seconds, stdout)."""
+    t0 = time.time()
+    proc = subprocess.Popen(cmd, stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
+    peak = 0
+    status = f"/proc/{proc.pid}/status"
+    while proc.poll() is None:
+        try:
+            with open(status) as f:
+                for line in f:
+                    if line.startswith("VmHWM:"):
+                        peak = max(peak, int(line.split()[1]) * 1024)
+        except OSError:
+            pass
+        time.sleep(0.02)
+    out, err = proc.communicate()
+    if proc.returncode not in (0, 3):
+        sys.exit(f"{' '.join(cmd)} failed ({proc.returncode}): {err}")
+    return peak, time.time() - t0, out
+
+
+def least_squares(a, b):
+    """Solves the normal equations aᵀa x = aᵀb (a few unknowns) by Gaussian elimination."""
+    n = len(a[0])
+    m = [[sum(r[i] * r[j] for r in a) for j in range(n)] + [sum(r[i] * bi for r, bi in zip(a, b))]
+         for i in range(n)]
+    for c in range(n):
+        p = max(range(c, n), key=lambda r: abs(m[r][c]))
+        m[c], m[p] = m[p], m[c]
+        for r in range(n):
+            if r != c and m[c][c] != 0:
+                f = m[r][c] / m[c][c]
+                m[r] = [x - f * y for x, y in zip(m[r], m[c])]
+    return [m[i][n] / m[i][i] for i in range(n)]
+
+
+def main():
+    ap = argparse.ArgumentParser()
+    ap.add_argument("cli")
+    ap.add_argument("--levels", default="4,5,6,7")
+    ap.add_argument("--hertz", action="store_true", help="also the Hertz example (graded gmsh mesh)")
+    args = ap.parse_args()
+    base_case = json.loads(subprocess.check_output([args.cli, "example", "signorini_square"]))
+    rows = []
+    cases = [("square", base_case, int(r)) for r in args.levels.split(",")]
+    if args.hertz:
+        hertz = json.loads(subprocess.check_output([args.cli, "example", "hertz"]))
+        cases += [("hertz", hertz, r) for r in (3, 4, 5)]
+    with tempfile.TemporaryDirectory() as tmp:
+        for name, case, level in cases:
+            for method in METHODS:
+                c = json.loads(json.dumps(case))
+                c["mesh"]["refinements"] = level
+                c["solver"] = dict(c.get("solver", {}), method=method, max_iterations=2)
+                path = f"{tmp}/case.json"
+                with open(path, "w") as f:
+                    json.dump(c, f)
+                peak, wall, out = peak_of([args.cli, "solve", path, "--quiet", "--vtu", f"{tmp}/s.vtu"])
+                dofs = json.loads(out)["dofs_total"]
+                rows.append((name, level, method, dofs, peak, wall))
+                print(f"{name:7s} r={level} {method:6s} unknowns {dofs:9d} peak {peak / 2**20:8.1f} MiB"
+                      f"  {wall:6.1f} s", file=sys.stderr, flush=True)
+    # Fit: one common base, one slope per method, least squares on relative error.
+    fit_rows = [r for r in rows if r[0] == "square"]
+    n = 1 + len(METHODS)
+    design = []
+    for _, _, method, dofs, peak, _ in fit_rows:
+        row = [0.0] * n
+        row[0] = 1.0 / peak
+        row[1 + METHODS.index(method)] = dofs / peak
+        design.append(row)
+    coef = least_squares(design, [1.0] * len(design))
+    base, slopes = coef[0], dict(zip(METHODS, coef[1:]))
+    print(f"base {base / 2**20:.1f} MiB; bytes per unknown: " +
+          ", ".join(f"{m} {slopes[m]:.0f}" for m in METHODS))
+    print("\n| case | level | method | unknowns | peak (MiB) | estimate (MiB) | error |")
+    print("|---|---|---|---|---|---|---|")
+    for name, level, method, dofs, peak, _ in rows:
+        est = base + slopes[method] * dofs
+        print(f"| {name} | {level} | {method} | {dofs} | {peak / 2**20:.0f} | {est / 2**20:.0f} | "
+              f"{100 * (est - peak) / peak:+.0f} % |")
+
+
+if __name__ == "__main__":
+    main()

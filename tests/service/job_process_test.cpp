@@ -1,0 +1,79 @@
+// The pieces of the solve process's plumbing that need no process: the stream protocol read
+// in pieces of every size, and --max-job-memory sizes.
+#include <gtest/gtest.h>
+
+#include "job_process_protocol.hpp"
+#include "memory_budget.hpp"
+
+namespace fosls::service {
+namespace {
+
+TEST(JobProcessProtocol, ReadsProgressAndResultInPiecesOfAnySize) {
+  JobRunOutcome done;
+  done.kind = JobRunOutcome::Kind::kSucceeded;
+  done.result_json = R"({"converged": true, "text": "P 1 2 3\nE\n"})";
+  done.vtu = std::string(100000, 'v') + "\nE\n";
+  const std::string stream = progress_message({1, 0.5, -2.25}) +
+                             progress_message({2, 1e-300, 1.0 / 3}) + outcome_message(done);
+  for (std::size_t piece : {std::size_t{1}, std::size_t{7}, std::size_t{4096}, stream.size()}) {
+    std::vector<JobProgress> seen;
+    JobProcessReader reader([&](const JobProgress& p) { seen.push_back(p); });
+    for (std::size_t i = 0; i < stream.size(); i += piece)
+      reader.feed(std::string_view(stream).substr(i, piece));
+    ASSERT_TRUE(reader.outcome()) << "piece " << piece << ": " << reader.malformed();
+    EXPECT_EQ(reader.outcome()->kind, JobRunOutcome::Kind::kSucceeded);
+    EXPECT_EQ(reader.outcome()->result_json, done.result_json);
+    EXPECT_EQ(reader.outcome()->vtu, done.vtu);
+    ASSERT_EQ(seen.size(), 2u);
+    EXPECT_EQ(seen[1].iteration, 2);
+    EXPECT_EQ(seen[1].kkt_residual, 1e-300);
+    EXPECT_EQ(seen[1].energy, 1.0 / 3);  // round trip to the last bit
+  }
+}
+
+TEST(JobProcessProtocol, FailuresCancelAndGarbage) {
+  JobRunOutcome failed;
+  failed.kind = JobRunOutcome::Kind::kFailed;
+  failed.error = "invalid case: /weights: too large";
+  JobProcessReader a(nullptr);
+  a.feed(outcome_message(failed));
+  ASSERT_TRUE(a.outcome());
+  EXPECT_EQ(a.outcome()->error, failed.error);
+
+  JobRunOutcome cancelled;
+  cancelled.kind = JobRunOutcome::Kind::kCancelled;
+  JobProcessReader b(nullptr);
+  b.feed(outcome_message(cancelled));
+  ASSERT_TRUE(b.outcome());
+  EXPECT_EQ(b.outcome()->kind, JobRunOutcome::Kind::kCancelled);
+
+  for (const char* garbage : {"hello\n", "S abc\n", "P 1 x y\n", "\n"}) {
+    JobProcessReader c(nullptr);
+    c.feed(garbage);
+    EXPECT_FALSE(c.outcome()) << garbage;
+    EXPECT_FALSE(c.malformed().empty()) << garbage;
+  }
+  JobProcessReader truncated(nullptr);
+  truncated.feed("S 100\n{\"a\":");
+  EXPECT_FALSE(truncated.outcome());
+  EXPECT_TRUE(truncated.malformed().empty());  // waiting for the rest
+}
+
+TEST(MemoryBudget, ParsesSizesAsOperatorsWriteThem) {
+  EXPECT_EQ(parse_byte_size("512M"), std::size_t{512} << 20);
+  EXPECT_EQ(parse_byte_size("2G"), std::size_t{2} << 30);
+  EXPECT_EQ(parse_byte_size("2GiB"), std::size_t{2} << 30);
+  EXPECT_EQ(parse_byte_size("1.5G"), std::size_t{3} << 29);
+  EXPECT_EQ(parse_byte_size("300000K"), std::size_t{300000} << 10);
+  EXPECT_EQ(parse_byte_size("1048576"), std::size_t{1} << 20);
+  EXPECT_EQ(parse_byte_size("64mb"), std::size_t{64} << 20);
+  for (const char* bad : {"", "G", "-1G", "0", "abc", "1X", "1e400", "nan", "2 G B"})
+    EXPECT_FALSE(parse_byte_size(bad)) << bad;
+  EXPECT_EQ(format_bytes(std::size_t{100} << 20), "100 MiB");
+  EXPECT_EQ(format_bytes(std::size_t{5} << 29), "2.5 GiB");
+  EXPECT_GT(default_job_memory(2), std::size_t{0});
+  EXPECT_LT(default_job_memory(2), physical_memory());
+}
+
+}  // namespace
+}  // namespace fosls::service
