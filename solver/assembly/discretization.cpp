@@ -1,6 +1,7 @@
 #include "assembly/discretization.hpp"
 
 #include <algorithm>
+#include <cmath>
 
 #include "fem/transfer.hpp"
 
@@ -66,20 +67,63 @@ std::vector<int> contact_strip(const FoslsSpace& space, int layers) {
   return strip;
 }
 
+namespace {
+
+/// The fine RT0 field that moves one unit of normal flux from boundary edge `from` to boundary
+/// edge `to` (the two halves of one coarse contact edge) with zero divergence in every fine
+/// triangle: the vector flux S·n_from leaves `from`'s triangle through its edge into the
+/// interior of the coarse triangle, crosses the fine triangles between the halves and comes
+/// out through `to`. Returned as free DOFs of the fine space with their coefficients; the
+/// first entry is `to`'s S_n, n_from·n_to (1 on a straight edge; the tangential part, which
+/// S_t = 0 does not allow, is dropped on curved edges).
+std::vector<std::pair<int, double>> flux_move(const FoslsSpace& space, const RefinementMaps& maps,
+                                              int from, int to) {
+  const Mesh& mesh = space.mesh();
+  const Point n = mesh.edge_normal(from);
+  const auto path = flux_path(mesh, maps, from, to);
+  if (path.empty()) return {};
+  std::vector<std::pair<int, double>> moves;
+  moves.emplace_back(space.free_index(space.sigma_dof(to, 0)), n.dot(mesh.edge_normal(to)));
+  for (const auto& [f, sign] : path)
+    for (int i = 0; i < 2; ++i)
+      if (const int dof = space.free_index(space.sigma_dof(f, i)); dof >= 0 && n[i] != 0.0)
+        moves.emplace_back(dof, sign * n[i]);
+  return moves;
+}
+
+}  // namespace
+
+int Discretization::coarsest_solver_level(double max_turn) const {
+  for (int j = 0; j + 1 < num_levels(); ++j) {
+    const FoslsSpace& space = *spaces_[j];
+    const Mesh& mesh = space.mesh();
+    double turn = 0.0;
+    for (int e = 0; e < mesh.num_edges(); ++e) {
+      const int c = mesh.edge_curve(e);
+      if (c < 0 || !space.is_contact_edge(e)) continue;
+      const double ratio = 0.5 * mesh.edge_length(e) / mesh.curves()[c].radius;
+      turn = std::max(turn, 2.0 * std::asin(std::min(1.0, ratio)));
+    }
+    if (turn <= max_turn) return j;
+  }
+  return num_levels() - 1;
+}
+
 LevelHierarchy Discretization::build_level_hierarchy() const {
   LevelHierarchy h;
-  h.levels.resize(num_levels());
-  for (int j = 0; j < num_levels(); ++j) {
+  const int coarsest = coarsest_solver_level();
+  h.levels.resize(num_levels() - coarsest);
+  for (int j = coarsest; j < num_levels(); ++j) {
     const FoslsSpace& fine = *spaces_[j];
-    Level& level = h.levels[j];
+    Level& level = h.levels[j - coarsest];
     level.num_dofs = fine.num_free();
     level.patches = vertex_patches(fine);
     level.contact_strip = contact_strip(fine);
-    if (j == 0) continue;
+    if (j == coarsest) continue;
     const FoslsSpace& coarse = *spaces_[j - 1];
     const RefinementMaps& maps = meshes_.maps[j];
-    level.prolongation =
-        free_prolongation(coarse, fine, cartesian_prolongation(coarse.mesh(), fine.mesh(), maps));
+    level.prolongation = free_prolongation(
+        coarse, fine, maps, cartesian_prolongation(coarse.mesh(), fine.mesh(), maps));
     // Contact links: every coarse contact edge with its fine children (its two halves and
     // their midpoint, or the edge itself where it was kept).
     const Mesh& cm = coarse.mesh();
@@ -114,6 +158,9 @@ LevelHierarchy Discretization::build_level_hierarchy() const {
         link.fine_sn[k] = fine.free_index(fine.sigma_dof(children[e][k], 0));
         link.sn_weight[k] = level.prolongation.coeff(link.fine_sn[k], link.coarse_sn);
       }
+      if (link.fine_sn[0] >= 0 && link.fine_sn[1] >= 0)
+        for (int k = 0; k < 2; ++k)
+          link.flux_moves[k] = flux_move(fine, maps, children[e][k], children[e][1 - k]);
       level.links.push_back(link);
     }
   }

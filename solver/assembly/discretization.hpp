@@ -23,8 +23,18 @@ class Discretization {
   const FoslsAssembler& assembler() const { return *assembler_; }
   const AssembledProblem& problem() const { return problem_; }
   const ProblemData& data() const { return data_; }
-  /// Builds the transfers, patches and contact links of all levels (not needed by pdas).
+  /// Builds the transfers, patches and contact links of the levels from
+  /// coarsest_solver_level() up (not needed by pdas).
   LevelHierarchy build_level_hierarchy() const;
+
+  /// The coarsest mesh level that the multilevel solvers use: the first whose contact edges on
+  /// curves turn the boundary normal by at most `max_turn` radians. Where a coarse edge
+  /// spans a large part of an arc, coarse and fine contact boundaries differ too much for the
+  /// coarse functions to represent the tractions there (measured on a punch with rounded
+  /// corners of radius 2 × the coarse size: 77 iterations with its coarsest level, whose
+  /// edges turn by 0.5 rad, 23 without it).
+  int coarsest_solver_level(double max_turn = kMaxCoarseTurn) const;
+  static constexpr double kMaxCoarseTurn = 0.3;
 
  private:
   MeshHierarchy meshes_;

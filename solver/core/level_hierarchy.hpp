@@ -3,6 +3,7 @@
 // contact DOFs of neighbouring levels are related. Free DOF numbering, rotated coordinates.
 
 #include <array>
+#include <utility>
 #include <vector>
 
 #include "core/box_qp.hpp"
@@ -18,6 +19,12 @@ struct ContactLink {
   int coarse_sn = -1;                            ///< coarse S_n of E
   std::array<int, 2> fine_sn = {-1, -1};         ///< fine S_n of the two halves
   std::array<double, 2> sn_weight = {0.5, 0.5};  ///< P entry fine S_n ← coarse S_n
+  /// flux_moves[k]: a fine field that takes one unit of normal flux off half k and puts it on
+  /// the other half, divergence-free inside E's coarse triangle (it crosses the fine triangles
+  /// between the two halves): first the other half's S_n, then the interior σ DOFs on the way.
+  /// When only half k is truncated, the coarse S_n function moves half k's flux this way
+  /// (MultilevelCycle::truncate_level), so that it keeps a bounded divergence.
+  std::array<std::vector<std::pair<int, double>>, 2> flux_moves;
 };
 
 struct Level {

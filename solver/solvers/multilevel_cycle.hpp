@@ -63,8 +63,11 @@ GalerkinChain galerkin_chain(const SparseMatrix& A, const LevelHierarchy& hierar
 /// j (kNoBound where a DOF is unbounded or truncated) to upper bounds of level j−1 that keep
 /// every prolongated coarse correction below d (exactly where contact normals agree between
 /// the levels). `coarse_hi` must be initialised (e.g. to kNoBound); it is only lowered.
+/// `sn_weights`, when given, replaces the links' prolongation weights of the fine S_n (one pair
+/// per link): the truncated prolongation moves flux between the halves of a coarse edge.
 void project_defect(const Level& fine_level, CoarseProjection projection, const Vector& defect,
-                    Vector& coarse_hi);
+                    Vector& coarse_hi,
+                    const std::vector<std::array<double, 2>>* sn_weights = nullptr);
 
 class MultilevelCycle {
  public:
@@ -93,6 +96,8 @@ class MultilevelCycle {
  private:
   struct LevelState;
   void set_truncation(const std::vector<char>& truncated);
+  /// P̃_j from level j's truncated set and matrix; sets level j−1's truncated set.
+  void truncate_level(int j);
   void rebuild_coarse_levels();
   void recurse(int j, Vector& c, Vector& r, const Vector& lo, const Vector& hi, bool constrained);
   void smooth_level(int j, Vector& c, Vector& r, const Vector& lo, const Vector& hi, bool forward);
@@ -105,12 +110,17 @@ class MultilevelCycle {
   const LevelHierarchy& hierarchy_;
   MultilevelOptions options_;
   std::vector<std::unique_ptr<LevelState>> levels_;
-  std::vector<char> truncated_;
+  std::vector<char> truncated_;  ///< the fine truncated set the levels below were built for
   bool built_ = false;
-  SparseMatrix truncated_prolongation_;
+  /// Per level j ≥ 1 (index j): the truncated set of level j (the fine truncated set on the
+  /// finest level; S_n DOFs whose fine descendants are all truncated below it) and the
+  /// truncated prolongation P̃_j.
+  std::vector<std::vector<char>> level_truncated_;
+  std::vector<SparseMatrix> truncated_prolongations_;
   std::unique_ptr<SparseBoxQpSolver> coarse_solver_;
   std::shared_ptr<const GalerkinChain> chain_;
-  RowMajorMatrix top_prolongation_rows_;  ///< P_J row-major (truncation corrections)
+  /// Per level: the weights of the fine S_n of each link in the truncated prolongation.
+  std::vector<std::vector<std::array<double, 2>>> sn_weights_;
   std::function<void(const Vector&, const Vector&)> sweep_hook_;
   CycleStatistics stats_;
 };
