@@ -74,8 +74,8 @@ constexpr std::array<double, 3> kGaussW = {5.0 / 18.0, 8.0 / 18.0, 5.0 / 18.0};
 std::vector<Point> obstacle_vertex_normals(const Mesh& mesh, const ProblemData& data) {
   bool any = false;
   for (const auto& g : data.groups)
-    any |=
-        g.role == GroupRole::kContact && g.contact.direction == ContactDirection::kObstacleNormal;
+    any |= g.role == GroupRole::kContact &&
+           g.contact.direction == ConstraintDirection::kObstacleNormal;
   if (!any) return {};
   std::vector<Point> averaged(mesh.num_vertices(), Point::Zero());
   std::vector<int> group(mesh.num_vertices(), -1);
@@ -128,10 +128,10 @@ FoslsAssembler::FoslsAssembler(const FoslsSpace& space, const ProblemData& data)
     for (int v : mesh.edge(e)) {
       Point n = space.is_contact_vertex(v) ? space.vertex_normal(v) : mesh.edge_normal(e);
       ContactData body = data.groups[g].contact;
-      body.direction = ContactDirection::kBodyNormal;  // n already is the constraint direction
+      body.direction = ConstraintDirection::kBodyNormal;  // n already is the constraint direction
       double gap = locate_obstacle(body, mesh.vertex(v), n).gap;
-      if (data.groups[g].contact.direction == ContactDirection::kObstacleNormal &&
-          body.obstacle.kind != Obstacle::Kind::kGap)
+      if (data.groups[g].contact.direction == ConstraintDirection::kObstacleNormal &&
+          body.obstacle.kind != RigidObstacle::Kind::kGap)
         gap = locate_obstacle(data.groups[g].contact, mesh.vertex(v), n).gap;
       if (!std::isfinite(gap) || gap > far) gap = far;
       vertex_gap_[v] = std::min(vertex_gap_[v], gap);
@@ -151,7 +151,7 @@ std::array<int, 12> FoslsAssembler::local_dofs(int t) const {
 }
 
 void FoslsAssembler::element_kernel(int t, Local& out) const {
-  const Weights& w = data_.weights;
+  const FunctionalWeights& w = data_.weights;
   ElementGeometry g(space_.mesh(), t);
   const double wq = g.area / 3.0;  // edge-midpoint rule, exact for degree 2
   const auto div = divergence_operator(g);
@@ -350,7 +350,7 @@ double FoslsAssembler::edge_mean_penetration(const Vector& x_full, int e) const 
 
 FunctionalParts FoslsAssembler::functional(const Vector& x_full) const {
   const Mesh& mesh = space_.mesh();
-  const Weights& w = data_.weights;
+  const FunctionalWeights& w = data_.weights;
   const Vector x_cart = space_.rotation() * x_full;
   FunctionalParts parts;
   parts.element.assign(mesh.num_triangles(), 0.0);

@@ -7,10 +7,10 @@ namespace fosls {
 
 ContactPoint locate_obstacle(const ContactData& c, const Point& p, const Point& n) {
   constexpr double kInf = std::numeric_limits<double>::infinity();
-  const Obstacle& o = c.obstacle;
-  const bool along_body = c.direction == ContactDirection::kBodyNormal;
+  const RigidObstacle& o = c.obstacle;
+  const bool along_body = c.direction == ConstraintDirection::kBodyNormal;
   switch (o.kind) {
-    case Obstacle::Kind::kPlane: {
+    case RigidObstacle::Kind::kPlane: {
       const Point nu = o.normal.normalized();  // from the obstacle into the body
       const double height = (p - o.point).dot(nu);
       if (!along_body) return {-nu, height};
@@ -18,7 +18,7 @@ ContactPoint locate_obstacle(const ContactData& c, const Point& p, const Point& 
       if (approach <= 1e-12) return {n, kInf};
       return {n, height / approach};
     }
-    case Obstacle::Kind::kCircle: {
+    case RigidObstacle::Kind::kCircle: {
       const Point rel = p - o.center;
       const double dist = rel.norm();
       if (!along_body || dist < o.radius) {
@@ -33,7 +33,7 @@ ContactPoint locate_obstacle(const ContactData& c, const Point& p, const Point& 
       const double s = -b - std::sqrt(disc);
       return {n, s >= 0 ? s : kInf};
     }
-    case Obstacle::Kind::kGap:
+    case RigidObstacle::Kind::kGap:
       return {n, c.gap(p.x(), p.y())};
   }
   return {n, kInf};

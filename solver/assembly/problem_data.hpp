@@ -1,22 +1,54 @@
 #pragma once
 // The continuous problem handed to the assembler: material, weights, data as functions.
+// Plain structs of this layer; the case layer converts a validated case into them.
 
 #include <array>
 #include <functional>
+#include <limits>
 #include <vector>
 
-#include "case/case_spec.hpp"
 #include "fem/fosls_space.hpp"
 
 namespace fosls {
 
 using ScalarFunction = std::function<double(double x, double y)>;
 
-/// Contact data of one group: the rigid obstacle and the constraint direction (docs/method.md §1).
+/// Lamé parameters of an isotropic material (plane strain).
+struct ElasticMaterial {
+  double mu = 1.0;
+  double lambda = 1.0;  ///< +infinity for an incompressible material
+  bool incompressible() const { return lambda == std::numeric_limits<double>::infinity(); }
+};
+
+/// Weights of the terms of the FOSLS functional (docs/method.md §2): c1 ‖div σ + f‖²,
+/// c2 ‖Aσ − ε(u)‖², c3 ⟨u·n − g, σ_nn⟩, c4 ‖as σ‖². The defaults are the method's (c3 small
+/// enough to keep the functional convex, see README "Decisions").
+struct FunctionalWeights {
+  double c1 = 1.0;
+  double c2 = 1.0;
+  double c3 = 0.1;
+  double c4 = 0.0;
+};
+
+/// A rigid obstacle: a plane, the outside of a circle, or a gap given as a function.
+struct RigidObstacle {
+  enum class Kind { kPlane, kCircle, kGap };
+  Kind kind = Kind::kPlane;
+  Point point = Point::Zero();   ///< plane: a point on it
+  Point normal = Point(0, 1);    ///< plane: unit normal from the obstacle into the body
+  Point center = Point::Zero();  ///< circle
+  double radius = 0.0;           ///< circle (the body lies outside the circle)
+};
+
+/// Along which direction the constraint u·d ≤ g is imposed (docs/method.md §1).
+enum class ConstraintDirection { kBodyNormal, kObstacleNormal };
+
+/// Contact data of one group: the rigid obstacle and the constraint direction (docs/method.md
+/// §1).
 struct ContactData {
-  Obstacle obstacle;
-  ScalarFunction gap;  ///< for Obstacle::Kind::kGap
-  ContactDirection direction = ContactDirection::kBodyNormal;
+  RigidObstacle obstacle;
+  ScalarFunction gap;  ///< g(x, y) along the body normal, for RigidObstacle::Kind::kGap
+  ConstraintDirection direction = ConstraintDirection::kBodyNormal;
 };
 
 /// Boundary condition of one mesh group.
@@ -27,8 +59,8 @@ struct GroupData {
 };
 
 struct ProblemData {
-  Material material;
-  Weights weights;
+  ElasticMaterial material;
+  FunctionalWeights weights;
   std::array<ScalarFunction, 2> body_force;
   std::vector<GroupData> groups;  ///< indexed like Mesh::group_names()
 

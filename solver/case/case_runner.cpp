@@ -11,6 +11,7 @@
 #include "case/mesh_factory.hpp"
 #include "case/result_json.hpp"
 #include "case/solver_methods.hpp"
+#include "core/indefinite_system.hpp"
 #include "post/contact_output.hpp"
 #include "post/vtu_writer.hpp"
 #include "solvers/solve_loop.hpp"
@@ -33,10 +34,21 @@ std::vector<CaseError> check_against_mesh(const CaseSpec& spec, const Mesh& mesh
                               true, limits);
 }
 
+RigidObstacle rigid_obstacle(const Obstacle& o) {
+  RigidObstacle r;
+  r.kind = o.kind == Obstacle::Kind::kPlane    ? RigidObstacle::Kind::kPlane
+           : o.kind == Obstacle::Kind::kCircle ? RigidObstacle::Kind::kCircle
+                                               : RigidObstacle::Kind::kGap;
+  r.point = o.point, r.normal = o.normal, r.center = o.center, r.radius = o.radius;
+  return r;
+}
+
+/// The case in the assembly layer's terms.
 ProblemData problem_data(const CaseSpec& spec, const Mesh& mesh) {
   ProblemData d;
-  d.material = spec.material;
-  d.weights = spec.weights;
+  d.material = {.mu = spec.material.mu, .lambda = spec.material.lambda};
+  const Weights& w = spec.weights;
+  d.weights = {.c1 = w.c1, .c2 = w.c2, .c3 = w.c3, .c4 = w.c4};
   for (int i = 0; i < 2; ++i) d.body_force[i] = compile_scalar(spec.body_force[i]);
   d.groups.resize(mesh.group_names().size());  // unnamed groups: traction free
   for (const auto& [name, bc] : spec.boundary) {
@@ -50,8 +62,10 @@ ProblemData problem_data(const CaseSpec& spec, const Mesh& mesh) {
         break;
       case BoundaryCondition::Type::kContact:
         g.role = GroupRole::kContact;
-        g.contact.obstacle = bc.obstacle;
-        g.contact.direction = bc.direction;
+        g.contact.obstacle = rigid_obstacle(bc.obstacle);
+        g.contact.direction = bc.direction == ContactDirection::kBodyNormal
+                                  ? ConstraintDirection::kBodyNormal
+                                  : ConstraintDirection::kObstacleNormal;
         if (bc.obstacle.kind == Obstacle::Kind::kGap)
           g.contact.gap = compile_scalar(bc.obstacle.gap);
         break;
@@ -123,11 +137,9 @@ RunOutput run_case(const CaseSpec& spec, const RunControl& control, const CaseLi
   SolverReport report;
   try {
     report = solve_box_qp(problem.qp, hierarchy, options, observer, x);
-  } catch (const std::runtime_error& e) {
+  } catch (const IndefiniteSystemError&) {
     // Positive definiteness failing inside a solver is the user's weights, not a crash.
-    if (std::string(e.what()).find("positive definite") != std::string::npos)
-      throw indefinite(spec.weights);
-    throw;
+    throw indefinite(spec.weights);
   }
   const auto t_solve = Clock::now();
 

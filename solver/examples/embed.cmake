@@ -1,7 +1,9 @@
 # Embeds the shipped example cases (solver/examples/*.json) in the fosls-contact program, so
 # that `fosls-contact example NAME` works wherever the program is installed.
 #
-# Include it from solver/CMakeLists.txt after add_executable(fosls-contact ...):
+# Include it from solver/CMakeLists.txt with FOSLS_EXAMPLES_TARGET set to the target that
+# gets the generated source (the CLI library):
+#   set(FOSLS_EXAMPLES_TARGET fosls_cli)
 #   include(${CMAKE_CURRENT_SOURCE_DIR}/examples/embed.cmake)
 #
 # The C++ source is generated at configure time; CMake re-runs by itself when an example is
@@ -39,4 +41,4 @@ set(_fosls_generated ${CMAKE_BINARY_DIR}/generated/shipped_examples.cpp)
 file(WRITE ${_fosls_generated}.tmp "${_fosls_source}")
 # COPYONLY rewrites the file only when it changed, so an unrelated re-configure rebuilds nothing.
 configure_file(${_fosls_generated}.tmp ${_fosls_generated} COPYONLY)
-target_sources(fosls-contact PRIVATE ${_fosls_generated})
+target_sources(${FOSLS_EXAMPLES_TARGET} PRIVATE ${_fosls_generated})

@@ -12,13 +12,13 @@
 #include <unordered_map>
 #include <vector>
 
-#include "case/case_error.hpp"
+#include "mesh/mesh_error.hpp"
 
 namespace fosls {
 
 namespace {
 
-const std::string kPointer = "/mesh/msh";
+const std::string kField = "/msh";  // relative to the mesh section
 
 std::string quote(std::string_view s) {
   constexpr std::size_t kMax = 40;
@@ -76,7 +76,7 @@ class MshParser {
 
   Mesh parse() {
     if (text_.find_first_not_of(" \t\r\n\v\f") == std::string_view::npos)
-      throw CaseException(kPointer, "the msh text is empty; expected a gmsh MSH 4.1 ASCII mesh");
+      throw MeshError(kField, "the msh text is empty; expected a gmsh MSH 4.1 ASCII mesh");
     read_mesh_format();
     std::string_view line;
     while (next_line(line)) {
@@ -146,14 +146,14 @@ class MshParser {
     const bool last = section_ != "$MeshFormat" &&
                       text_.find_first_not_of(" \t\r\n\v\f", std::min(pos_, text_.size())) ==
                           std::string_view::npos;
-    throw CaseException(kPointer, "line " + std::to_string(line_no_) + ": " + what +
-                                      (last ? " (the text ends here: it is truncated)." : "."));
+    throw MeshError(kField, "line " + std::to_string(line_no_) + ": " + what +
+                                (last ? " (the text ends here: it is truncated)." : "."));
   }
   [[noreturn]] void fail_at(int line_no, const std::string& what) const {
-    throw CaseException(kPointer, "line " + std::to_string(line_no) + ": " + what + ".");
+    throw MeshError(kField, "line " + std::to_string(line_no) + ": " + what + ".");
   }
   [[noreturn]] void fail_at_end(const std::string& what) const {
-    throw CaseException(kPointer, what + ".");
+    throw MeshError(kField, what + ".");
   }
 
   void once(bool& seen, std::string_view name) {

@@ -14,7 +14,7 @@ namespace fosls {
 /// by tag). Points and other element types are ignored; quadrangles and second-order elements
 /// are rejected. Every boundary edge must lie on a physical curve. Any problem (corrupt,
 /// truncated or binary text, wrong version, nodes off the plane z = 0, an invalid
-/// triangulation) throws CaseException with pointer /mesh/msh and a sentence naming the line.
+/// triangulation) throws MeshError with field /msh and a sentence naming the line.
 /// Curved boundaries are not recognised: edges from msh text are straight (curve -1).
 Mesh mesh_from_msh(std::string_view text);
 

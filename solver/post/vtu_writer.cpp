@@ -75,7 +75,7 @@ std::string write_vtu(const FoslsAssembler& assembler, const AssembledProblem& p
   const FoslsSpace& space = assembler.space();
   const Mesh& mesh = space.mesh();
   const FeField field(space, x_full, problem.stress_scale);
-  const Material& mat = assembler.data().material;
+  const ElasticMaterial& mat = assembler.data().material;
   // Plane strain: σ_zz = λ/(2(λ+μ)) tr σ, which is tr σ / 2 for λ = ∞.
   const double kappa = mat.incompressible() ? 0.5 : mat.lambda / (2.0 * (mat.lambda + mat.mu));
   const int nv = mesh.num_vertices(), nt = mesh.num_triangles();

@@ -6,6 +6,8 @@
 #include <stdexcept>
 #include <vector>
 
+#include "core/indefinite_system.hpp"
+
 namespace fosls {
 
 namespace {
@@ -117,7 +119,7 @@ SparseBoxQpSolver::SparseBoxQpSolver(const SparseMatrix& A)
   bool ok = full_->ldlt.info() == Eigen::Success;
   if (ok)
     for (int i = 0; i < full_->ldlt.vectorD().size(); ++i) ok &= full_->ldlt.vectorD()[i] > 0;
-  if (!ok) throw std::runtime_error("the coarse-level matrix is not positive definite");
+  if (!ok) throw IndefiniteSystemError("the coarse-level matrix is not positive definite");
 }
 
 SparseBoxQpSolver::~SparseBoxQpSolver() = default;

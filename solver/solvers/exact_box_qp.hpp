@@ -24,7 +24,7 @@ bool solve_dense_box_qp(const Eigen::MatrixXd& A, const Vector& r, const Vector&
 /// per cycle or smoother.
 class SparseBoxQpSolver {
  public:
-  /// Throws std::runtime_error when A is not positive definite.
+  /// Throws IndefiniteSystemError when A is not positive definite.
   explicit SparseBoxQpSolver(const SparseMatrix& A);
   ~SparseBoxQpSolver();
   /// δ = argmin, feasible; returns false if the iteration cap was hit (δ is still a feasible

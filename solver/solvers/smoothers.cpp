@@ -7,6 +7,7 @@
 #include <stdexcept>
 #include <string>
 
+#include "core/indefinite_system.hpp"
 #include "solvers/exact_box_qp.hpp"
 
 namespace fosls {
@@ -56,8 +57,8 @@ PatchSmoother::PatchSmoother(const SparseMatrix& A, const std::vector<std::vecto
     }
   }
   if (failed >= 0)
-    throw std::runtime_error("the local matrix of vertex patch " + std::to_string(failed) +
-                             " is not positive definite");
+    throw IndefiniteSystemError("the local matrix of vertex patch " + std::to_string(failed) +
+                                " is not positive definite");
 }
 
 void PatchSmoother::solve_patch(int p, const Vector& rl, Vector& x, const Vector& lo,
@@ -124,6 +125,8 @@ StripSmoother::StripSmoother(const SparseMatrix& A, std::vector<int> strip)
   sub.setFromTriplets(t.begin(), t.end());
   solver_ = std::make_unique<SparseBoxQpSolver>(sub);
 }
+
+StripSmoother::~StripSmoother() = default;
 
 void StripSmoother::solve(Vector& x, Vector& r, const Vector& lo, const Vector& hi) {
   const int m = static_cast<int>(strip_.size());

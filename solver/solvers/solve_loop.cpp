@@ -7,6 +7,8 @@
 #include <memory>
 #include <stdexcept>
 
+#include "core/indefinite_system.hpp"
+
 namespace fosls {
 
 bool chain_is_definite(const SparseMatrix& A, const GalerkinChain& chain, int max_dofs) {
@@ -165,7 +167,7 @@ class PdasStep : public Step {
       }
     llt_.factorize(m_);
     if (llt_.info() != Eigen::Success)
-      throw std::runtime_error("CHOLMOD: the matrix is not positive definite");
+      throw IndefiniteSystemError("CHOLMOD: the matrix is not positive definite");
     x = llt_.solve(rhs);
     for (int i = 0; i < n; ++i)
       if (active[i]) x[i] = qp_.upper[i];
@@ -257,7 +259,7 @@ SolverReport solve_box_qp(const BoxQp& qp, const LevelHierarchy& hierarchy,
   if (multilevel) {
     chain = std::make_shared<const GalerkinChain>(galerkin_chain(qp.A, hierarchy));
     if (!chain_is_definite(qp.A, *chain))
-      throw std::runtime_error("the FOSLS matrix is not positive definite");
+      throw IndefiniteSystemError("the FOSLS matrix is not positive definite");
   }
   const double chain_s = std::chrono::duration<double>(Clock::now() - t0).count();
   SolverReport report = solve_with_chain(qp, hierarchy, options, observer, x, chain);

@@ -67,7 +67,7 @@ bool chain_is_definite(const SparseMatrix& A, const GalerkinChain& chain, int ma
 /// The solve loop: minimises the bound-constrained QP from x (projected onto the bounds
 /// first) by steps of the chosen method. The hierarchy is needed by mmg
 /// and tnnmg only. Non-convergence is reported, not thrown; a matrix that is not positive
-/// definite throws std::runtime_error.
+/// definite throws IndefiniteSystemError.
 SolverReport solve_box_qp(const BoxQp& qp, const LevelHierarchy& hierarchy,
                           const SolverOptions& options, const SolverObserver& observer, Vector& x);
 

@@ -16,7 +16,7 @@ inline ProblemData signorini_square(double lambda) {
   d.material.lambda = lambda;
   d.groups.resize(4);  // bottom, right, top, left
   d.groups[0].role = GroupRole::kContact;
-  d.groups[0].contact.obstacle.kind = Obstacle::Kind::kGap;
+  d.groups[0].contact.obstacle.kind = RigidObstacle::Kind::kGap;
   d.groups[0].contact.gap = [](double x, double) { return 0.5 * (x - 0.5) * (x - 0.5); };
   d.groups[2].role = GroupRole::kDirichlet;
   d.groups[2].values = {[](double, double) { return 0.0; }, [](double, double) { return -0.05; }};
@@ -28,7 +28,7 @@ inline ProblemData signorini_square(double lambda) {
 /// bottom is in contact.
 inline ProblemData flat_square(double lambda) {
   ProblemData d = signorini_square(lambda);
-  d.groups[0].contact.obstacle.kind = Obstacle::Kind::kPlane;
+  d.groups[0].contact.obstacle.kind = RigidObstacle::Kind::kPlane;
   d.groups[0].contact.obstacle.point = Point(0, 0);
   d.groups[0].contact.obstacle.normal = Point(0, 1);
   return d;
@@ -44,7 +44,7 @@ inline ProblemData hertz(double lambda, double press = 0.02) {
   d.groups[0].values = {[](double, double) { return 0.0; },
                         [press](double, double) { return -press; }};
   d.groups[1].role = GroupRole::kContact;
-  d.groups[1].contact.obstacle.kind = Obstacle::Kind::kPlane;
+  d.groups[1].contact.obstacle.kind = RigidObstacle::Kind::kPlane;
   d.groups[1].contact.obstacle.point = Point(0, 0);
   d.groups[1].contact.obstacle.normal = Point(0, 1);
   d.groups[2].role = GroupRole::kNeumann;

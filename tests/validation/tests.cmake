@@ -6,7 +6,7 @@ set(VALIDATION_DIR ${CMAKE_CURRENT_LIST_DIR})
 
 # Element-wise functional against the true error of a manufactured solution.
 add_executable(validation_manufactured_errors ${VALIDATION_DIR}/manufactured_errors.cpp)
-target_link_libraries(validation_manufactured_errors PRIVATE fosls nlohmann_json::nlohmann_json)
+target_link_libraries(validation_manufactured_errors PRIVATE fosls_internals nlohmann_json::nlohmann_json)
 target_include_directories(validation_manufactured_errors PRIVATE ${PROJECT_SOURCE_DIR}/tests)
 
 find_package(Python3 COMPONENTS Interpreter)

@@ -4,7 +4,9 @@
 //   FOSLS_SERVE=build/bin/fosls-serve node --test tests/web/page.test.mjs
 //
 // Environment: FOSLS_SERVE (required), FOSLS_WEB_ROOT (default web/), FOSLS_SCREENSHOTS
-// (default docs/screenshots), CHROMIUM (default /usr/bin/chromium).
+// (default a new temporary folder), CHROMIUM (default /usr/bin/chromium).
+// FOSLS_REFRESH_SCREENSHOTS=1 writes the screenshots to docs/screenshots instead, to refresh
+// the docs; an ordinary run leaves the working tree clean.
 // Needs web/build.sh to have run (npm packages, web/dist).
 import { test, before, after } from 'node:test';
 import assert from 'node:assert/strict';
@@ -17,7 +19,11 @@ import { fileURLToPath } from 'node:url';
 
 const repo = resolve(dirname(fileURLToPath(import.meta.url)), '..', '..');
 const webRoot = resolve(process.env.FOSLS_WEB_ROOT ?? join(repo, 'web'));
-const screenshots = resolve(process.env.FOSLS_SCREENSHOTS ?? join(repo, 'docs', 'screenshots'));
+const screenshots = resolve(
+  process.env.FOSLS_REFRESH_SCREENSHOTS === '1'
+    ? join(repo, 'docs', 'screenshots')
+    : (process.env.FOSLS_SCREENSHOTS ?? mkdtempSync(join(tmpdir(), 'fosls-screenshots-'))),
+);
 const serveBinary = process.env.FOSLS_SERVE;
 const chromiumPath = process.env.CHROMIUM ?? '/usr/bin/chromium';
 const hertzText = readFileSync(join(repo, 'solver', 'examples', 'hertz.json'), 'utf8');

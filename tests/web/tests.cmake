@@ -3,7 +3,8 @@
 #  - web_modules: node's test runner on the page's pure modules (pointer locations, Hertz, VTU).
 #  - web_page:    end to end: a real fosls-serve on a free loopback port with a temporary
 #                 database, Debian's Chromium (/usr/bin/chromium) driven by playwright-core;
-#                 writes docs/screenshots/*.png.
+#                 writes its screenshots to build/screenshots (to refresh the ones in docs/:
+#                 FOSLS_REFRESH_SCREENSHOTS=1 ctest --test-dir build -R web_page).
 find_program(FOSLS_NODE node)
 if(NOT FOSLS_NODE)
   message(WARNING "node not found: the web tests will fail (apt-get install nodejs npm)")
@@ -26,4 +27,4 @@ set_tests_properties(web_page PROPERTIES
   FIXTURES_REQUIRED web_deps
   RESOURCE_LOCK web_node_modules
   TIMEOUT 180
-  ENVIRONMENT "FOSLS_SERVE=$<TARGET_FILE:fosls-serve>;FOSLS_WEB_ROOT=${PROJECT_SOURCE_DIR}/web;FOSLS_SCREENSHOTS=${PROJECT_SOURCE_DIR}/docs/screenshots")
+  ENVIRONMENT "FOSLS_SERVE=$<TARGET_FILE:fosls-serve>;FOSLS_WEB_ROOT=${PROJECT_SOURCE_DIR}/web;FOSLS_SCREENSHOTS=${CMAKE_BINARY_DIR}/screenshots")
