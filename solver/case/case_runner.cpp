@@ -4,6 +4,7 @@
 #include <cmath>
 #include <sstream>
 
+#include "assembly/contact_weight.hpp"
 #include "assembly/definiteness.hpp"
 #include "assembly/discretization.hpp"
 #include "case/case_admission.hpp"
@@ -76,11 +77,21 @@ ProblemData problem_data(const CaseSpec& spec, const Mesh& mesh) {
   return d;
 }
 
-CaseException indefinite(const Weights& w) {
+CaseException indefinite(const Weights& w, const MeshHierarchy& meshes, const ProblemData& data) {
   std::ostringstream m;
   m << "the weights c1 = " << w.c1 << ", c2 = " << w.c2 << ", c3 = " << w.c3 << ", c4 = " << w.c4
     << " make the FOSLS matrix indefinite (the contact term c3 is too large relative to c1 and "
-       "c2); lower c3 (the default is 0.1) or raise c1 and c2";
+       "c2)";
+  if (w.c3_auto) {
+    m << "; c3 was chosen as half the limit " << w.c3_limit
+      << " computed on a coarser level, and the finest level's limit is lower: set c3 below "
+         "that by hand";
+  } else {
+    const ContactWeightLimit limit = contact_weight_limit(meshes, data);
+    m << "; on this mesh c3 must stay below about " << limit.limit << " (computed on level "
+      << limit.level << ", " << limit.dofs
+      << " unknowns): remove c3 from the case (or give \"auto\") to have it chosen";
+  }
   return CaseException("/weights", m.str());
 }
 
@@ -119,10 +130,16 @@ RunOutput run_case(const CaseSpec& spec, const RunControl& control, const CaseLi
   ProblemData data = problem_data(spec, coarse);
   MeshHierarchy meshes = build_mesh_hierarchy(std::move(coarse), spec.mesh.refinements);
   const auto t_mesh = Clock::now();
+  CaseSpec used = spec;  // the case with the weights as used
+  if (has_contact(spec) && spec.weights.c3_auto) {
+    const ContactWeightLimit limit = contact_weight_limit(meshes, data);
+    used.weights.c3_limit = limit.limit;
+    used.weights.c3 = data.weights.c3 = automatic_contact_weight(limit);
+  }
   Discretization disc(std::move(meshes), std::move(data));
   const auto& problem = disc.problem();
   if (has_contact(spec) && !contact_layer_is_definite(disc.finest_space(), problem.qp))
-    throw indefinite(spec.weights);
+    throw indefinite(used.weights, disc.meshes(), disc.data());
   const SolverOptions& options = spec.solver;
   const MethodInfo& method = method_info(options.method);
   const LevelHierarchy hierarchy =
@@ -139,7 +156,7 @@ RunOutput run_case(const CaseSpec& spec, const RunControl& control, const CaseLi
     report = solve_box_qp(problem.qp, hierarchy, options, observer, x);
   } catch (const IndefiniteSystemError&) {
     // Positive definiteness failing inside a solver is the user's weights, not a crash.
-    throw indefinite(spec.weights);
+    throw indefinite(used.weights, disc.meshes(), disc.data());
   }
   const auto t_solve = Clock::now();
 
@@ -162,7 +179,7 @@ RunOutput run_case(const CaseSpec& spec, const RunControl& control, const CaseLi
   timing.assembly_s = seconds(t_mesh, t_assembly);
   timing.solve_s = seconds(t_assembly, t_solve);
   timing.total_s = seconds(t0, t_end);
-  out.result = result_json(spec, report, contact, parts, size, timing);
+  out.result = result_json(used, report, contact, parts, size, timing);
   return out;
 }
 
