@@ -27,9 +27,10 @@ struct ContactWeightLimit {
 /// Largest level with at most this many free unknowns that the limit is computed on.
 constexpr int kWeightLevelDofs = 20000;
 
-/// c3* on the finest level of `meshes` with at most kWeightLevelDofs free unknowns (the coarsest
-/// if none is that small). `data.weights.c3` is ignored.
-ContactWeightLimit contact_weight_limit(const MeshHierarchy& meshes, const ProblemData& data);
+/// c3* on the finest level of `meshes` with at most `max_dofs` free unknowns (the coarsest if
+/// none is that small). `data.weights.c3` is ignored.
+ContactWeightLimit contact_weight_limit(const MeshHierarchy& meshes, const ProblemData& data,
+                                        int max_dofs = kWeightLevelDofs);
 
 /// The rule applied to a limit: min(kDefaultContactWeight, limit / 2).
 double automatic_contact_weight(const ContactWeightLimit& limit);
