@@ -75,7 +75,7 @@ ObjectRulePtr obstacle_rule(const CaseReadOptions& options) {
 
 /// [0, null] is a roller; [null, null] would prescribe nothing.
 void check_displacement(const json& j, const std::string& pointer, RuleChecker& checker) {
-  if (!checker.usable(j, pointer, {"displacement"})) return;
+  if (!j.contains("displacement") || !checker.usable(j, pointer, {"displacement"})) return;
   if (j["displacement"][0].is_null() && j["displacement"][1].is_null())
     checker.error(child_pointer(pointer, "displacement"),
                   "both components are null, which prescribes nothing; a boundary free in both "

@@ -15,7 +15,9 @@ constexpr std::size_t kMaxSweepValues = 100;
 
 /// Continuation needs one mesh for every point, and the sweep cannot sweep itself.
 void check_sweep(const json& j, const std::string& pointer, RuleChecker& checker) {
-  if (!checker.usable(j, pointer, {"pointer", "values"})) return;
+  if (!j.contains("pointer") || !j.contains("values") ||
+      !checker.usable(j, pointer, {"pointer", "values"}))
+    return;
   const std::string target = j["pointer"];
   for (const char* fixed : {"/sweep", "/mesh", "/name"}) {
     const std::string prefix = fixed;
