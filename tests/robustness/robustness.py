@@ -50,7 +50,7 @@ def solve(binary, case, method, workdir):
     return result
 
 
-def check_case(binary, path, table_rows):
+def check_case(binary, path, table_rows, table):
     name = os.path.splitext(os.path.basename(path))[0]
     with open(path) as f:
         case = json.load(f)
@@ -58,6 +58,9 @@ def check_case(binary, path, table_rows):
     results = {}
     with tempfile.TemporaryDirectory() as workdir:
         for method in METHODS:
+            if (name, method) in UNCHECKED and not table:
+                results[method] = {"converged": False, "iterations": "–", "wall_s": 0}
+                continue
             results[method] = solve(binary, case, method, workdir)
     for method, r in results.items():
         if (name, method) in UNCHECKED:
@@ -102,7 +105,7 @@ def main():
     rows = []
     failed = False
     for path in args.cases:
-        name, failures = check_case(args.bin, path, rows)
+        name, failures = check_case(args.bin, path, rows, args.table)
         for f in failures:
             print(f"FAIL {name}: {f}")
         failed |= bool(failures)
