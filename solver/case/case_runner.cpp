@@ -81,7 +81,17 @@ ProblemData problem_data(const CaseSpec& spec, const Mesh& mesh) {
   return d;
 }
 
-CaseException indefinite(const Weights& w, const MeshHierarchy& meshes, const ProblemData& data) {
+bool has_roller(const CaseSpec& spec) {
+  for (const auto& [name, bc] : spec.boundary)
+    if (bc.type == BoundaryCondition::Type::kDirichlet && !(bc.prescribed[0] && bc.prescribed[1]))
+      return true;
+  return false;
+}
+
+/// `spec` carries the weights as used (c3 chosen when "auto").
+CaseException indefinite(const CaseSpec& spec, const MeshHierarchy& meshes,
+                         const ProblemData& data) {
+  const Weights& w = spec.weights;
   std::ostringstream m;
   m << "the weights c1 = " << w.c1 << ", c2 = " << w.c2 << ", c3 = " << w.c3 << ", c4 = " << w.c4
     << " make the FOSLS matrix indefinite (the contact term c3 is too large relative to c1 and "
@@ -96,6 +106,10 @@ CaseException indefinite(const Weights& w, const MeshHierarchy& meshes, const Pr
       << limit.level << ", " << limit.dofs
       << " unknowns): remove c3 from the case (or give \"auto\") to have it chosen";
   }
+  // A body held only by rollers may keep a rigid rotation: that looks the same to the check.
+  if (has_roller(spec))
+    m << ". With null displacement components, also check that the dirichlet groups leave no "
+         "rigid motion (a rotation needs two points held across it)";
   return CaseException("/weights", m.str());
 }
 
@@ -145,7 +159,7 @@ RunOutput run_point(const CaseSpec& spec, const RunControl& control, const CaseL
   Discretization disc(std::move(meshes), std::move(data));
   const auto& problem = disc.problem();
   if (has_contact(spec) && !contact_layer_is_definite(disc.finest_space(), problem.qp))
-    throw indefinite(used.weights, disc.meshes(), disc.data());
+    throw indefinite(used, disc.meshes(), disc.data());
   SolverOptions options = spec.solver;
   const MethodInfo& method = method_info(options.method);
   const LevelHierarchy hierarchy =
@@ -172,7 +186,7 @@ RunOutput run_point(const CaseSpec& spec, const RunControl& control, const CaseL
     report = solve_box_qp(problem.qp, hierarchy, options, observer, x);
   } catch (const IndefiniteSystemError&) {
     // Positive definiteness failing inside a solver is the user's weights, not a crash.
-    throw indefinite(used.weights, disc.meshes(), disc.data());
+    throw indefinite(used, disc.meshes(), disc.data());
   }
   const auto t_solve = Clock::now();
 
