@@ -221,6 +221,23 @@ test('submitting the hertz case shows pressure with the Hertz curve, residuals a
   await page.screenshot({ path: join(screenshots, 'job-view.png'), fullPage: true });
 });
 
+test('a solve stopped by max_iterations gets its own badge, not the success colour', async () => {
+  const stopped = JSON.parse(hertzText);
+  stopped.name = 'stopped_hertz';
+  stopped.mesh.refinements = 1;
+  stopped.solver = { method: 'pgs', tolerance: 1e-12, max_iterations: 2 };
+  await setEditorText(JSON.stringify(stopped, null, 2));
+  const row = await submitAndWaitForRow('stopped_hertz');
+  const badge = row.locator('.state-not-converged');
+  await badge.waitFor();
+  assert.equal(await badge.innerText(), 'not converged');
+  assert.match(await badge.getAttribute('title'), /max_iterations/);
+  const colour = (locator) => locator.evaluate((e) => `${getComputedStyle(e).color} on ${getComputedStyle(e).backgroundColor}`);
+  const succeeded = page.locator('#job-table .state-succeeded').first();
+  assert.notEqual(await colour(badge), await colour(succeeded));
+  await page.locator('#job-summary', { hasText: /^Did not converge/ }).waitFor();
+});
+
 test('an invalid case shows each error next to its field', async () => {
   const bad = hertzText.replace('"mu": 1', '"mu": -1').replace('"method": "mmg"', '"method": "bogus"');
   assert.notEqual(bad, hertzText);
