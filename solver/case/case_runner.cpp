@@ -1,5 +1,7 @@
 #include "case/case_runner.hpp"
 
+#include "case/sweep_runner.hpp"
+
 #include <chrono>
 #include <cmath>
 #include <sstream>
@@ -56,7 +58,9 @@ ProblemData problem_data(const CaseSpec& spec, const Mesh& mesh) {
     GroupData& g = d.groups[mesh.group_index(name)];
     switch (bc.type) {
       case BoundaryCondition::Type::kDirichlet:
-        g.role = GroupRole::kDirichlet;
+        g.role = !bc.prescribed[1]   ? GroupRole::kDirichletX
+                 : !bc.prescribed[0] ? GroupRole::kDirichletY
+                                     : GroupRole::kDirichlet;
         break;
       case BoundaryCondition::Type::kNeumann:
         g.role = GroupRole::kNeumann;
@@ -105,7 +109,9 @@ std::vector<CaseError> validate_case(const nlohmann::json& j, const CaseReadOpti
   }
 }
 
-RunOutput run_case(const CaseSpec& spec, const RunControl& control, const CaseLimits& limits) {
+namespace {
+
+RunOutput run_point(const CaseSpec& spec, const RunControl& control, const CaseLimits& limits) {
   const auto t0 = Clock::now();
   Mesh coarse;
   try {
@@ -127,7 +133,7 @@ RunOutput run_case(const CaseSpec& spec, const RunControl& control, const CaseLi
   const auto& problem = disc.problem();
   if (has_contact(spec) && !contact_layer_is_definite(disc.finest_space(), problem.qp))
     throw indefinite(spec.weights);
-  const SolverOptions& options = spec.solver;
+  SolverOptions options = spec.solver;
   const MethodInfo& method = method_info(options.method);
   const LevelHierarchy hierarchy =
       method.needs_hierarchy ? disc.build_level_hierarchy() : LevelHierarchy{};
@@ -138,7 +144,17 @@ RunOutput run_case(const CaseSpec& spec, const RunControl& control, const CaseLi
   if (control.on_iteration) observer.on_iteration = control.on_iteration;
   if (control.cancel)
     observer.cancelled = [&control] { return control.cancel->load(std::memory_order_relaxed); };
+  // The limit counts the whole run: a user sets it for the answer's latency, not the loop's.
+  if (spec.solver.time_limit_s > 0) {
+    const auto deadline = t0 + std::chrono::duration_cast<Clock::duration>(
+                                   std::chrono::duration<double>(spec.solver.time_limit_s));
+    observer.out_of_time = [deadline] { return Clock::now() >= deadline; };
+  }
   Vector x;
+  if (control.start && control.start->size() == problem.qp.size()) {
+    x = *control.start;
+    options.nested = false;  // the previous point's solution is the better start
+  }
   SolverReport report;
   try {
     report = solve_box_qp(problem.qp, hierarchy, options, observer, x);
@@ -169,7 +185,17 @@ RunOutput run_case(const CaseSpec& spec, const RunControl& control, const CaseLi
   timing.total_s = seconds(t0, t_end);
   memory.peak_mib = peak_rss_mib();
   out.result = result_json(spec, report, contact, parts, size, timing, memory);
+  out.solution = std::move(x);
   return out;
+}
+
+}  // namespace
+
+RunOutput run_case(const CaseSpec& spec, const RunControl& control, const CaseLimits& limits) {
+  if (spec.sweep_points.empty()) return run_point(spec, control, limits);
+  return run_sweep(spec, control, [&limits](const CaseSpec& point, const RunControl& c) {
+    return run_point(point, c, limits);
+  });
 }
 
 }  // namespace fosls

@@ -91,5 +91,31 @@ TEST(ServiceConvergence, TheSubmittedCaseCanBeReadBack) {
   testing::expect_problem(cli.Post(path(id, "case"), "{}", "application/json"), 405);
 }
 
+// A sweep runs in the job like any case: the result carries every point, and a point that
+// does not converge makes the job's converged false.
+TEST(ServiceConvergence, ASweepIsSolvedPointByPoint) {
+  Service svc(1);
+  auto cli = svc.client();
+  json swept = small_case(3);
+  swept["name"] = "swept";
+  swept["boundary"]["top"]["displacement"] = {0, -0.02};
+  swept["sweep"] = {{"pointer", "/boundary/top/displacement/1"}, {"values", {-0.02, -0.04}}};
+  const auto id = svc.submit(swept);
+  const json done = svc.wait_state(id, "succeeded");
+  EXPECT_EQ(done["converged"], true);
+  const json result = json::parse(cli.Get(path(id, "result"))->body);
+  ASSERT_EQ(result["sweep"]["points"].size(), 2u);
+  EXPECT_EQ(result["sweep"]["points"][1]["value"], -0.04);
+  EXPECT_GT(result["sweep"]["points"][1]["force"][1].get<double>(),
+            result["sweep"]["points"][0]["force"][1].get<double>());
+
+  // Refused up front, at the value that makes the case invalid.
+  swept["sweep"]["pointer"] = "/material/mu";
+  swept["sweep"]["values"] = {1, 0};
+  auto refused = svc.post(swept);
+  testing::expect_problem(refused, 422);
+  EXPECT_EQ(json::parse(refused->body)["errors"][0]["pointer"], "/sweep/values/1");
+}
+
 }  // namespace
 }  // namespace fosls::service

@@ -536,12 +536,26 @@ function drawCharts(view) {
       note.textContent = '';
     }
   }
+  drawSweep(view);
   const history = view.result.history ?? [];
   if (history.length) view.charts.push(plots.residualPlot(residualBox, history));
   else {
     residualBox.textContent = 'No iterations were recorded.';
     residualBox.dataset.points = '0';
   }
+}
+
+// A case with a sweep: the force of every point against the swept value (docs/web.md).
+function drawSweep(view) {
+  const sweep = view.result.sweep;
+  $('sweep-figure').hidden = !sweep;
+  const box = $('sweep-plot');
+  box.innerHTML = '';
+  if (!sweep) return;
+  view.charts.push(plots.sweepPlot(box, sweep));
+  const bad = sweep.points.filter((p) => !p.converged).length;
+  $('sweep-note').textContent = `${sweep.points.length} points of ${sweep.pointer}, each started from the previous solution` +
+    (bad ? `; ${bad} did not converge (red).` : '; all converged.');
 }
 
 function drawMeshView(view, { resetMagnification = false } = {}) {
