@@ -81,11 +81,23 @@ ProblemData problem_data(const CaseSpec& spec, const Mesh& mesh) {
   return d;
 }
 
-CaseException indefinite(const Weights& w) {
+bool has_roller(const CaseSpec& spec) {
+  for (const auto& [name, bc] : spec.boundary)
+    if (bc.type == BoundaryCondition::Type::kDirichlet && !(bc.prescribed[0] && bc.prescribed[1]))
+      return true;
+  return false;
+}
+
+CaseException indefinite(const CaseSpec& spec) {
+  const Weights& w = spec.weights;
   std::ostringstream m;
   m << "the weights c1 = " << w.c1 << ", c2 = " << w.c2 << ", c3 = " << w.c3 << ", c4 = " << w.c4
     << " make the FOSLS matrix indefinite (the contact term c3 is too large relative to c1 and "
        "c2); lower c3 (the default is 0.1) or raise c1 and c2";
+  // A body held only by rollers may keep a rigid rotation: that looks the same to the check.
+  if (has_roller(spec))
+    m << ". With null displacement components, also check that the dirichlet groups leave no "
+         "rigid motion (a rotation needs two points held across it)";
   return CaseException("/weights", m.str());
 }
 
@@ -132,7 +144,7 @@ RunOutput run_point(const CaseSpec& spec, const RunControl& control, const CaseL
   memory.assembly_mib = peak_rss_mib();
   const auto& problem = disc.problem();
   if (has_contact(spec) && !contact_layer_is_definite(disc.finest_space(), problem.qp))
-    throw indefinite(spec.weights);
+    throw indefinite(spec);
   SolverOptions options = spec.solver;
   const MethodInfo& method = method_info(options.method);
   const LevelHierarchy hierarchy =
@@ -160,7 +172,7 @@ RunOutput run_point(const CaseSpec& spec, const RunControl& control, const CaseL
     report = solve_box_qp(problem.qp, hierarchy, options, observer, x);
   } catch (const IndefiniteSystemError&) {
     // Positive definiteness failing inside a solver is the user's weights, not a crash.
-    throw indefinite(spec.weights);
+    throw indefinite(spec);
   }
   const auto t_solve = Clock::now();
 

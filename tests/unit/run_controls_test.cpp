@@ -133,6 +133,17 @@ TEST(RunControls, RollersGiveTheExactUniaxialSolution) {
   }
 }
 
+TEST(RunControls, ABodyThatCanSlideIsRefusedBeforeSolving) {
+  json j = uniaxial_case(1.0);
+  j["boundary"].erase("left");  // nothing holds u_x: the body slides on the frictionless plane
+  const auto errors = validate_case(j);
+  ASSERT_EQ(errors.size(), 1u);
+  EXPECT_EQ(errors[0].pointer, "/boundary");
+  EXPECT_NE(errors[0].detail.find("no dirichlet group prescribes u_x"), std::string::npos)
+      << errors[0].detail;
+  EXPECT_TRUE(validate_case(uniaxial_case(1.0)).empty());
+}
+
 TEST(RunControls, ADisplacementWithBothComponentsNullIsRefused) {
   json j = uniaxial_case(1.0);
   j["boundary"]["top"]["displacement"] = {nullptr, nullptr};
