@@ -3,6 +3,7 @@
 // contact DOFs of neighbouring levels are related. Free DOF numbering, rotated coordinates.
 
 #include <array>
+#include <string>
 #include <utility>
 #include <vector>
 
@@ -47,5 +48,10 @@ struct LevelHierarchy {
   std::vector<Level> levels;
   int num_levels() const { return static_cast<int>(levels.size()); }
 };
+
+/// Empty when the hierarchy fits a problem of `finest_size` unknowns: P_j maps level j−1 to
+/// level j, and every patch, strip and link index lies inside its level; otherwise what is
+/// wrong (checked by FOSLS_ASSERT when a multilevel cycle is built).
+std::string hierarchy_inconsistency(const LevelHierarchy& hierarchy, int finest_size);
 
 }  // namespace fosls

@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <chrono>
 
+#include "core/fosls_assert.hpp"
 #include "solvers/galerkin_product.hpp"
 
 namespace fosls {
@@ -61,6 +62,8 @@ MultilevelCycle::MultilevelCycle(const BoxQp& qp, const LevelHierarchy& hierarch
                                  MultilevelOptions options,
                                  std::shared_ptr<const GalerkinChain> chain)
     : qp_(qp), hierarchy_(hierarchy), options_(options), chain_(std::move(chain)) {
+  FOSLS_ASSERT(hierarchy_inconsistency(hierarchy, qp.size()).empty(),
+               hierarchy_inconsistency(hierarchy, qp.size()));
   const int nl = hierarchy.num_levels();
   if (!chain_) chain_ = std::make_shared<const GalerkinChain>(galerkin_chain(qp.A, hierarchy));
   for (int j = 0; j < nl; ++j) levels_.push_back(std::make_unique<LevelState>());

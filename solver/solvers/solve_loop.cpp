@@ -7,6 +7,7 @@
 #include <memory>
 #include <stdexcept>
 
+#include "core/fosls_assert.hpp"
 #include "core/indefinite_system.hpp"
 #include "core/peak_memory.hpp"
 
@@ -352,6 +353,13 @@ SolverReport solve_with_chain(const BoxQp& qp, const LevelHierarchy& hierarchy,
     symmetric_multiply(qp.A, x, r);
     r = qp.b - r;
     const Vector dx = x - x_old;
+    FOSLS_ASSERT(qp.feasible(x), "every step keeps lower <= x <= upper");
+    // J(x) − J(x_old) = −½ dx·(r_old + r); mmg, tnnmg and pgs never increase J (up to rounding
+    // in the residuals, relative to the size of the step's terms).
+    FOSLS_ASSERT(
+        options.method == SolverMethod::kPdas ||
+            -0.5 * dx.dot(r_old + r) <= 1e-10 * (std::abs(dx.dot(r_old)) + std::abs(dx.dot(r))),
+        "a monotone method increased J");
     const double correction = std::sqrt(std::max(0.0, dx.dot(r_old - r)));
     const std::vector<char> now = active_set(qp, x);
     int changed = 0;
