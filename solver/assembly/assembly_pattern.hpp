@@ -1,5 +1,5 @@
 #pragma once
-// Pattern-first assembly (issue 12): the sparsity of the FOSLS matrix follows from the mesh
+// Pattern-first assembly: the sparsity of the FOSLS matrix follows from the mesh
 // topology alone, so it is computed once, the values are written into it in place and no
 // triplet lists are kept (they were the assembly's peak, about 1 KiB per DOF).
 

@@ -1,5 +1,5 @@
 #pragma once
-// The order of the vertex patches for a smoother sweep on two threads (issue 12): two blocks
+// The order of the vertex patches for a smoother sweep on two threads: two blocks
 // of vertices that are at least three edges apart, so that no patch of one block reads or
 // writes an entry of x or r that a patch of the other writes, and the separator between
 // them. Sweeping block 0 and block 1 at the same time and then the separator gives exactly

@@ -1,5 +1,5 @@
 #pragma once
-// The Galerkin product PᵀAP column by column, without forming A·P (issue 12): A·P of the
+// The Galerkin product PᵀAP column by column, without forming A·P: A·P of the
 // finest level was the largest matrix of a multilevel solve, and Eigen's sparse products
 // keep further temporaries of their result. Each coarse column J is (PᵀA P)_{:,J} =
 // Pᵀ (A P_{:,J}), accumulated in dense work vectors of the thread that owns J.

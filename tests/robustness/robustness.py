@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""Robustness of the multilevel solver on cases set up as users set them up (issue 10).
+"""Robustness of the multilevel solver on cases set up as users set them up.
 
 Each case in tests/robustness/cases is solved as given (the solver section left to its
 defaults, weights included) by mmg, tnnmg and pdas, to a tolerance of 1e-8. The checks:
@@ -20,7 +20,7 @@ import tempfile
 import time
 
 METHODS = ("mmg", "tnnmg", "pdas")
-# Iteration bounds per method; the target of issue 10 is 40 for mmg on every case. The rounded
+# Iteration bounds per method; the target is 40 for mmg on every case. The rounded
 # punch misses it (57): its curved coarse contact edges leave the truncated links an O(θ)
 # tangential flux imbalance (docs/method.md §4.2); the bound records what is reached.
 BOUNDS = {"mmg": 40, "tnnmg": 40, "pdas": 12}

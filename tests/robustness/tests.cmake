@@ -1,5 +1,5 @@
-# The multilevel solver on cases set up as users set them up (issue 10, docs/validation.md
-# "Robustness"), label `robustness`: one test per case, each solved by mmg, tnnmg and pdas.
+# The multilevel solver on cases set up as users set them up (docs/validation.md §8), label
+# `robustness`: one test per case, each solved by mmg, tnnmg and pdas.
 find_package(Python3 COMPONENTS Interpreter)
 if(Python3_Interpreter_FOUND)
   file(GLOB ROBUSTNESS_CASES CONFIGURE_DEPENDS ${CMAKE_CURRENT_LIST_DIR}/cases/*.json)

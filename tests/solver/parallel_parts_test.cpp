@@ -1,4 +1,4 @@
-// The parts of a solve that run on both cores (issue 12) give the same numbers as on one:
+// The parts of a solve that run on both cores give the same numbers as on one:
 // the pattern-first assembly and the Galerkin product bit for bit, the two-block patch sweep
 // bit for bit, because its blocks share no entry of x or r. And the assembled QP is the FOSLS
 // functional: J(x) = ½xᵀAx − bᵀx + c equals the element-wise sum at random x, so the in-place
