@@ -17,6 +17,6 @@ if(Python3_Interpreter_FOUND)
              COMMAND ${Python3_EXECUTABLE} ${VALIDATION_DIR}/test_validation.py
                      --bin $<TARGET_FILE:fosls-contact>
                      --estimator $<TARGET_FILE:validation_manufactured_errors> ${check})
-    set_tests_properties(validation_${check} PROPERTIES LABELS validation TIMEOUT 120)
+    set_tests_properties(validation_${check} PROPERTIES LABELS validation TIMEOUT 300)
   endforeach()
 endif()
