@@ -16,12 +16,14 @@ Discretization::Discretization(MeshHierarchy meshes, ProblemData data)
   problem_ = assembler_->assemble_system();
 }
 
-std::vector<std::vector<int>> vertex_patches(const FoslsSpace& space) {
+std::vector<std::vector<int>> vertex_patches(const FoslsSpace& space,
+                                             const std::vector<char>& selected) {
   const Mesh& mesh = space.mesh();
   const auto vertex_edges = mesh.vertex_edges();
   std::vector<std::vector<int>> patches;
   patches.reserve(mesh.num_vertices());
   for (int v = 0; v < mesh.num_vertices(); ++v) {
+    if (!selected.empty() && !selected[v]) continue;
     std::vector<int> p;
     for (int c = 0; c < 2; ++c)
       if (int f = space.free_index(space.u_dof(v, c)); f >= 0) p.push_back(f);
@@ -31,6 +33,16 @@ std::vector<std::vector<int>> vertex_patches(const FoslsSpace& space) {
     if (!p.empty()) patches.push_back(std::move(p));
   }
   return patches;
+}
+
+std::vector<char> new_vertices_and_neighbours(const Mesh& fine, const RefinementMaps& maps) {
+  std::vector<char> selected(fine.num_vertices(), 0);
+  for (int e = 0; e < fine.num_edges(); ++e) {
+    const auto& ab = fine.edge(e);
+    if (ab[0] >= maps.num_coarse_vertices || ab[1] >= maps.num_coarse_vertices)
+      selected[ab[0]] = selected[ab[1]] = 1;
+  }
+  return selected;
 }
 
 std::vector<int> contact_strip(const FoslsSpace& space, int layers) {
@@ -117,7 +129,14 @@ LevelHierarchy Discretization::build_level_hierarchy() const {
     const FoslsSpace& fine = *spaces_[j];
     Level& level = h.levels[j - coarsest];
     level.num_dofs = fine.num_free();
-    level.patches = vertex_patches(fine);
+    // Local smoothing (Chen, Nochetto and Xu's multilevel methods on graded bisection grids):
+    // an intermediate level smooths where it differs from the level below, so that one cycle
+    // costs O(N) of the finest level however many bisection levels there are. A uniform
+    // level is smoothed everywhere, the finest level always.
+    level.patches =
+        j == coarsest || j + 1 == num_levels()
+            ? vertex_patches(fine)
+            : vertex_patches(fine, new_vertices_and_neighbours(fine.mesh(), meshes_.maps[j]));
     level.contact_strip = contact_strip(fine);
     if (j == coarsest) continue;
     const FoslsSpace& coarse = *spaces_[j - 1];

@@ -44,8 +44,15 @@ class Discretization {
   AssembledProblem problem_;
 };
 
-/// Vertex patches of a space in its free numbering (docs/method.md §4.1).
-std::vector<std::vector<int>> vertex_patches(const FoslsSpace& space);
+/// Vertex patches of a space in its free numbering (docs/method.md §4.1); only those of the
+/// vertices with `selected[v]` set when `selected` is not empty.
+std::vector<std::vector<int>> vertex_patches(const FoslsSpace& space,
+                                             const std::vector<char>& selected = {});
+
+/// The vertices of a refined mesh that local smoothing visits: the new ones (midpoints) and
+/// their neighbours. Under uniform refinement that is every vertex; under a bisection step,
+/// the refined region and one layer around it.
+std::vector<char> new_vertices_and_neighbours(const Mesh& fine, const RefinementMaps& maps);
 
 /// Free DOFs of the triangles within `layers` layers of the contact boundary (the strip
 /// smoother's block), sorted; empty without contact. Two layers make the measured iteration
