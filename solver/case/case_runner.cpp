@@ -4,17 +4,14 @@
 #include <cmath>
 #include <sstream>
 
-#include "assembly/definiteness.hpp"
-#include "assembly/discretization.hpp"
+#include "case/adaptive_runner.hpp"
 #include "case/case_admission.hpp"
 #include "case/expression.hpp"
 #include "case/mesh_factory.hpp"
 #include "case/result_json.hpp"
 #include "case/solver_methods.hpp"
 #include "core/indefinite_system.hpp"
-#include "post/contact_output.hpp"
 #include "post/vtu_writer.hpp"
-#include "solvers/solve_loop.hpp"
 
 namespace fosls {
 
@@ -84,12 +81,6 @@ CaseException indefinite(const Weights& w) {
   return CaseException("/weights", m.str());
 }
 
-bool has_contact(const CaseSpec& spec) {
-  for (const auto& [name, bc] : spec.boundary)
-    if (bc.type == BoundaryCondition::Type::kContact) return true;
-  return false;
-}
-
 }  // namespace
 
 std::vector<CaseError> validate_case(const nlohmann::json& j, const CaseReadOptions& options,
@@ -119,37 +110,29 @@ RunOutput run_case(const CaseSpec& spec, const RunControl& control, const CaseLi
   ProblemData data = problem_data(spec, coarse);
   MeshHierarchy meshes = build_mesh_hierarchy(std::move(coarse), spec.mesh.refinements);
   const auto t_mesh = Clock::now();
-  Discretization disc(std::move(meshes), std::move(data));
-  const auto& problem = disc.problem();
-  if (has_contact(spec) && !contact_layer_is_definite(disc.finest_space(), problem.qp))
-    throw indefinite(spec.weights);
-  const SolverOptions& options = spec.solver;
-  const MethodInfo& method = method_info(options.method);
-  const LevelHierarchy hierarchy =
-      method.needs_hierarchy ? disc.build_level_hierarchy() : LevelHierarchy{};
-  const auto t_assembly = Clock::now();
-
-  SolverObserver observer;
-  if (control.on_iteration) observer.on_iteration = control.on_iteration;
+  CaseSolveObserver observer;
+  if (control.on_iteration) observer.solver.on_iteration = control.on_iteration;
   if (control.cancel)
-    observer.cancelled = [&control] { return control.cancel->load(std::memory_order_relaxed); };
-  Vector x;
-  SolverReport report;
+    observer.solver.cancelled = [&control] {
+      return control.cancel->load(std::memory_order_relaxed);
+    };
+  observer.on_step = control.on_step;
+  CaseSolution solution;
   try {
-    report = solve_box_qp(problem.qp, hierarchy, options, observer, x);
+    solution = solve_case_levels(std::move(meshes), data, spec, observer);
   } catch (const IndefiniteSystemError&) {
     // Positive definiteness failing inside a solver is the user's weights, not a crash.
     throw indefinite(spec.weights);
   }
+  const Discretization& disc = *solution.disc;
+  const AssembledProblem& problem = disc.problem();
   const auto t_solve = Clock::now();
 
-  const Vector full = disc.assembler().full_vector(problem, x);
-  const FunctionalParts parts = disc.assembler().functional(full);
-  const ContactResult contact = contact_output(disc.assembler(), problem, full);
-
   RunOutput out;
-  out.cancelled = report.cancelled;
-  if (control.want_vtu) out.vtu = write_vtu(disc.assembler(), problem, full, parts, contact);
+  out.cancelled = solution.report.cancelled;
+  if (control.want_vtu)
+    out.vtu = write_vtu(disc.assembler(), problem, solution.full, solution.parts, solution.contact,
+                        solution.generation);
   const auto t_end = Clock::now();
   ProblemSize size;
   size.levels = disc.num_levels();
@@ -159,10 +142,12 @@ RunOutput run_case(const CaseSpec& spec, const RunControl& control, const CaseLi
   size.triangles = disc.meshes().finest().num_triangles();
   RunTiming timing;
   timing.mesh_s = seconds(t0, t_mesh);
-  timing.assembly_s = seconds(t_mesh, t_assembly);
-  timing.solve_s = seconds(t_assembly, t_solve);
+  timing.assembly_s = solution.assembly_s;
+  // Estimation and refinement between the solves of an adaptive run count as solving.
+  timing.solve_s = seconds(t_mesh, t_solve) - solution.assembly_s;
   timing.total_s = seconds(t0, t_end);
-  out.result = result_json(spec, report, contact, parts, size, timing);
+  out.result = result_json(spec, solution.report, solution.contact, solution.parts, size, timing);
+  if (spec.adaptivity) out.result["adaptivity"] = adaptivity_json(solution, *spec.adaptivity);
   return out;
 }
 

@@ -1,6 +1,7 @@
 #pragma once
 // The sections of the case JSON, one file each (mesh_section.cpp, geometry_section.cpp,
-// material_section.cpp, boundary_section.cpp, solver_section.cpp): the rules of the section
+// material_section.cpp, boundary_section.cpp, solver_section.cpp,
+// adaptivity_section.cpp): the rules of the section
 // (case_rules.hpp) and its conversion into the CaseSpec. A converter is called only on JSON
 // that passed its section's rules, so it needs no checks of its own; absent fields take the
 // defaults of the rules.
@@ -36,6 +37,9 @@ Weights read_weights_section(const nlohmann::json& j);
 
 ObjectRulePtr solver_rule();
 SolverOptions read_solver_section(const nlohmann::json& j);
+
+ObjectRulePtr adaptivity_rule(const CaseReadOptions& options);
+AdaptivitySpec read_adaptivity_section(const nlohmann::json& j, const CaseLimits& limits);
 
 /// [f_x, f_y], [u_x, u_y], ...: two numbers or expressions of x and y.
 ValueRule scalar_pair_value(const CaseReadOptions& options);

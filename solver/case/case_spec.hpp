@@ -69,6 +69,17 @@ struct Weights {
   double c4 = 0.0;
 };
 
+/// The `adaptivity` section: solve → estimate → mark → refine by newest-vertex bisection →
+/// solve again from the prolongated solution, until one of the limits stops it.
+struct AdaptivitySpec {
+  int steps = 10;                ///< refinement steps at most (steps + 1 solves)
+  long long max_dofs = 200'000;  ///< a refinement that would give more DOFs is not made
+  double theta = 0.5;            ///< Dörfler parameter: refine the triangles of θ of J
+  /// Stop once the estimator J^½ has fallen to `target` times its value on the starting mesh
+  /// (0: no target).
+  double target = 0.0;
+};
+
 struct CaseSpec {
   std::string name = "case";
   MeshSpec mesh;
@@ -78,6 +89,7 @@ struct CaseSpec {
   std::map<std::string, BoundaryCondition> boundary;
   Weights weights;
   SolverOptions solver;  ///< the case's `solver` section (method, tolerance, smoothing, ...)
+  std::optional<AdaptivitySpec> adaptivity;  ///< absent: uniform refinement only
 };
 
 }  // namespace fosls
