@@ -4,10 +4,12 @@
 #include <chrono>
 #include <fstream>
 #include <iterator>
+#include <map>
 #include <optional>
 #include <sstream>
 
 #include "json_duplicates.hpp"
+#include "openapi.hpp"
 #include "problem.hpp"
 #include "problem_catalogue.hpp"
 #include "request_checks.hpp"
@@ -44,16 +46,29 @@ std::optional<JobPath> split_job_path(const std::string& path) {
   return JobPath{rest.substr(0, slash), rest.substr(slash + 1)};
 }
 
+/// The OpenAPI document and the JSON Schemas it references (openapi.hpp).
+bool is_contract_path(const std::string& path) {
+  return path == "/v1/openapi.json" || path == "/v1/schemas/case.json" ||
+         path == "/v1/schemas/result.json";
+}
+
 /// Methods a path supports, for 405 responses ("" when the path is not an API route).
 std::string allowed_methods(const std::string& path) {
   if (path == "/v1/jobs") return "GET, POST";
-  if (path == "/healthz" || path == "/metrics") return "GET";
+  if (path == "/healthz" || path == "/metrics" || is_contract_path(path)) return "GET";
   if (auto jp = split_job_path(path)) {
     if (jp->leaf.empty()) return "GET, DELETE";
-    if (jp->leaf == "result" || jp->leaf == "solution.vtu") return "GET";
+    if (jp->leaf == "result" || jp->leaf == "solution.vtu" || jp->leaf == "case") return "GET";
     if (jp->leaf == "cancel") return "POST";
   }
   return "";
+}
+
+/// Succeeded jobs have a result; so have failed ones whose solve did not converge under
+/// --fail-unconverged (kept to look at). Other failed jobs have none.
+bool has_result(const Job& job) {
+  return job.state == JobState::kSucceeded ||
+         (job.state == JobState::kFailed && job.convergence.converged.has_value());
 }
 
 std::string method_label(const std::string& method) {
@@ -102,10 +117,12 @@ HttpApi::HttpApi(JobStore& store, WorkerPool& workers, CaseValidator validator, 
       options_(std::move(options)) {}
 
 std::string HttpApi::route_template(const std::string& path) {
-  if (path == "/v1/jobs" || path == "/healthz" || path == "/metrics") return path;
+  if (path == "/v1/jobs" || path == "/healthz" || path == "/metrics" || is_contract_path(path))
+    return path;
   if (auto jp = split_job_path(path)) {
     if (jp->leaf.empty()) return "/v1/jobs/{id}";
-    if (jp->leaf == "result" || jp->leaf == "solution.vtu" || jp->leaf == "cancel") {
+    if (jp->leaf == "result" || jp->leaf == "solution.vtu" || jp->leaf == "cancel" ||
+        jp->leaf == "case") {
       return "/v1/jobs/{id}/" + jp->leaf;
     }
     return "unknown";
@@ -147,8 +164,20 @@ void HttpApi::install(httplib::Server& server) {
   server.Get("/v1/jobs/([^/]+)", with_id(&HttpApi::get_job));
   server.Get("/v1/jobs/([^/]+)/result", with_id(&HttpApi::get_result));
   server.Get("/v1/jobs/([^/]+)/solution\\.vtu", with_id(&HttpApi::get_solution));
+  server.Get("/v1/jobs/([^/]+)/case", with_id(&HttpApi::get_case));
   server.Post("/v1/jobs/([^/]+)/cancel", with_id(&HttpApi::cancel_job));
   server.Delete("/v1/jobs/([^/]+)", with_id(&HttpApi::delete_job));
+  // Built once: they depend only on the program (the rules tables), not on the request.
+  std::map<std::string, std::string> contract = {{"/v1/openapi.json", dump(openapi_document())}};
+  for (const char* name : {"case.json", "result.json"})
+    contract["/v1/schemas/" + std::string(name)] = dump(*published_schema(name));
+  for (const auto& [path, text] : contract) {
+    std::string pattern;  // cpp-httplib patterns are regular expressions
+    for (char ch : path) pattern += ch == '.' ? std::string("\\.") : std::string(1, ch);
+    server.Get(pattern, [text = text](const Request&, Response& res) {
+      res.set_content(text, "application/json");
+    });
+  }
   server.Get("/healthz", [this](const Request& req, Response& res) { healthz(req, res); });
   server.Get("/metrics", [this](const Request& req, Response& res) { metrics(req, res); });
   // Last, so API routes win: everything else under / comes from --web-root.
@@ -422,7 +451,7 @@ void HttpApi::get_job(const Request& req, Response& res, std::int64_t id) {
 void HttpApi::get_result(const Request& req, Response& res, std::int64_t id) {
   auto job = store_.find(id);
   if (!job) return not_found(req, res, id);
-  if (job->state == JobState::kSucceeded) {
+  if (has_result(*job)) {
     if (auto text = store_.result_json(id)) {
       res.set_content(*text, "application/json");
       return;
@@ -434,7 +463,7 @@ void HttpApi::get_result(const Request& req, Response& res, std::int64_t id) {
 void HttpApi::get_solution(const Request& req, Response& res, std::int64_t id) {
   auto job = store_.find(id);
   if (!job) return not_found(req, res, id);
-  if (job->state == JobState::kSucceeded) {
+  if (has_result(*job)) {
     if (auto text = store_.vtu(id)) {
       res.set_header("Content-Disposition",
                      "attachment; filename=\"job-" + std::to_string(id) + ".vtu\"");
@@ -443,6 +472,12 @@ void HttpApi::get_solution(const Request& req, Response& res, std::int64_t id) {
     }
   }
   send_problem(req, res, problems::job_without_result(*job));
+}
+
+void HttpApi::get_case(const Request& req, Response& res, std::int64_t id) {
+  auto text = store_.case_json(id);
+  if (!text) return not_found(req, res, id);
+  res.set_content(*text, "application/json");
 }
 
 void HttpApi::cancel_job(const Request& req, Response& res, std::int64_t id) {
@@ -484,6 +519,7 @@ void HttpApi::healthz(const Request& req, Response& res) {
 void HttpApi::metrics(const Request& req, Response& res) {
   MetricsSnapshot snapshot;
   snapshot.jobs_by_state = store_.count_by_state();
+  snapshot.not_converged = store_.count_not_converged();
   snapshot.workers = workers_.size();
   snapshot.busy_workers = workers_.busy();
   res.set_content(metrics_.render(snapshot), "text/plain; version=0.0.4; charset=utf-8");

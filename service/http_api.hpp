@@ -54,6 +54,7 @@ class HttpApi {
   void get_job(const Request& req, Response& res, std::int64_t id);
   void get_result(const Request& req, Response& res, std::int64_t id);
   void get_solution(const Request& req, Response& res, std::int64_t id);
+  void get_case(const Request& req, Response& res, std::int64_t id);
   void cancel_job(const Request& req, Response& res, std::int64_t id);
   void delete_job(const Request& req, Response& res, std::int64_t id);
   void healthz(const Request& req, Response& res);

@@ -46,6 +46,17 @@ nlohmann::json finite_or_null(double v) {
 }
 }  // namespace
 
+JobConvergence convergence_of_result(const std::string& result_json) {
+  JobConvergence c;
+  const nlohmann::json r = nlohmann::json::parse(result_json, nullptr, false);
+  if (!r.is_object()) return c;
+  if (auto it = r.find("converged"); it != r.end() && it->is_boolean())
+    c.converged = it->get<bool>();
+  if (auto it = r.find("stop_reason"); it != r.end() && it->is_string())
+    c.stop_reason = it->get<std::string>();
+  return c;
+}
+
 nlohmann::json job_to_json(const Job& job) {
   const std::string self = "/v1/jobs/" + std::to_string(job.id);
   nlohmann::json j = {
@@ -58,8 +69,14 @@ nlohmann::json job_to_json(const Job& job) {
       {"attempts", job.attempts},
       {"cancel_requested", job.cancel_requested},
       {"error", job.error.empty() ? nlohmann::json(nullptr) : nlohmann::json(job.error)},
+      {"converged", job.convergence.converged ? nlohmann::json(*job.convergence.converged)
+                                              : nlohmann::json(nullptr)},
+      {"stop_reason", job.convergence.stop_reason.empty()
+                          ? nlohmann::json(nullptr)
+                          : nlohmann::json(job.convergence.stop_reason)},
       {"links",
        {{"self", self},
+        {"case", self + "/case"},
         {"result", self + "/result"},
         {"solution", self + "/solution.vtu"},
         {"cancel", self + "/cancel"}}},

@@ -35,6 +35,16 @@ struct JobProgress {
   double energy = 0.0;
 };
 
+/// How a solve that produced a result stopped, copied from the result's `converged` and
+/// `stop_reason` (docs/result-format.md) so that job listings show it without reading results.
+struct JobConvergence {
+  std::optional<bool> converged;  ///< nothing: no result, or one without the field
+  std::string stop_reason;        ///< "converged", "max_iterations", …; empty when unknown
+};
+
+/// The convergence fields of a result JSON text; empty ones when it has none or is not JSON.
+JobConvergence convergence_of_result(const std::string& result_json);
+
 /// The job as stored, without its case, result and VTU text (those are fetched separately).
 struct Job {
   std::int64_t id = 0;
@@ -47,6 +57,7 @@ struct Job {
   std::optional<JobProgress> progress;         ///< nothing before the first iteration
   std::string error;                           ///< why it failed (empty otherwise)
   bool cancel_requested = false;               ///< cancel asked while it was running
+  JobConvergence convergence;                  ///< set once a result was stored
 };
 
 /// The job resource of the HTTP API (docs/service.md, "API").

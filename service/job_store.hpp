@@ -31,6 +31,16 @@ struct NewJob {
   std::optional<std::string> idempotency_key;
 };
 
+/// What a finished solve leaves to store.
+struct SolveRecord {
+  std::string result_json;
+  std::string vtu;
+  JobConvergence convergence;
+  /// Empty: the job succeeded. Otherwise it fails for this reason although it has a result
+  /// (a solve that did not converge under --fail-unconverged); the result is kept to look at.
+  std::string error;
+};
+
 /// What submit did.
 struct SubmitOutcome {
   enum class Kind {
@@ -126,6 +136,9 @@ class JobStore {
   /// VTU text of a succeeded job.
   virtual std::optional<std::string> vtu(std::int64_t id) = 0;
 
+  /// The case as submitted (canonical JSON text).
+  virtual std::optional<std::string> case_json(std::int64_t id) = 0;
+
   virtual JobPage list(const JobListQuery& query) = 0;
 
   /// Cancels a queued job at once, or marks a running one so its worker stops it.
@@ -146,9 +159,16 @@ class JobStore {
   /// Records progress of a running attempt (no effect once it has finished).
   virtual void update_progress(const Lease& lease, const JobProgress& progress) = 0;
 
-  /// Stores the result and VTU of a running attempt and marks it succeeded, once.
-  virtual bool complete_succeeded(const Lease& lease, const std::string& result_json,
-                                  const std::string& vtu) = 0;
+  /// Stores the result and VTU of a running attempt, once, and marks it succeeded (or failed
+  /// when record.error is set).
+  virtual bool complete_with_result(const Lease& lease, const SolveRecord& record) = 0;
+
+  /// complete_with_result for a successful solve, its convergence read from the result.
+  bool complete_succeeded(const Lease& lease, const std::string& result_json,
+                          const std::string& vtu) {
+    return complete_with_result(
+        lease, SolveRecord{result_json, vtu, convergence_of_result(result_json), ""});
+  }
 
   virtual bool complete_failed(const Lease& lease, const std::string& error) = 0;
 
@@ -174,6 +194,9 @@ class JobStore {
 
   /// Number of jobs in each state (every state present, zero when none).
   virtual std::map<JobState, std::int64_t> count_by_state() = 0;
+
+  /// Number of jobs whose solve stopped without converging (succeeded or failed).
+  virtual std::int64_t count_not_converged() = 0;
 
   /// Cheap round trip to the storage, for health checks; throws StoreError on failure.
   virtual void ping() = 0;

@@ -65,6 +65,12 @@ void Metrics::record_run(JobState outcome, double seconds) {
   it->second.observe(seconds);
 }
 
+void Metrics::record_stop_reason(const std::string& stop_reason) {
+  std::lock_guard lock(mutex_);
+  // Results without the field (older solvers, test doubles) are counted, not dropped.
+  ++stop_reasons_[stop_reason.empty() ? "unknown" : stop_reason];
+}
+
 std::string Metrics::render(const MetricsSnapshot& snapshot) const {
   std::string out;
   out += "# HELP fosls_jobs Jobs in the store by state.\n# TYPE fosls_jobs gauge\n";
@@ -77,6 +83,10 @@ std::string Metrics::render(const MetricsSnapshot& snapshot) const {
   out += "# HELP fosls_queue_depth Jobs waiting for a worker.\n# TYPE fosls_queue_depth gauge\n";
   out += "fosls_queue_depth " +
          std::to_string(queued == snapshot.jobs_by_state.end() ? 0 : queued->second) + "\n";
+  out +=
+      "# HELP fosls_jobs_not_converged Jobs in the store whose solve stopped without "
+      "converging.\n# TYPE fosls_jobs_not_converged gauge\n";
+  out += "fosls_jobs_not_converged " + std::to_string(snapshot.not_converged) + "\n";
   out += "# HELP fosls_workers Solver worker threads.\n# TYPE fosls_workers gauge\n";
   out += "fosls_workers " + std::to_string(snapshot.workers) + "\n";
   out += "# HELP fosls_workers_busy Workers solving a job now.\n# TYPE fosls_workers_busy gauge\n";
@@ -90,6 +100,11 @@ std::string Metrics::render(const MetricsSnapshot& snapshot) const {
     histogram.render(out, "fosls_job_run_seconds",
                      "outcome=\"" + std::string(to_string(outcome)) + "\"");
   }
+  out +=
+      "# HELP fosls_solves_total Solves of this process that produced a result, by why they "
+      "stopped.\n# TYPE fosls_solves_total counter\n";
+  for (const auto& [reason, n] : stop_reasons_)
+    out += "fosls_solves_total{stop_reason=\"" + reason + "\"} " + std::to_string(n) + "\n";
   out +=
       "# HELP fosls_http_requests_total HTTP requests by method, route and status.\n"
       "# TYPE fosls_http_requests_total counter\n";

@@ -30,6 +30,7 @@ class Histogram {
 /// Gauges that are read from elsewhere at scrape time.
 struct MetricsSnapshot {
   std::map<JobState, std::int64_t> jobs_by_state;
+  std::int64_t not_converged = 0;  ///< jobs whose solve stopped without converging
   int workers = 0;
   int busy_workers = 0;
 };
@@ -45,6 +46,9 @@ class Metrics {
   /// One finished solve attempt and its wall time in seconds.
   void record_run(JobState outcome, double seconds);
 
+  /// How one solve that produced a result stopped ("converged", "max_iterations", …).
+  void record_stop_reason(const std::string& stop_reason);
+
   /// The exposition text.
   std::string render(const MetricsSnapshot& snapshot) const;
 
@@ -53,6 +57,7 @@ class Metrics {
   std::map<std::tuple<std::string, std::string, int>, std::uint64_t> http_requests_;
   Histogram http_seconds_;
   std::map<JobState, Histogram> run_seconds_;
+  std::map<std::string, std::uint64_t> stop_reasons_;
 };
 
 }  // namespace fosls::service

@@ -48,6 +48,16 @@ CREATE TABLE job_results (
 -- Already gzip-compressed: out of line, without TOAST trying to compress it again.
 ALTER TABLE job_results ALTER COLUMN vtu SET STORAGE EXTERNAL;
 )sql"},
+    // As SQLite's step 3: copied from the result, for listings that never read results.
+    {2, "convergence of finished solves", R"sql(
+ALTER TABLE jobs ADD COLUMN converged INTEGER;
+ALTER TABLE jobs ADD COLUMN stop_reason TEXT;
+UPDATE jobs SET converged = (r.result_json::jsonb->>'converged')::boolean::integer,
+                stop_reason = r.result_json::jsonb->>'stop_reason'
+  FROM job_results r
+  WHERE r.job_id = jobs.id AND jsonb_typeof(r.result_json::jsonb->'converged') = 'boolean';
+CREATE INDEX jobs_not_converged ON jobs(id) WHERE converged = 0;
+)sql"},
 };
 
 }  // namespace

@@ -11,7 +11,8 @@ namespace {
 
 constexpr const char* kJobColumns =
     "id, name, state, created_at, started_at, finished_at, attempts, progress_iteration, "
-    "progress_kkt_residual, progress_energy, error, cancel_requested";
+    "progress_kkt_residual, progress_energy, error, cancel_requested, converged, stop_reason";
+constexpr int kJobColumnCount = 14;
 
 std::string select_job_sql(const std::string& where) {
   return std::string("SELECT ") + kJobColumns + " FROM jobs " + where;
@@ -46,6 +47,8 @@ Job read_job(const SqlRow& row, int first = 0) {
   }
   job.error = row.text(first + 10);
   job.cancel_requested = row.int64(first + 11) != 0;
+  if (!row.is_null(first + 12)) job.convergence.converged = row.int64(first + 12) != 0;
+  job.convergence.stop_reason = row.text(first + 13);
   return job;
 }
 
@@ -100,6 +103,12 @@ std::optional<Job> SqlJobStore::find(std::int64_t id) { return find_on(*connecti
 std::optional<std::string> SqlJobStore::result_json(std::int64_t id) {
   const SqlRows rows =
       connection()->query("SELECT result_json FROM job_results WHERE job_id = ?1", {id});
+  if (rows.empty()) return std::nullopt;
+  return rows[0].text(0);
+}
+
+std::optional<std::string> SqlJobStore::case_json(std::int64_t id) {
+  const SqlRows rows = connection()->query("SELECT case_json FROM jobs WHERE id = ?1", {id});
   if (rows.empty()) return std::nullopt;
   return rows[0].text(0);
 }
@@ -208,7 +217,7 @@ std::optional<ClaimedJob> SqlJobStore::claim_next(const ClaimRequest& request) {
   tx.commit();
   ClaimedJob claimed;
   claimed.job = read_job(rows[0]);
-  claimed.case_json = rows[0].text(12);
+  claimed.case_json = rows[0].text(kJobColumnCount);
   claimed.lease = Lease{claimed.job.id, claimed.job.attempts, request.worker_id};
   return claimed;
 }
@@ -236,16 +245,24 @@ void SqlJobStore::update_progress(const Lease& lease, const JobProgress& progres
       params);
 }
 
-bool SqlJobStore::complete_succeeded(const Lease& lease, const std::string& result_json,
-                                     const std::string& vtu) {
+bool SqlJobStore::complete_with_result(const Lease& lease, const SolveRecord& record) {
   // Compressed before the transaction: the write lock is never held for the CPU work.
-  SqlBlob compressed{gzip_compress(vtu)};
+  SqlBlob compressed{gzip_compress(record.vtu)};
+  std::vector<SqlValue> params = lease_params(lease);
+  params.emplace_back(std::string(record.error.empty() ? "succeeded" : "failed"));
+  params.emplace_back(record.error.empty() ? SqlValue{} : SqlValue(record.error));
+  params.emplace_back(record.convergence.converged
+                          ? SqlValue(static_cast<std::int64_t>(*record.convergence.converged))
+                          : SqlValue{});
+  params.emplace_back(record.convergence.stop_reason.empty()
+                          ? SqlValue{}
+                          : SqlValue(record.convergence.stop_reason));
   auto c = connection();
   SqlTransaction tx(*c);
-  if (c->query("UPDATE jobs SET state = 'succeeded', finished_at = {now_ms}, error = NULL, "
-               "lease_owner = NULL, lease_expires_at = NULL WHERE " +
+  if (c->query("UPDATE jobs SET state = ?4, finished_at = {now_ms}, error = ?5, converged = ?6, "
+               "stop_reason = ?7, lease_owner = NULL, lease_expires_at = NULL WHERE " +
                    std::string(kLeaseHolder) + " RETURNING id",
-               lease_params(lease))
+               params)
           .empty()) {
     return false;  // not this worker's attempt any more
   }
@@ -253,7 +270,7 @@ bool SqlJobStore::complete_succeeded(const Lease& lease, const std::string& resu
   c->query(
       "INSERT INTO job_results (job_id, result_json, vtu, vtu_encoding, written_at) "
       "VALUES (?1, ?2, ?3, 'gzip', {now_ms})",
-      {lease.job_id, result_json, std::move(compressed)});
+      {lease.job_id, record.result_json, std::move(compressed)});
   tx.commit();
   return true;
 }
@@ -365,6 +382,10 @@ std::map<JobState, std::int64_t> SqlJobStore::count_by_state() {
     if (auto s = parse_job_state(row.text(0))) counts[*s] = row.int64(1);
   }
   return counts;
+}
+
+std::int64_t SqlJobStore::count_not_converged() {
+  return connection()->query("SELECT count(*) FROM jobs WHERE converged = 0")[0].int64(0);
 }
 
 void SqlJobStore::ping() { connection()->query("SELECT 1"); }

@@ -26,8 +26,8 @@ class SqlJobStore : public JobStore {
   std::optional<ClaimedJob> claim_next(const ClaimRequest& request) override;
   LeaseStatus renew_lease(const Lease& lease, std::chrono::milliseconds duration) override;
   void update_progress(const Lease& lease, const JobProgress& progress) override;
-  bool complete_succeeded(const Lease& lease, const std::string& result_json,
-                          const std::string& vtu) override;
+  std::optional<std::string> case_json(std::int64_t id) override;
+  bool complete_with_result(const Lease& lease, const SolveRecord& record) override;
   bool complete_failed(const Lease& lease, const std::string& error) override;
   bool complete_cancelled(const Lease& lease) override;
   bool requeue(const Lease& lease) override;
@@ -35,6 +35,7 @@ class SqlJobStore : public JobStore {
   RecoveryReport recover_interrupted(int max_attempts) override;
   int delete_finished_before(std::int64_t unix_ms) override;
   std::map<JobState, std::int64_t> count_by_state() override;
+  std::int64_t count_not_converged() override;
   void ping() override;
 
  protected:

@@ -48,6 +48,18 @@ CREATE INDEX jobs_running_by_lease ON jobs(lease_expires_at) WHERE state = 'runn
 ALTER TABLE job_results ADD COLUMN vtu_encoding TEXT NOT NULL DEFAULT 'identity'
   CHECK (vtu_encoding IN ('identity', 'gzip'));
 )sql"},
+    // Copied from the result so that job listings show convergence without reading results;
+    // jobs finished before this step get theirs from their stored result.
+    {3, "convergence of finished solves", R"sql(
+ALTER TABLE jobs ADD COLUMN converged INTEGER;
+ALTER TABLE jobs ADD COLUMN stop_reason TEXT;
+UPDATE jobs SET
+  converged = (SELECT json_extract(r.result_json, '$.converged') FROM job_results r
+               WHERE r.job_id = jobs.id AND json_valid(r.result_json)),
+  stop_reason = (SELECT json_extract(r.result_json, '$.stop_reason') FROM job_results r
+                 WHERE r.job_id = jobs.id AND json_valid(r.result_json));
+CREATE INDEX jobs_not_converged ON jobs(id) WHERE converged = 0;
+)sql"},
 };
 
 }  // namespace

@@ -24,6 +24,7 @@ WorkerPoolOptions WorkerOptions::pool_options() const {
   o.workers = workers;
   o.lease_duration = seconds_to_ms(lease_seconds);
   o.heartbeat_interval = seconds_to_ms(heartbeat_seconds);
+  o.fail_unconverged = fail_unconverged;
   return o;
 }
 
@@ -85,6 +86,9 @@ void add_worker_options(CLI::App& app, WorkerOptions& o, int min_workers) {
                  "killed and its job fails")
       ->check(CLI::Range(0.0, 1e7))
       ->capture_default_str();
+  app.add_flag("--fail-unconverged", o.fail_unconverged,
+               "A solve that stops without converging fails its job (the result is kept) "
+               "instead of succeeding with converged false");
 }
 
 JobRunner service_job_runner(const WorkerOptions& options) {

@@ -24,6 +24,8 @@ struct WorkerOptions {
   std::string max_job_memory;
   /// --max-job-seconds: wall-clock time one job may run, 0 for no limit.
   double max_job_seconds = 0;
+  /// --fail-unconverged: a solve that stops without converging fails its job.
+  bool fail_unconverged = false;
 
   /// The memory each job may use, in bytes.
   std::size_t job_memory_bytes() const;
@@ -36,9 +38,9 @@ struct WorkerOptions {
   std::string problem() const;
 };
 
-/// Registers --store, --workers, --max-attempts, --lease-seconds, --heartbeat-seconds and
-/// --max-job-memory on `app`; `min_workers` is 0 for fosls-serve (API only) and 1 for
-/// fosls-worker.
+/// Registers --store, --workers, --max-attempts, --lease-seconds, --heartbeat-seconds,
+/// --max-job-memory, --max-job-seconds and --fail-unconverged on `app`; `min_workers` is 0 for
+/// fosls-serve (API only) and 1 for fosls-worker.
 void add_worker_options(CLI::App& app, WorkerOptions& options, int min_workers);
 
 /// The JobRunner both programs solve jobs with: each job in a fosls-solve-job process under

@@ -150,6 +150,13 @@ void WorkerPool::run_worker(int index) {
   }
 }
 
+std::string WorkerPool::unconverged_error(const JobConvergence& convergence) {
+  return "the solve stopped without converging (stop_reason " +
+         (convergence.stop_reason.empty() ? std::string("unknown") : convergence.stop_reason) +
+         ") and this service fails such jobs (--fail-unconverged); the result is kept at "
+         "links.result: its message and warnings say what to change";
+}
+
 bool WorkerPool::with_retries(const char* what, std::int64_t job_id,
                               const std::function<bool()>& write, std::string& error) {
   auto delay = options_.store_retry_delay;
@@ -255,18 +262,31 @@ void WorkerPool::run_job(const ClaimedJob& claimed) {
   std::string to;
   bool stored = false;
   std::string store_error;
+  nlohmann::json convergence_fields;
   if (outcome.kind == JobRunOutcome::Kind::kSucceeded) {
-    to = "succeeded";
+    SolveRecord record;
+    record.convergence = convergence_of_result(outcome.result_json);
+    record.result_json = std::move(outcome.result_json);
+    record.vtu = std::move(outcome.vtu);
+    if (options_.fail_unconverged && record.convergence.converged == false)
+      record.error = unconverged_error(record.convergence);
+    const JobState state = record.error.empty() ? JobState::kSucceeded : JobState::kFailed;
+    to = to_string(state);
+    if (record.convergence.converged) {
+      convergence_fields = {{"converged", *record.convergence.converged},
+                            {"stop_reason", record.convergence.stop_reason}};
+    }
     stored = with_retries(
-        "store result", job.id,
-        [&] { return store_.complete_succeeded(lease, outcome.result_json, outcome.vtu); },
+        "store result", job.id, [&] { return store_.complete_with_result(lease, record); },
         store_error);
     if (!stored && !store_error.empty()) {
       // For example a VTU beyond SQLite's size limit: say so rather than stay "running".
       outcome.kind = JobRunOutcome::Kind::kFailed;
       outcome.error = "the solve finished but its result could not be stored: " + store_error;
     } else {
-      metrics_.record_run(JobState::kSucceeded, seconds);
+      metrics_.record_run(state, seconds);
+      metrics_.record_stop_reason(record.convergence.stop_reason);
+      if (state == JobState::kFailed) convergence_fields["error"] = record.error;
     }
   } else if (outcome.kind == JobRunOutcome::Kind::kCancelled && stopping && !user_cancel) {
     // Interrupted by shutdown, not by its user: nothing is lost, it runs again next start.
@@ -291,6 +311,7 @@ void WorkerPool::run_job(const ClaimedJob& claimed) {
   nlohmann::json fields = {{"job_id", job.id},   {"from", "running"},  {"to", to},
                            {"attempt", attempt}, {"seconds", seconds}, {"stored", stored}};
   if (outcome.kind == JobRunOutcome::Kind::kFailed) fields["error"] = outcome.error;
+  if (convergence_fields.is_object()) fields.update(convergence_fields);
   log_.write("job_transition", fields);
 }
 

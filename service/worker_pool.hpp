@@ -38,6 +38,9 @@ struct WorkerPoolOptions {
   std::chrono::milliseconds idle_poll{1000};
   /// First pause before retrying a failed store write (doubles; five tries in all).
   std::chrono::milliseconds store_retry_delay{200};
+  /// A solve that stops without converging fails its job (its result is kept) instead of
+  /// succeeding with "converged": false (--fail-unconverged).
+  bool fail_unconverged = false;
 };
 
 /// hostname:pid:random, unique to one process even where pids repeat (containers).
@@ -87,6 +90,8 @@ class WorkerPool {
   /// requested (through any process) or whose lease was lost.
   void run_heartbeat();
   void heartbeat_once();
+  /// Why a job whose solve did not converge fails under fail_unconverged.
+  static std::string unconverged_error(const JobConvergence& convergence);
   /// Calls `write` until it returns without throwing or attempts run out (the store may be
   /// busy for a while); returns what `write` returned, false after the last failure, whose
   /// message goes to `error`.

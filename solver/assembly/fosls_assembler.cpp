@@ -207,11 +207,21 @@ AssembledProblem FoslsAssembler::assemble_system() const {
     if (g < 0) continue;
     const GroupData& gd = data_.groups[g];
     const auto& pq = mesh.edge(e);
-    if (gd.role == GroupRole::kDirichlet) {
+    if (const int prescribed = prescribed_components(gd.role)) {
       for (int v : pq)
-        for (int c = 0; c < 2; ++c)
-          xd[space_.u_dof(v, c)] =
+        for (int c = 0; c < 2; ++c) {
+          if (!(prescribed & (1 << c))) continue;
+          const double value =
               gd.values[c] ? gd.values[c](mesh.vertex(v).x(), mesh.vertex(v).y()) : 0.0;
+          if (space_.is_contact_vertex(v)) {
+            // A roller through the contact zone: its axis is the tangent t = (−n_y, n_x), so
+            // the fixed rotated DOF U_t = t·U = t_c u_c (fosls_space.cpp).
+            const Point& n = space_.vertex_normal(v);
+            xd[space_.u_dof(v, 1)] = (c == 0 ? -n.y() : n.x()) * value;
+          } else {
+            xd[space_.u_dof(v, c)] = value;
+          }
+        }
     } else if (gd.role == GroupRole::kNeumann) {
       const Point a = mesh.vertex(pq[0]), b = mesh.vertex(pq[1]);
       const double len = (b - a).norm();

@@ -31,7 +31,7 @@ long long dofs_total(const Mesh& mesh) { return 2LL * (mesh.num_vertices() + mes
 
 /// Solves the finest level of `solution.disc` from `solution.x` (empty: from the nested
 /// iteration or zero) and evaluates the solution.
-void solve_finest(CaseSolution& solution, const CaseSpec& spec, bool from_prolongation,
+void solve_finest(CaseSolution& solution, const CaseSpec& spec, bool from_start,
                   const CaseSolveObserver& observer) {
   const auto t0 = Clock::now();
   const Discretization& disc = *solution.disc;
@@ -39,9 +39,9 @@ void solve_finest(CaseSolution& solution, const CaseSpec& spec, bool from_prolon
   if (has_contact(disc.data()) && !contact_layer_is_definite(disc.finest_space(), problem.qp))
     throw IndefiniteSystemError("the contact layer of the FOSLS matrix is not definite");
   SolverOptions options = spec.solver;
-  // A prolongated solution is a better start than the nested iteration would compute again
-  // on all the coarser levels.
-  if (from_prolongation) options.nested = false;
+  // A prolongated (or continued) solution is a better start than the nested iteration would compute
+  // again on all the coarser levels.
+  if (from_start) options.nested = false;
   const LevelHierarchy hierarchy =
       method_info(options.method).needs_hierarchy ? disc.build_level_hierarchy() : LevelHierarchy{};
   const auto t_assembled = Clock::now();
@@ -58,6 +58,7 @@ void solve_finest(CaseSolution& solution, const CaseSpec& spec, bool from_prolon
 std::string stop_before_refining(const CaseSolution& s, const AdaptivitySpec& a, int step,
                                  double first_estimator) {
   if (s.report.cancelled) return "cancelled";
+  if (s.report.time_limited) return "time_limit";
   // Marking from an unconverged iterate would refine where the algebraic error is.
   if (!s.report.converged) return "not_converged";
   if (step >= a.steps) return "steps";
@@ -68,7 +69,7 @@ std::string stop_before_refining(const CaseSolution& s, const AdaptivitySpec& a,
 }  // namespace
 
 CaseSolution solve_case_levels(MeshHierarchy meshes, const ProblemData& data, const CaseSpec& spec,
-                               const CaseSolveObserver& observer) {
+                               const CaseSolveObserver& observer, const Vector* start) {
   CaseSolution solution;
   // A red refinement is two bisections: the generation counts bisections from the coarse mesh.
   BisectionState state = longest_edge_state(meshes.finest(), 2 * (meshes.num_levels() - 1));
@@ -79,9 +80,11 @@ CaseSolution solve_case_levels(MeshHierarchy meshes, const ProblemData& data, co
     solution.disc = std::make_unique<Discretization>(std::move(meshes), data);
     solution.assembly_s += seconds(t0, Clock::now());
     const Discretization& disc = *solution.disc;
+    const bool started = step == 0 && start && start->size() == disc.problem().qp.size();
+    if (started) solution.x = *start;
     if (step > 0) solution.x = prolongate_to_finest(disc, solution.x);
     if (observer.on_step) observer.on_step(step, disc.problem().qp.size());
-    solve_finest(solution, spec, step > 0, observer);
+    solve_finest(solution, spec, step > 0 || started, observer);
 
     const ErrorEstimate estimate = error_estimate(solution.parts);
     const Mesh& finest = disc.meshes().finest();

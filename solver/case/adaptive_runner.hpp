@@ -43,8 +43,8 @@ struct CaseSolution {
   ContactResult contact;
   SolverReport report;  ///< of the last solve
   std::vector<AdaptiveStepRecord> steps;
-  /// Why the adaptive loop stopped: "steps", "max_dofs", "target", "not_converged" or
-  /// "cancelled"; empty without adaptivity.
+  /// Why the adaptive loop stopped: "steps", "max_dofs", "target", "not_converged",
+  /// "time_limit" or "cancelled"; empty without adaptivity.
   std::string stop_reason;
   std::vector<int> generation;  ///< bisections from the coarse mesh, per finest triangle
   double assembly_s = 0.0, solve_s = 0.0;
@@ -57,10 +57,12 @@ struct CaseSolveObserver {
   std::function<void(int step, long long dofs)> on_step;
 };
 
-/// Solves on `meshes` and, when the case asks for it, adapts. Throws IndefiniteSystemError
-/// when the weights make the matrix indefinite.
+/// Solves on `meshes` and, when the case asks for it, adapts. `start`, when given and of the
+/// finest level's size, is the first solve's initial iterate (continuation; no nested
+/// iteration then). Throws IndefiniteSystemError when the weights make the matrix indefinite.
 CaseSolution solve_case_levels(MeshHierarchy meshes, const ProblemData& data, const CaseSpec& spec,
-                               const CaseSolveObserver& observer = {});
+                               const CaseSolveObserver& observer = {},
+                               const Vector* start = nullptr);
 
 /// The result's `adaptivity` object (docs/result-format.md).
 nlohmann::json adaptivity_json(const CaseSolution& solution, const AdaptivitySpec& spec);

@@ -29,6 +29,14 @@ void check_direction(const json& j, const std::string& pointer, RuleChecker& che
                   "no normal of its own (use body_normal)");
 }
 
+/// A rigid-body motion of a plane or circle obstacle, so that an indentation is a case field
+/// (and a sweep parameter) rather than a change of the body's Dirichlet data.
+FieldRule obstacle_displacement_field() {
+  return optional_field("displacement", point_value(), json::array({0, 0}),
+                        "rigid displacement [dx, dy] of the obstacle from where point/center "
+                        "put it; [0, 0.01] moves it 0.01 up, into a body above it");
+}
+
 ObjectRulePtr obstacle_rule(const CaseReadOptions& options) {
   auto r = std::make_shared<ObjectRule>();
   r->title = "an obstacle";
@@ -42,14 +50,16 @@ ObjectRulePtr obstacle_rule(const CaseReadOptions& options) {
        {required_field("point", point_value(), "a point [x, y] on the plane"),
         required_field("normal", point_value(),
                        "the normal [nx, ny] from the obstacle into the body (any non-zero "
-                       "length; it is normalised)")},
+                       "length; it is normalised)"),
+        obstacle_displacement_field()},
        check_plane,
        "the normal is not zero"},
       {"circle",
        "a circle obstacle",
        "a rigid disk; the body lies outside it; the gap is the distance to the circle",
        {required_field("center", point_value(), "the centre [x, y] of the circle"),
-        required_field("radius", number_value(Range::positive()), "the radius of the circle")},
+        required_field("radius", number_value(Range::positive()), "the radius of the circle"),
+        obstacle_displacement_field()},
        {},
        ""},
       {"gap",
@@ -63,6 +73,15 @@ ObjectRulePtr obstacle_rule(const CaseReadOptions& options) {
   return r;
 }
 
+/// [0, null] is a roller; [null, null] would prescribe nothing.
+void check_displacement(const json& j, const std::string& pointer, RuleChecker& checker) {
+  if (!j.contains("displacement") || !checker.usable(j, pointer, {"displacement"})) return;
+  if (j["displacement"][0].is_null() && j["displacement"][1].is_null())
+    checker.error(child_pointer(pointer, "displacement"),
+                  "both components are null, which prescribes nothing; a boundary free in both "
+                  "directions is a neumann condition with traction [0, 0]");
+}
+
 ObjectRulePtr condition_rule(const CaseReadOptions& options) {
   auto r = std::make_shared<ObjectRule>();
   r->title = "a boundary condition";
@@ -74,9 +93,16 @@ ObjectRulePtr condition_rule(const CaseReadOptions& options) {
       {"dirichlet",
        "a dirichlet condition",
        "prescribed displacement",
-       {required_field("displacement", pair, "the prescribed displacement [u_x, u_y]")},
-       {},
-       ""},
+       {required_field(
+           "displacement",
+           tuple_value(
+               one_of_value({scalar_value(options.limits.max_expression_length), null_value()},
+                            "a number, an expression of x and y, or null"),
+               2, "an array of 2 numbers, expressions or null"),
+           "the prescribed displacement [u_x, u_y]; null leaves that component free with zero "
+           "traction (a roller or symmetry plane: [0, null] on a plane x = const)")},
+       check_displacement,
+       "not both components null"},
       {"neumann",
        "a neumann condition",
        "prescribed traction σn",
@@ -99,13 +125,14 @@ ObjectRulePtr condition_rule(const CaseReadOptions& options) {
 Obstacle read_obstacle(const json& j) {
   Obstacle o;
   const std::string type = j["type"];
+  const Point moved = j.contains("displacement") ? read_point(j["displacement"]) : Point::Zero();
   if (type == "plane") {
     o.kind = Obstacle::Kind::kPlane;
-    o.point = read_point(j["point"]);
+    o.point = read_point(j["point"]) + moved;
     o.normal = read_point(j["normal"]).normalized();
   } else if (type == "circle") {
     o.kind = Obstacle::Kind::kCircle;
-    o.center = read_point(j["center"]);
+    o.center = read_point(j["center"]) + moved;
     o.radius = j["radius"].get<double>();
   } else {
     o.kind = Obstacle::Kind::kGap;
@@ -119,7 +146,10 @@ BoundaryCondition read_condition(const json& j) {
   const std::string type = j["type"];
   if (type == "dirichlet") {
     bc.type = BoundaryCondition::Type::kDirichlet;
-    bc.values = read_scalar_pair(j["displacement"]);
+    for (int c = 0; c < 2; ++c) {
+      bc.prescribed[c] = !j["displacement"][c].is_null();
+      if (bc.prescribed[c]) bc.values[c] = read_scalar(j["displacement"][c]);
+    }
   } else if (type == "neumann") {
     bc.type = BoundaryCondition::Type::kNeumann;
     bc.values = read_scalar_pair(j["traction"]);

@@ -1,6 +1,7 @@
 #include "case/case_admission.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cstdio>
 
 #include "case/mesh_factory.hpp"
@@ -47,17 +48,27 @@ std::vector<CaseError> check_against_groups(const CaseSpec& spec,
                                             const CaseLimits& limits) {
   std::vector<CaseError> errors;
   bool dirichlet = false;
+  std::array<bool, 2> held = {false, false};  // some group prescribes u_x, u_y
   for (const auto& [name, bc] : spec.boundary) {
     if (std::find(group_names.begin(), group_names.end(), name) == group_names.end())
       errors.push_back({"/boundary/" + name, "the mesh has no boundary group '" + name +
                                                  "'; its groups are " + quoted_list(group_names)});
     dirichlet |= bc.type == BoundaryCondition::Type::kDirichlet;
+    for (int c = 0; c < 2; ++c)
+      held[c] |= bc.type == BoundaryCondition::Type::kDirichlet && bc.prescribed[c];
   }
   if (!dirichlet)
     errors.push_back({"/boundary",
                       "no group has a dirichlet condition: without one the body can move "
                       "freely (rigid body motions) and the problem has no unique solution; "
                       "fix the displacement on at least one group"});
+  for (int c = 0; dirichlet && c < 2; ++c)
+    if (!held[c])
+      errors.push_back({"/boundary", std::string("no dirichlet group prescribes u_") + "xy"[c] +
+                                         " (each has it null): the body can slide in that "
+                                         "direction (frictionless contact cannot hold it) and "
+                                         "the problem has no unique solution; prescribe u_" +
+                                         "xy"[c] + " on at least one group"});
   if (unknowns_exact && unknowns > limits.max_dofs)
     errors.push_back({"/mesh/refinements",
                       std::to_string(spec.mesh.refinements) + " refinements of this mesh give " +

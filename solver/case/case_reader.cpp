@@ -26,6 +26,9 @@ ObjectRulePtr case_rule(const CaseReadOptions& options) {
       optional_field("adaptivity", object_value(adaptivity_rule(options)), nullptr,
                      "adaptive refinement driven by the functional (absent: uniform refinement "
                      "only)"),
+      optional_field("sweep", object_value(sweep_rule(options)), nullptr,
+                     "a number of the case that takes several values, solved in order with "
+                     "continuation"),
   };
   return r;
 }
@@ -53,6 +56,10 @@ CaseReadResult read_case(const nlohmann::json& j, const CaseReadOptions& options
   if (j.contains("solver")) spec.solver = read_solver_section(j["solver"]);
   if (j.contains("adaptivity"))
     spec.adaptivity = read_adaptivity_section(j["adaptivity"], options.limits);
+  if (j.contains("sweep")) {
+    read_sweep_section(j, options, spec, result.errors);
+    if (!result.errors.empty()) return result;
+  }
   result.spec = std::move(spec);
   return result;
 }

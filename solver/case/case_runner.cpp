@@ -1,5 +1,7 @@
 #include "case/case_runner.hpp"
 
+#include "case/sweep_runner.hpp"
+
 #include <chrono>
 #include <cmath>
 #include <sstream>
@@ -52,7 +54,9 @@ ProblemData problem_data(const CaseSpec& spec, const Mesh& mesh) {
     GroupData& g = d.groups[mesh.group_index(name)];
     switch (bc.type) {
       case BoundaryCondition::Type::kDirichlet:
-        g.role = GroupRole::kDirichlet;
+        g.role = !bc.prescribed[1]   ? GroupRole::kDirichletX
+                 : !bc.prescribed[0] ? GroupRole::kDirichletY
+                                     : GroupRole::kDirichlet;
         break;
       case BoundaryCondition::Type::kNeumann:
         g.role = GroupRole::kNeumann;
@@ -73,11 +77,23 @@ ProblemData problem_data(const CaseSpec& spec, const Mesh& mesh) {
   return d;
 }
 
-CaseException indefinite(const Weights& w) {
+bool has_roller(const CaseSpec& spec) {
+  for (const auto& [name, bc] : spec.boundary)
+    if (bc.type == BoundaryCondition::Type::kDirichlet && !(bc.prescribed[0] && bc.prescribed[1]))
+      return true;
+  return false;
+}
+
+CaseException indefinite(const CaseSpec& spec) {
+  const Weights& w = spec.weights;
   std::ostringstream m;
   m << "the weights c1 = " << w.c1 << ", c2 = " << w.c2 << ", c3 = " << w.c3 << ", c4 = " << w.c4
     << " make the FOSLS matrix indefinite (the contact term c3 is too large relative to c1 and "
        "c2); lower c3 (the default is 0.1) or raise c1 and c2";
+  // A body held only by rollers may keep a rigid rotation: that looks the same to the check.
+  if (has_roller(spec))
+    m << ". With null displacement components, also check that the dirichlet groups leave no "
+         "rigid motion (a rotation needs two points held across it)";
   return CaseException("/weights", m.str());
 }
 
@@ -95,7 +111,9 @@ std::vector<CaseError> validate_case(const nlohmann::json& j, const CaseReadOpti
   }
 }
 
-RunOutput run_case(const CaseSpec& spec, const RunControl& control, const CaseLimits& limits) {
+namespace {
+
+RunOutput run_point(const CaseSpec& spec, const RunControl& control, const CaseLimits& limits) {
   const auto t0 = Clock::now();
   Mesh coarse;
   try {
@@ -116,13 +134,19 @@ RunOutput run_case(const CaseSpec& spec, const RunControl& control, const CaseLi
     observer.solver.cancelled = [&control] {
       return control.cancel->load(std::memory_order_relaxed);
     };
+  // The limit counts the whole run: a user sets it for the answer's latency, not the loop's.
+  if (spec.solver.time_limit_s > 0) {
+    const auto deadline = t0 + std::chrono::duration_cast<Clock::duration>(
+                                   std::chrono::duration<double>(spec.solver.time_limit_s));
+    observer.solver.out_of_time = [deadline] { return Clock::now() >= deadline; };
+  }
   observer.on_step = control.on_step;
   CaseSolution solution;
   try {
-    solution = solve_case_levels(std::move(meshes), data, spec, observer);
+    solution = solve_case_levels(std::move(meshes), data, spec, observer, control.start);
   } catch (const IndefiniteSystemError&) {
     // Positive definiteness failing inside a solver is the user's weights, not a crash.
-    throw indefinite(spec.weights);
+    throw indefinite(spec);
   }
   const Discretization& disc = *solution.disc;
   const AssembledProblem& problem = disc.problem();
@@ -148,7 +172,17 @@ RunOutput run_case(const CaseSpec& spec, const RunControl& control, const CaseLi
   timing.total_s = seconds(t0, t_end);
   out.result = result_json(spec, solution.report, solution.contact, solution.parts, size, timing);
   if (spec.adaptivity) out.result["adaptivity"] = adaptivity_json(solution, *spec.adaptivity);
+  out.solution = std::move(solution.x);
   return out;
+}
+
+}  // namespace
+
+RunOutput run_case(const CaseSpec& spec, const RunControl& control, const CaseLimits& limits) {
+  if (spec.sweep_points.empty()) return run_point(spec, control, limits);
+  return run_sweep(spec, control, [&limits](const CaseSpec& point, const RunControl& c) {
+    return run_point(point, c, limits);
+  });
 }
 
 }  // namespace fosls

@@ -10,6 +10,7 @@
 #include "case/case_error.hpp"
 #include "case/case_reader.hpp"
 #include "case/case_spec.hpp"
+#include "core/box_qp.hpp"
 #include "mesh/gmsh_mesh.hpp"
 #include "solvers/iteration_record.hpp"
 
@@ -28,12 +29,16 @@ struct RunControl {
   bool want_vtu = true;
   /// Limits of the mesher process (gmsh runs in a child process; see mesh/gmsh_mesh.hpp).
   MesherLimits mesher;
+  /// Continuation: the solution of a case on the same mesh to start from (instead of the
+  /// nested iteration); ignored when its size does not match.
+  const Vector* start = nullptr;
 };
 
 struct RunOutput {
   nlohmann::json result;  ///< docs/result-format.md
   std::string vtu;        ///< VTK XML unstructured grid (empty unless want_vtu)
   bool cancelled = false;
+  Vector solution;  ///< the final iterate (unknowns of the QP), for continuation
 };
 
 /// Everything that validation can say about a case JSON, including what needs the coarse mesh
@@ -42,9 +47,10 @@ struct RunOutput {
 std::vector<CaseError> validate_case(const nlohmann::json& j, const CaseReadOptions& options = {},
                                      const MeshingControl& meshing = {});
 
-/// Runs a validated case. Throws CaseException for problems a user caused that only show up
-/// while running (for example weights that make the matrix indefinite). A cancel while the
-/// coarse mesh is made returns at once with `cancelled` set and an empty result.
+/// Runs a validated case; a case with a sweep runs every point in order (sweep_runner.hpp). Throws
+/// CaseException for problems a user caused that only show up while running (for example weights
+/// that make the matrix indefinite). A cancel while the coarse mesh is made returns at once with
+/// `cancelled` set and an empty result.
 RunOutput run_case(const CaseSpec& spec, const RunControl& control = {},
                    const CaseLimits& limits = {});
 

@@ -11,6 +11,7 @@
 #include <nlohmann/json.hpp>
 #include <string>
 
+#include "case/case_error.hpp"
 #include "case/case_limits.hpp"
 #include "case/case_rules.hpp"
 #include "case/case_spec.hpp"
@@ -40,6 +41,11 @@ SolverOptions read_solver_section(const nlohmann::json& j);
 
 ObjectRulePtr adaptivity_rule(const CaseReadOptions& options);
 AdaptivitySpec read_adaptivity_section(const nlohmann::json& j, const CaseLimits& limits);
+ObjectRulePtr sweep_rule(const CaseReadOptions& options);
+/// Reads the case at each value of its sweep into spec.sweep_points; a value that makes the
+/// case invalid is an error at /sweep/values/<i> naming the field and the reason.
+void read_sweep_section(const nlohmann::json& case_json, const CaseReadOptions& options,
+                        CaseSpec& spec, std::vector<CaseError>& errors);
 
 /// [f_x, f_y], [u_x, u_y], ...: two numbers or expressions of x and y.
 ValueRule scalar_pair_value(const CaseReadOptions& options);

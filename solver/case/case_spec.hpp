@@ -8,6 +8,7 @@
 #include <map>
 #include <optional>
 #include <string>
+#include <vector>
 
 #include "mesh/geometry_spec.hpp"
 #include "solvers/solve_loop.hpp"
@@ -57,7 +58,10 @@ struct BoundaryCondition {
   enum class Type { kDirichlet, kNeumann, kContact };
   Type type = Type::kNeumann;
   std::array<Scalar, 2> values;  ///< displacement (Dirichlet) or traction (Neumann)
-  Obstacle obstacle;             ///< contact
+  /// Dirichlet: false for a component given as null, which is free with zero traction (a
+  /// roller or symmetry plane).
+  std::array<bool, 2> prescribed = {true, true};
+  Obstacle obstacle;  ///< contact
   ContactDirection direction = ContactDirection::kBodyNormal;
 };
 
@@ -80,6 +84,12 @@ struct AdaptivitySpec {
   double target = 0.0;
 };
 
+/// A number of the case that takes several values (the case's `sweep`).
+struct SweepSpec {
+  std::string pointer;  ///< JSON pointer into the case
+  std::vector<double> values;
+};
+
 struct CaseSpec {
   std::string name = "case";
   MeshSpec mesh;
@@ -90,6 +100,9 @@ struct CaseSpec {
   Weights weights;
   SolverOptions solver;  ///< the case's `solver` section (method, tolerance, smoothing, ...)
   std::optional<AdaptivitySpec> adaptivity;  ///< absent: uniform refinement only
+  std::optional<SweepSpec> sweep;
+  /// With a sweep: the case at each value, in order (without a sweep of their own).
+  std::vector<CaseSpec> sweep_points;
 };
 
 }  // namespace fosls

@@ -106,7 +106,8 @@ json mesh_json(const MeshSpec& mesh) {
 
 StopReason stop_reason(const SolverReport& report) {
   if (report.converged) return StopReason::kConverged;
-  return report.cancelled ? StopReason::kCancelled : StopReason::kMaxIterations;
+  if (report.cancelled) return StopReason::kCancelled;
+  return report.time_limited ? StopReason::kTimeLimit : StopReason::kMaxIterations;
 }
 
 std::string convergence_message(const SolverReport& report, const SolverOptions& options) {
@@ -115,6 +116,13 @@ std::string convergence_message(const SolverReport& report, const SolverOptions&
       return "";
     case StopReason::kCancelled:
       return "cancelled after " + std::to_string(report.iterations) + " iterations";
+    case StopReason::kTimeLimit:
+      return "not converged: solver.time_limit_s (" + short_number(options.time_limit_s) +
+             " s) ran out after " + std::to_string(report.iterations) +
+             " iterations, with the KKT residual at " + short_number(relative_kkt(report)) +
+             " of its initial value (tolerance " + short_number(options.tolerance) +
+             "). The result is the last iterate: raise solver.time_limit_s, or use a coarser "
+             "mesh or a faster solver.method";
     case StopReason::kMaxIterations:
       break;
   }
@@ -129,7 +137,8 @@ std::string convergence_message(const SolverReport& report, const SolverOptions&
 
 std::vector<std::string> result_warnings(const SolverReport& report, const SolverOptions& options) {
   std::vector<std::string> warnings;
-  if (stop_reason(report) == StopReason::kMaxIterations)
+  if (const StopReason why = stop_reason(report);
+      why == StopReason::kMaxIterations || why == StopReason::kTimeLimit)
     warnings.push_back(convergence_message(report, options));
   if (report.cycle.safeguard_reductions > 0)
     warnings.push_back(

@@ -69,6 +69,28 @@ ObjectRulePtr zone_rule() {
                     "L", "midpoint [x, y] of the edge with the peak pressure")});
 }
 
+ObjectRulePtr sweep_point_rule(ValueRule reasons) {
+  return object_rule(
+      "a sweep point", "sweep_point",
+      {output_field("value", number(), "", "the value of the swept number (its unit)"),
+       output_field("force", point_value(), "S·L", "contact.force at this point"),
+       output_field("peak_pressure", number(), "S", "contact.zone.peak_pressure at this point"),
+       output_field("contact_length", number(), "L", "contact.zone.length at this point"),
+       output_field("converged", boolean_value(), "", "this point converged"),
+       output_field("stop_reason", std::move(reasons), "", "why this point's iteration stopped"),
+       output_field("iterations", count(), "1",
+                    "finest-level iterations of this point (from the previous point's solution)")});
+}
+
+ObjectRulePtr sweep_rule(ValueRule reasons) {
+  return object_rule("the sweep", "sweep",
+                     {output_field("pointer", text(), "", "the case's sweep.pointer"),
+                      output_field("points",
+                                   list_value(object_value(sweep_point_rule(std::move(reasons))),
+                                              "one per value, in order"),
+                                   "", "each point of the sweep")});
+}
+
 ObjectRulePtr contact_rule() {
   ValueRule obstacles =
       map_value(name_value(1000, "the group name"), choice_value({"plane", "circle", "gap"}),
@@ -185,10 +207,12 @@ ObjectRulePtr adaptivity_result_rule() {
        output_field("max_dofs", count(), "1", "adaptivity.max_dofs used"),
        output_field("target", number(), "1", "adaptivity.target used"),
        output_field("stop_reason",
-                    choice_value({"steps", "max_dofs", "target", "not_converged", "cancelled"}), "",
+                    choice_value({"steps", "max_dofs", "target", "not_converged", "time_limit",
+                                  "cancelled"}),
+                    "",
                     "why the loop stopped: the steps were made, the next refinement would exceed "
                     "max_dofs, the estimator reached target (or vanished), a solve did not "
-                    "converge, or the job was cancelled"),
+                    "converge, solver.time_limit_s ran out, or the job was cancelled"),
        output_field("steps", list_value(object_value(adaptive_step_rule()), "one per solve"), "",
                     "every solve of the loop, the last one being the result's")});
 }
@@ -197,8 +221,8 @@ ObjectRulePtr adaptivity_result_rule() {
 
 ObjectRulePtr result_rule() {
   std::vector<std::string> reasons;
-  for (const auto reason :
-       {StopReason::kConverged, StopReason::kMaxIterations, StopReason::kCancelled})
+  for (const auto reason : {StopReason::kConverged, StopReason::kMaxIterations,
+                            StopReason::kTimeLimit, StopReason::kCancelled})
     reasons.push_back(stop_reason_name(reason));
   return object_rule(
       "the result", "result",
@@ -209,7 +233,8 @@ ObjectRulePtr result_rule() {
                     "initial_kkt_residual"),
        output_field("stop_reason", choice_value(reasons), "",
                     "why the iteration stopped: converged, max_iterations (solver.max_iterations "
-                    "reached first) or cancelled"),
+                    "reached first), time_limit (solver.time_limit_s ran out first; the result "
+                    "is the last iterate) or cancelled"),
        output_field("cancelled", boolean_value(), "", "the job was cancelled while solving"),
        output_field("iterations", count(), "1",
                     "iterations on the finest level (the nested iteration's are in "
@@ -252,7 +277,11 @@ ObjectRulePtr result_rule() {
        output_field("timing", object_value(timing_rule()), "", "wall-clock times"),
        optional_field("adaptivity", object_value(adaptivity_result_rule()), nullptr,
                       "the adaptive loop, step by step (only when the case has an adaptivity "
-                      "section; the other fields describe its last step)")});
+                      "section; the other fields describe its last step)"),
+       optional_field("sweep", object_value(sweep_rule(choice_value(reasons))), nullptr,
+                      "a case with a sweep: every point's force and convergence; the other "
+                      "fields are the last point's, except converged and stop_reason, which say "
+                      "whether every point converged (and why the first that did not stopped)")});
 }
 
 const char* stop_reason_name(StopReason reason) {
@@ -261,6 +290,8 @@ const char* stop_reason_name(StopReason reason) {
       return "converged";
     case StopReason::kMaxIterations:
       return "max_iterations";
+    case StopReason::kTimeLimit:
+      return "time_limit";
     case StopReason::kCancelled:
       return "cancelled";
   }

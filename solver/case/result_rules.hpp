@@ -8,7 +8,7 @@
 namespace fosls {
 
 /// Why the iteration stopped.
-enum class StopReason { kConverged, kMaxIterations, kCancelled };
+enum class StopReason { kConverged, kMaxIterations, kTimeLimit, kCancelled };
 const char* stop_reason_name(StopReason reason);
 
 /// The rules of the result JSON of one solve.

@@ -63,6 +63,10 @@ ObjectRulePtr solver_rule() {
                      "stopping tolerance: the KKT residual relative to the initial iterate's"),
       optional_field("max_iterations", integer_value(Range::closed(1, 100000)), s.max_iterations,
                      "iterations before giving up (the result says \"converged\": false)"),
+      optional_field("time_limit_s", number_value(Range::closed(0, 1e7)), s.time_limit_s,
+                     "wall-clock seconds the run may take, meshing and assembly included (0: no "
+                     "limit); the solve then stops at the last iterate with stop_reason "
+                     "time_limit. The service's --max-job-seconds still caps a job"),
       optional_field("smoother", choice_value(smoother_names()),
                      smoother_info(s.multilevel.smoother).name, "the smoother"),
       optional_field("pre_smoothing", smoothing, s.multilevel.pre_smoothing,
@@ -84,6 +88,7 @@ SolverOptions read_solver_section(const json& j) {
   if (j.contains("method")) s.method = find_method(j["method"])->method;
   s.tolerance = j.value("tolerance", s.tolerance);
   s.max_iterations = j.value("max_iterations", s.max_iterations);
+  s.time_limit_s = j.value("time_limit_s", s.time_limit_s);
   if (j.contains("smoother")) s.multilevel.smoother = find_smoother(j["smoother"])->type;
   s.multilevel.pre_smoothing = j.value("pre_smoothing", s.multilevel.pre_smoothing);
   s.multilevel.post_smoothing = j.value("post_smoothing", s.multilevel.post_smoothing);

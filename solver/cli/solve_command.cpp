@@ -124,6 +124,26 @@ void print_summary(const nlohmann::json& r) {
             << " (scaled units)\n";
 }
 
+/// One line per point of a sweep: the curve in the terminal.
+void print_sweep(const nlohmann::json& sweep) {
+  std::cerr << "  sweep of " << sweep["pointer"].get<std::string>() << ":\n"
+            << "    value          F_x            F_y            p_max          width          "
+               "iterations\n";
+  for (const auto& p : sweep["points"]) {
+    std::cerr << "    ";
+    for (const nlohmann::json& v :
+         {p["value"], p["force"][0], p["force"][1], p["peak_pressure"], p["contact_length"]}) {
+      const std::string text = g(v);
+      std::cerr << text << std::string(text.size() < 15 ? 15 - text.size() : 1, ' ');
+    }
+    std::cerr << p["iterations"].get<int>()
+              << (p["converged"].get<bool>()
+                      ? ""
+                      : "  NOT converged (" + p["stop_reason"].get<std::string>() + ")")
+              << '\n';
+  }
+}
+
 /// Reports the outcome and picks the exit code: 0 when converged, 3 when not. Warnings are
 /// printed even with --quiet.
 int report(const nlohmann::json& r, const SolveOptions& o) {
@@ -137,6 +157,7 @@ int report(const nlohmann::json& r, const SolveOptions& o) {
               << g(r["relative_kkt_residual"], 2) << ", tolerance " << g(r["tolerance"], 2)
               << ")\n";
     print_summary(r);
+    if (r.contains("sweep")) print_sweep(r["sweep"]);
   }
   return converged ? kExitOk : kExitNotConverged;
 }

@@ -1,8 +1,24 @@
 #include "fem/fosls_space.hpp"
 
+#include <cmath>
 #include <stdexcept>
 
 namespace fosls {
+
+int prescribed_components(GroupRole role) {
+  switch (role) {
+    case GroupRole::kDirichlet:
+      return 3;
+    case GroupRole::kDirichletX:
+      return 1;
+    case GroupRole::kDirichletY:
+      return 2;
+    case GroupRole::kNeumann:
+    case GroupRole::kContact:
+      break;
+  }
+  return 0;
+}
 
 FoslsSpace::FoslsSpace(const Mesh& mesh, const std::vector<GroupRole>& roles,
                        const std::vector<Point>& vertex_normals)
@@ -15,7 +31,7 @@ FoslsSpace::FoslsSpace(const Mesh& mesh, const std::vector<GroupRole>& roles,
   contact_edge_.assign(ne, 0);
   vertex_normal_.assign(nv, Point::Zero());
 
-  std::vector<char> dirichlet_vertex(nv, 0);
+  std::vector<int> prescribed(nv, 0);  // bit c: u_c is Dirichlet data at the vertex
   std::vector<Point> averaged(nv, Point::Zero());
   std::vector<int> curve_of(nv, -1);
   for (int e = 0; e < ne; ++e) {
@@ -24,8 +40,17 @@ FoslsSpace::FoslsSpace(const Mesh& mesh, const std::vector<GroupRole>& roles,
     const auto& pq = mesh.edge(e);
     switch (roles[g]) {
       case GroupRole::kDirichlet:
-        dirichlet_vertex[pq[0]] = dirichlet_vertex[pq[1]] = 1;
+        prescribed[pq[0]] |= 3;
+        prescribed[pq[1]] |= 3;
         break;
+      case GroupRole::kDirichletX:
+      case GroupRole::kDirichletY: {
+        const int c = roles[g] == GroupRole::kDirichletX ? 0 : 1;
+        prescribed[pq[0]] |= 1 << c;
+        prescribed[pq[1]] |= 1 << c;
+        roles_[sigma_dof(e, 1 - c)] = DofRole::kFixed;  // the free component's traction is 0
+        break;
+      }
       case GroupRole::kNeumann:
         roles_[sigma_dof(e, 0)] = roles_[sigma_dof(e, 1)] = DofRole::kFixed;
         break;
@@ -42,12 +67,16 @@ FoslsSpace::FoslsSpace(const Mesh& mesh, const std::vector<GroupRole>& roles,
     }
   }
   for (int v = 0; v < nv; ++v) {
-    if (dirichlet_vertex[v]) {
+    if (prescribed[v] == 3) {
       contact_vertex_[v] = 0;  // Dirichlet data win over the contact constraint
       roles_[u_dof(v, 0)] = roles_[u_dof(v, 1)] = DofRole::kFixed;
       continue;
     }
-    if (!contact_vertex_[v]) continue;
+    if (!contact_vertex_[v]) {
+      for (int c = 0; c < 2; ++c)
+        if (prescribed[v] & (1 << c)) roles_[u_dof(v, c)] = DofRole::kFixed;
+      continue;
+    }
     Point n = averaged[v].normalized();
     if (!vertex_normals.empty()) {
       n = vertex_normals[v].normalized();
@@ -56,9 +85,20 @@ FoslsSpace::FoslsSpace(const Mesh& mesh, const std::vector<GroupRole>& roles,
       Point radial = (mesh.vertex(v) - mesh.curves()[curve_of[v]].center).normalized();
       n = radial.dot(averaged[v]) >= 0 ? radial : Point(-radial);
     }
+    if (prescribed[v]) {
+      // Where a roller meets the contact boundary (a symmetry plane through the contact zone)
+      // the prescribed axis is the tangent t = (−n_y, n_x): U_t is prescribed and U_n ≤ g
+      // stays. An oblique roller cannot be both; its Dirichlet data win.
+      const int c = prescribed[v] == 1 ? 0 : 1;
+      if (std::abs(n[c]) > 1e-12) {
+        contact_vertex_[v] = 0;
+        roles_[u_dof(v, c)] = DofRole::kFixed;
+        continue;
+      }
+    }
     vertex_normal_[v] = n;
     roles_[u_dof(v, 0)] = DofRole::kNormalU;
-    roles_[u_dof(v, 1)] = DofRole::kFree;
+    roles_[u_dof(v, 1)] = prescribed[v] ? DofRole::kFixed : DofRole::kFree;
   }
 
   std::vector<Eigen::Triplet<double>> q;

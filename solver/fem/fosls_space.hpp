@@ -9,8 +9,13 @@
 
 namespace fosls {
 
-/// Role of a boundary group in the discrete problem.
-enum class GroupRole { kDirichlet, kNeumann, kContact };
+/// Role of a boundary group in the discrete problem. kDirichletX prescribes u_x only: u_y is
+/// free and its traction component t_y = (σn)_y is zero (a roller, or a symmetry plane x =
+/// const); kDirichletY the other way round.
+enum class GroupRole { kDirichlet, kNeumann, kContact, kDirichletX, kDirichletY };
+
+/// The displacement components a role prescribes: bit c for component c (0 for none).
+int prescribed_components(GroupRole role);
 
 /// How a DOF enters the quadratic program.
 enum class DofRole : unsigned char {

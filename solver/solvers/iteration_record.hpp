@@ -22,6 +22,9 @@ struct SolverObserver {
   std::function<void(const IterationRecord&)> on_iteration;
   /// Polled once per iteration; returning true stops the solve (reported as cancelled).
   std::function<bool()> cancelled;
+  /// Polled once per iteration; returning true stops the solve at the last iterate (reported
+  /// as time_limited: the case's solver.time_limit_s ran out).
+  std::function<bool()> out_of_time;
   /// After every fine-level smoother sweep, with J of the current iterate (for tests of the
   /// monotonicity invariant; costs an O(n) energy evaluation per sweep when set).
   std::function<void(double energy)> on_sweep;

@@ -338,6 +338,10 @@ SolverReport solve_with_chain(const BoxQp& qp, const LevelHierarchy& hierarchy,
       report.cancelled = true;
       break;
     }
+    if (observer.out_of_time && observer.out_of_time()) {
+      report.time_limited = true;
+      break;
+    }
     const Vector x_old = x, r_old = r;
     step->iterate(x, r);
     // Recompute the residual so that rounding in the incremental updates cannot accumulate.

@@ -26,6 +26,9 @@ struct SolverOptions {
   MultilevelOptions multilevel;  ///< smoother and smoothing steps are used by pgs and tnnmg too
   double tolerance = 1e-8;       ///< on kkt_k / kkt_0
   int max_iterations = 200;
+  /// Wall-clock seconds the whole run may take (0: no limit), from the start of the run
+  /// (meshing and assembly included); the caller enforces it through SolverObserver::out_of_time.
+  double time_limit_s = 0.0;
   /// Nested iteration (mmg and tnnmg): solve the Galerkin problems of the coarser levels
   /// (coarse obstacles by the same projections) coarsest first, each to `nested_tolerance`,
   /// and start the finest level from the prolongated solution, so that most of the search
@@ -38,6 +41,7 @@ struct SolverOptions {
 struct SolverReport {
   bool converged = false;
   bool cancelled = false;
+  bool time_limited = false;  ///< stopped by SolverObserver::out_of_time
   int iterations = 0;
   double initial_kkt = 0.0;
   double final_kkt = 0.0;

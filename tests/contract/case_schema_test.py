@@ -93,6 +93,12 @@ BOTH_REFUSE = [
     ("plane_point_three", setting("/boundary/bottom/obstacle",
                                   {"type": "plane", "point": [0, 0, 0], "normal": [0, 1]})),
     ("direction_unknown", setting("/boundary/bottom/direction", "sideways")),
+    ("displacement_boolean_component", setting("/boundary/top/displacement", [None, False])),
+    ("gap_obstacle_moved", setting("/boundary/bottom/obstacle/displacement", [0, 0.1])),
+    ("time_limit_negative", setting("/solver/time_limit_s", -1)),
+    ("sweep_without_pointer", setting("/sweep", {"values": [1]})),
+    ("sweep_without_values", setting("/sweep", {"pointer": "/material/mu"})),
+    ("sweep_text_value", setting("/sweep", {"pointer": "/material/mu", "values": ["2"]})),
     ("expression_too_long", setting("/boundary/top/displacement/1", "x" + " " * 1100)),
     ("weights_c1_zero", setting("/weights", {"c1": 0})),
     ("weights_unknown", setting("/weights", {"c5": 1})),
@@ -119,6 +125,10 @@ READER_ONLY = [
                                   {"type": "plane", "point": [0, 0], "normal": [0, 0]})),
     ("obstacle_normal_with_gap", setting("/boundary/bottom/direction", "obstacle_normal")),
     ("mmg_without_smoothing", setting("/solver", {"pre_smoothing": 0, "post_smoothing": 0})),
+    ("displacement_both_null", setting("/boundary/top/displacement", [None, None])),
+    ("sweep_of_the_mesh", setting("/sweep", {"pointer": "/mesh/size", "values": [0.25]})),
+    ("sweep_of_nothing", setting("/sweep", {"pointer": "/solver/tolerance", "values": [1e-6]})),
+    ("sweep_to_an_invalid_value", setting("/sweep", {"pointer": "/material/mu", "values": [1, -1]})),
     ("geometry_index_out_of_range", setting("/mesh", {"geometry": dict(
         GEOMETRY, groups={"bottom": [0], "right": [1], "top": [2], "left": [7]})})),
     ("geometry_curve_in_no_group", setting("/mesh", {"geometry": dict(
@@ -144,6 +154,11 @@ BOTH_ACCEPT = [
         "pre_smoothing": 2, "post_smoothing": 0, "coarse_obstacle": "c"})),
     ("geometry", setting("/mesh", {"geometry": GEOMETRY, "size": 0.5})),
     ("integral_float", setting("/mesh/refinements", 1.0)),
+    ("roller", setting("/boundary/left", {"type": "dirichlet", "displacement": [0, None]})),
+    ("moved_plane", setting("/boundary/bottom/obstacle", {
+        "type": "plane", "point": [0, 0], "normal": [0, 1], "displacement": [0, 0.01]})),
+    ("time_limit", setting("/solver/time_limit_s", 30)),
+    ("sweep", setting("/sweep", {"pointer": "/material/mu", "values": [1, 2]})),
 ]
 
 

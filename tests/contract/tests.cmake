@@ -13,3 +13,9 @@ if(Python3_Interpreter_FOUND)
                    --bin $<TARGET_FILE:fosls-contact> --source ${PROJECT_SOURCE_DIR})
   set_tests_properties(contract_msh_workflow PROPERTIES LABELS unit TIMEOUT 300)
 endif()
+if(Python3_Interpreter_FOUND)
+  add_test(NAME contract_service
+           COMMAND ${Python3_EXECUTABLE} ${CONTRACT_DIR}/service_contract_test.py
+                   --serve $<TARGET_FILE:fosls-serve> --source ${PROJECT_SOURCE_DIR})
+  set_tests_properties(contract_service PROPERTIES LABELS integration TIMEOUT 300)
+endif()

@@ -3,6 +3,7 @@
 // and HTTP tests run without the solver library.
 //
 //   {"mode": "ok", "iterations": N}   reports N iterations, succeeds with {"echo": case}
+//   {"mode": "ok", "converged": false} the same, a result that says it did not converge
 //   {"mode": "fail"}                  fails with a message
 //   {"mode": "throw"}                 throws std::runtime_error
 //   {"mode": "throw_other"}           throws an int
@@ -44,7 +45,12 @@ inline JobRunOutcome fake_job_runner(const nlohmann::json& case_json,
     context.report_progress(JobProgress{i, 1.0 / i, -static_cast<double>(i)});
   }
   out.kind = JobRunOutcome::Kind::kSucceeded;
-  out.result_json = nlohmann::json({{"echo", case_json}, {"iterations", iterations}}).dump();
+  const bool converged = case_json.value("converged", true);
+  out.result_json = nlohmann::json({{"echo", case_json},
+                                    {"iterations", iterations},
+                                    {"converged", converged},
+                                    {"stop_reason", converged ? "converged" : "max_iterations"}})
+                        .dump();
   out.vtu = "<VTKFile type=\"UnstructuredGrid\"/>";
   return out;
 }

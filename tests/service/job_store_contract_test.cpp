@@ -77,9 +77,38 @@ TEST_P(JobStoreContract, SubmitClaimSucceedStoresResultOnce) {
   EXPECT_TRUE(done->finished_at_ms);
   EXPECT_GE(*done->finished_at_ms, *done->started_at_ms);
   EXPECT_EQ(store().result_json(id), R"({"converged":true})");
+  EXPECT_EQ(store().case_json(id), R"({"a":1})");
+  EXPECT_EQ(done->convergence.converged, std::optional<bool>(true));  // read from the result
   EXPECT_EQ(store().vtu(id), vtu);  // stored compressed, served as written
   EXPECT_FALSE(store().result_json(id + 1));
   EXPECT_FALSE(store().vtu(id + 1));
+  EXPECT_FALSE(store().case_json(id + 1));
+}
+
+// --fail-unconverged: the job fails, its result and how the solve stopped are kept, and the
+// listing and the metrics count it.
+TEST_P(JobStoreContract, AFailedJobCanKeepAResultAndItsConvergence) {
+  const auto id = submit("{}");
+  const auto plain = submit("{}");
+  const Lease lease = store().claim_next(claim_as())->lease;
+  SolveRecord record{
+      R"({"converged":false})", "<VTKFile/>", {false, "max_iterations"}, "did not converge"};
+  EXPECT_TRUE(store().complete_with_result(lease, record));
+  const Lease other = store().claim_next(claim_as())->lease;
+  EXPECT_TRUE(store().complete_succeeded(other, R"({"no":"convergence fields"})", ""));
+  const auto job = store().find(id);
+  EXPECT_EQ(job->state, JobState::kFailed);
+  EXPECT_EQ(job->error, "did not converge");
+  EXPECT_EQ(job->convergence.converged, std::optional<bool>(false));
+  EXPECT_EQ(job->convergence.stop_reason, "max_iterations");
+  EXPECT_EQ(store().result_json(id), R"({"converged":false})");
+  EXPECT_EQ(store().vtu(id), "<VTKFile/>");
+  const auto listed = store().list(JobListQuery{});
+  ASSERT_EQ(listed.jobs.size(), 2u);
+  EXPECT_EQ(listed.jobs[1].convergence.stop_reason, "max_iterations");
+  EXPECT_FALSE(listed.jobs[0].convergence.converged);  // a result without the field
+  EXPECT_EQ(listed.jobs[0].id, plain);
+  EXPECT_EQ(store().count_not_converged(), 1);
 }
 
 TEST_P(JobStoreContract, NonFiniteProgressIsStoredAsUnknown) {

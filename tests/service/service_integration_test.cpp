@@ -98,6 +98,8 @@ TEST(ServiceIntegration, HertzRoundTrip) {
   EXPECT_TRUE(done["started_at"].is_string());
   EXPECT_TRUE(done["finished_at"].is_string());
   EXPECT_TRUE(done["error"].is_null());
+  EXPECT_EQ(done["converged"], true);
+  EXPECT_EQ(done["stop_reason"], "converged");
 
   auto result_res = cli.Get((location + "/result").c_str());
   ASSERT_EQ(result_res->status, 200);

@@ -100,11 +100,11 @@ TEST(SqliteJobStore, NewDatabaseRecordsItsVersionAndVacuumsIncrementally) {
   TempDir dir;
   const std::string path = dir.file("jobs.db");
   { SqliteJobStore store(path); }
-  EXPECT_EQ(sql_int(path, "SELECT max(version) FROM schema_migrations"), 2);
-  EXPECT_EQ(sql_int(path, "PRAGMA user_version"), 2);
+  EXPECT_EQ(sql_int(path, "SELECT max(version) FROM schema_migrations"), 3);
+  EXPECT_EQ(sql_int(path, "PRAGMA user_version"), 3);
   EXPECT_EQ(sql_int(path, "PRAGMA auto_vacuum"), 2);  // incremental
   { SqliteJobStore again(path); }                     // opening again changes nothing
-  EXPECT_EQ(sql_int(path, "SELECT count(*) FROM schema_migrations"), 2);
+  EXPECT_EQ(sql_int(path, "SELECT count(*) FROM schema_migrations"), 3);
 }
 
 // A file written by the first release (schema version 1, no auto-vacuum, VTU as text, a job
@@ -129,15 +129,23 @@ CREATE TABLE job_results (
 INSERT INTO jobs (name, state, case_json, body_hash, attempts, created_at, started_at, finished_at)
   VALUES ('old', 'succeeded', '{}', 'h', 1, 1000, 1100, 1200),
          ('interrupted', 'running', '{"b":2}', 'h2', 1, 1000, 1100, NULL);
-INSERT INTO job_results VALUES (1, '{"old":true}', '<VTKFile old="1"/>', 1200);
+INSERT INTO job_results
+  VALUES (1, '{"old":true,"converged":false,"stop_reason":"max_iterations"}',
+          '<VTKFile old="1"/>', 1200);
 PRAGMA user_version = 1;
 )sql");
   ASSERT_EQ(sql_int(path, "PRAGMA auto_vacuum"), 0);
 
   SqliteJobStore store(path);
   EXPECT_EQ(sql_int(path, "PRAGMA auto_vacuum"), 2);  // converted by VACUUM
-  EXPECT_EQ(sql_int(path, "SELECT max(version) FROM schema_migrations"), 2);
-  EXPECT_EQ(store.result_json(1), R"({"old":true})");
+  EXPECT_EQ(sql_int(path, "SELECT max(version) FROM schema_migrations"), 3);
+  EXPECT_EQ(store.result_json(1),
+            R"({"old":true,"converged":false,"stop_reason":"max_iterations"})");
+  // Convergence is copied from results stored before the columns existed.
+  EXPECT_EQ(store.find(1)->convergence.converged, std::optional<bool>(false));
+  EXPECT_EQ(store.find(1)->convergence.stop_reason, "max_iterations");
+  EXPECT_FALSE(store.find(2)->convergence.converged);
+  EXPECT_EQ(store.count_not_converged(), 1);
   EXPECT_EQ(store.vtu(1), R"(<VTKFile old="1"/>)");  // uncompressed rows stay readable
   const RecoveryReport report = store.recover_interrupted(3);
   EXPECT_EQ(report.requeued, std::vector<std::int64_t>{2});

@@ -26,7 +26,7 @@ class CountingStore final : public JobStore {
  public:
   explicit CountingStore(JobStore& inner) : inner_(inner) {}
   std::atomic<int> progress_writes{0};
-  std::atomic<bool> fail_results{false};  ///< complete_succeeded throws, like a full disk
+  std::atomic<bool> fail_results{false};  ///< complete_with_result throws, like a full disk
 
   SubmitOutcome submit(const NewJob& j, std::size_t m) override { return inner_.submit(j, m); }
   std::optional<Job> find(std::int64_t id) override { return inner_.find(id); }
@@ -34,6 +34,7 @@ class CountingStore final : public JobStore {
     return inner_.result_json(id);
   }
   std::optional<std::string> vtu(std::int64_t id) override { return inner_.vtu(id); }
+  std::optional<std::string> case_json(std::int64_t id) override { return inner_.case_json(id); }
   JobPage list(const JobListQuery& q) override { return inner_.list(q); }
   CancelOutcome cancel(std::int64_t id) override { return inner_.cancel(id); }
   DeleteOutcome remove(std::int64_t id) override { return inner_.remove(id); }
@@ -47,9 +48,9 @@ class CountingStore final : public JobStore {
     ++progress_writes;
     inner_.update_progress(l, p);
   }
-  bool complete_succeeded(const Lease& l, const std::string& r, const std::string& v) override {
+  bool complete_with_result(const Lease& l, const SolveRecord& r) override {
     if (fail_results) throw StoreError("string or blob too big");
-    return inner_.complete_succeeded(l, r, v);
+    return inner_.complete_with_result(l, r);
   }
   bool complete_failed(const Lease& l, const std::string& e) override {
     return inner_.complete_failed(l, e);
@@ -60,6 +61,7 @@ class CountingStore final : public JobStore {
   RecoveryReport recover_interrupted(int m) override { return inner_.recover_interrupted(m); }
   int delete_finished_before(std::int64_t t) override { return inner_.delete_finished_before(t); }
   std::map<JobState, std::int64_t> count_by_state() override { return inner_.count_by_state(); }
+  std::int64_t count_not_converged() override { return inner_.count_not_converged(); }
   void ping() override { inner_.ping(); }
 
  private:
@@ -257,6 +259,44 @@ TEST_F(WorkerPoolTest, AResultThatCannotBeStoredFailsTheJobInsteadOfLeavingItRun
   const Job job = wait_state(id, JobState::kFailed);
   EXPECT_NE(job.error.find("could not be stored: string or blob too big"), std::string::npos);
   EXPECT_FALSE(store_.result_json(id));
+}
+
+TEST_F(WorkerPoolTest, AnUnconvergedSolveSucceedsSayingSo) {
+  const auto converged = submit({{"mode", "ok"}});
+  const auto unconverged = submit({{"mode", "ok"}, {"converged", false}});
+  WorkerPool pool(store_, fake_job_runner, log_, metrics_, options(1));
+  pool.start();
+  const Job good = wait_state(converged, JobState::kSucceeded);
+  const Job bad = wait_state(unconverged, JobState::kSucceeded);
+  EXPECT_EQ(good.convergence.converged, std::optional<bool>(true));
+  EXPECT_EQ(good.convergence.stop_reason, "converged");
+  EXPECT_EQ(bad.convergence.converged, std::optional<bool>(false));
+  EXPECT_EQ(bad.convergence.stop_reason, "max_iterations");
+  EXPECT_EQ(store_.count_not_converged(), 1);
+  pool.begin_shutdown();
+  pool.join();
+  const std::string text = metrics_.render(MetricsSnapshot{});
+  EXPECT_NE(text.find("fosls_solves_total{stop_reason=\"max_iterations\"} 1"), std::string::npos)
+      << text;
+  EXPECT_NE(text.find("fosls_solves_total{stop_reason=\"converged\"} 1"), std::string::npos);
+}
+
+TEST_F(WorkerPoolTest, FailUnconvergedFailsTheJobAndKeepsItsResult) {
+  const auto converged = submit({{"mode", "ok"}});
+  const auto unconverged = submit({{"mode", "ok"}, {"converged", false}});
+  WorkerPoolOptions o = options(1);
+  o.fail_unconverged = true;
+  WorkerPool pool(store_, fake_job_runner, log_, metrics_, o);
+  pool.start();
+  wait_state(converged, JobState::kSucceeded);
+  const Job bad = wait_state(unconverged, JobState::kFailed);
+  EXPECT_NE(bad.error.find("without converging (stop_reason max_iterations)"), std::string::npos)
+      << bad.error;
+  EXPECT_NE(bad.error.find("--fail-unconverged"), std::string::npos);
+  EXPECT_EQ(bad.convergence.converged, std::optional<bool>(false));
+  ASSERT_TRUE(store_.result_json(unconverged));
+  EXPECT_EQ(nlohmann::json::parse(*store_.result_json(unconverged))["converged"], false);
+  EXPECT_TRUE(store_.vtu(unconverged));
 }
 
 }  // namespace

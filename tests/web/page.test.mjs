@@ -209,6 +209,7 @@ test('submitting the hertz case shows pressure with the Hertz curve, residuals a
   assert.match(numbers, new RegExp(`DOFs\\s+${result.dofs}`));
   assert.match(numbers, new RegExp(`Iterations\\s+${result.iterations}`));
   assert.match(await page.locator('#mesh-caption').innerText(), /magnified ×\d+/);
+  assert.equal(await page.locator('#sweep-figure').isVisible(), false, 'no sweep, no sweep plot');
 
   // Downloads point at the API and answer.
   for (const [link, type] of [['#download-result', 'application/json'], ['#download-vtu', 'application/xml']]) {
@@ -219,6 +220,39 @@ test('submitting the hertz case shows pressure with the Hertz curve, residuals a
   }
 
   await page.screenshot({ path: join(screenshots, 'job-view.png'), fullPage: true });
+});
+
+test('a solve stopped by max_iterations gets its own badge, not the success colour', async () => {
+  const stopped = JSON.parse(hertzText);
+  stopped.name = 'stopped_hertz';
+  stopped.mesh.refinements = 1;
+  stopped.solver = { method: 'pgs', tolerance: 1e-12, max_iterations: 2 };
+  await setEditorText(JSON.stringify(stopped, null, 2));
+  const row = await submitAndWaitForRow('stopped_hertz');
+  const badge = row.locator('.state-not-converged');
+  await badge.waitFor();
+  assert.equal(await badge.innerText(), 'not converged');
+  assert.match(await badge.getAttribute('title'), /max_iterations/);
+  const colour = (locator) => locator.evaluate((e) => `${getComputedStyle(e).color} on ${getComputedStyle(e).backgroundColor}`);
+  const succeeded = page.locator('#job-table .state-succeeded').first();
+  assert.notEqual(await colour(badge), await colour(succeeded));
+  await page.locator('#job-summary', { hasText: /^Did not converge/ }).waitFor();
+});
+
+test('a sweep shows the force of every point against the swept value', async () => {
+  const swept = JSON.parse(hertzText);
+  swept.name = 'swept_hertz';
+  swept.mesh.refinements = 1;
+  swept.boundary.top.displacement = [0, -0.004];
+  swept.sweep = { pointer: '/boundary/top/displacement/1', values: [-0.004, -0.008, -0.012] };
+  await setEditorText(JSON.stringify(swept, null, 2));
+  const row = await submitAndWaitForRow('swept_hertz');
+  await row.locator('.state-succeeded').waitFor();
+  await page.waitForFunction(() => document.querySelector('#sweep-plot')?.dataset.points === '3');
+  assert.equal(await page.locator('#sweep-figure').isVisible(), true);
+  assert.equal(await page.locator('#sweep-plot').getAttribute('data-unconverged'), '0');
+  await expectPixels('#sweep-plot', '#1f5fbf', 50, 'sweep curve');
+  assert.match(await page.locator('#sweep-note').innerText(), /^3 points of \/boundary\/top\/displacement\/1.*all converged/);
 });
 
 test('an invalid case shows each error next to its field', async () => {

@@ -173,6 +173,17 @@ function progressText(job) {
   return `it ${job.progress.iteration}, KKT ${fmt(job.progress.kkt_residual, 2)}`;
 }
 
+// A solve stopped by max_iterations "succeeded" but its answer is the last iterate, not a
+// converged solution: its badge must not look like a success (docs/web.md).
+function stateBadge(job) {
+  const badge = document.createElement('span');
+  const unconverged = job.converged === false && job.state === 'succeeded';
+  badge.className = `state state-${unconverged ? 'not-converged' : job.state}`;
+  badge.textContent = job.cancel_requested && isActive(job) ? 'cancelling' : unconverged ? 'not converged' : job.state;
+  if (job.converged === false) badge.title = `the solve stopped without converging (${job.stop_reason ?? 'reason unknown'})`;
+  return badge;
+}
+
 function actionButton(label, action, job, describedBy) {
   const b = document.createElement('button');
   b.type = 'button';
@@ -205,10 +216,7 @@ function renderJobs() {
     if (job.id === state.selectedId) view.setAttribute('aria-current', 'true');
     nameCell.append(view);
     const stateCell = document.createElement('td');
-    const badge = document.createElement('span');
-    badge.className = `state state-${job.state}`;
-    badge.textContent = job.cancel_requested && isActive(job) ? 'cancelling' : job.state;
-    stateCell.append(badge);
+    stateCell.append(stateBadge(job));
     const progressCell = document.createElement('td');
     progressCell.className = 'progress';
     progressCell.textContent = progressText(job);
@@ -387,6 +395,8 @@ function showJob(job) {
       summary.className = 'error';
       $('job-error').textContent = job.error ?? 'no reason given';
       $('job-error').hidden = false;
+      // Failed for not converging (--fail-unconverged): the last iterate is kept; show it.
+      if (job.converged === false) loadResult(job);
       break;
     case 'cancelled':
       summary.textContent = 'Cancelled: there is no result.';
@@ -526,12 +536,26 @@ function drawCharts(view) {
       note.textContent = '';
     }
   }
+  drawSweep(view);
   const history = view.result.history ?? [];
   if (history.length) view.charts.push(plots.residualPlot(residualBox, history));
   else {
     residualBox.textContent = 'No iterations were recorded.';
     residualBox.dataset.points = '0';
   }
+}
+
+// A case with a sweep: the force of every point against the swept value (docs/web.md).
+function drawSweep(view) {
+  const sweep = view.result.sweep;
+  $('sweep-figure').hidden = !sweep;
+  const box = $('sweep-plot');
+  box.innerHTML = '';
+  if (!sweep) return;
+  view.charts.push(plots.sweepPlot(box, sweep));
+  const bad = sweep.points.filter((p) => !p.converged).length;
+  $('sweep-note').textContent = `${sweep.points.length} points of ${sweep.pointer}, each started from the previous solution` +
+    (bad ? `; ${bad} did not converge (red).` : '; all converged.');
 }
 
 function drawMeshView(view, { resetMagnification = false } = {}) {

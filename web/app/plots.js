@@ -5,6 +5,8 @@ import { hertzPressure } from './hertz.js';
 
 export const COLOURS = {
   pressure: '#1f5fbf',
+  sweep: '#1f5fbf',
+  unconverged: '#c0392b',
   hertz: '#c0392b',
   kkt: '#1f5fbf',
   correction: '#8e44ad',
@@ -116,5 +118,35 @@ export function residualPlot(container, history, { correction: showCorrection = 
   const data = showCorrection ? [it, kkt, correction] : [it, kkt];
   const chart = responsive(new uPlot(opts, data, container), container);
   container.dataset.points = String(kkt.filter((v) => v !== null).length);
+  return chart;
+}
+
+/**
+ * A sweep's curve: the contact force F_y of each point against the swept value, in order;
+ * points that did not converge are marked in red on a series of their own.
+ */
+export function sweepPlot(container, sweep) {
+  const points = sweep.points ?? [];
+  const value = points.map((p) => p.value);
+  const force = points.map((p) => p.force?.[1] ?? null);
+  const unconverged = points.map((p, i) => (p.converged ? null : force[i]));
+  const opts = {
+    width: fitWidth(container),
+    height: plotHeight,
+    scales: { x: { time: false } },
+    legend: { live: false },
+    series: [
+      { label: sweep.pointer },
+      { label: 'F_y (per unit thickness)', stroke: COLOURS.sweep, width: 2, value: (u, v) => sci(v), points: { show: true, size: 6 } },
+      { label: 'not converged', stroke: COLOURS.unconverged, width: 0, value: (u, v) => sci(v), points: { show: true, size: 9, fill: COLOURS.unconverged } },
+    ],
+    axes: [
+      { label: sweep.pointer, size: 46, values: (u, vals) => vals.map(sci) },
+      { label: 'contact force F_y', size: 64, values: (u, vals) => vals.map(sci) },
+    ],
+  };
+  const chart = responsive(new uPlot(opts, [value, force, unconverged], container), container);
+  container.dataset.points = String(points.length);
+  container.dataset.unconverged = String(unconverged.filter((v) => v !== null).length);
   return chart;
 }

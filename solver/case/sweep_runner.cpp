@@ -1,0 +1,60 @@
+#include "case/sweep_runner.hpp"
+
+namespace fosls {
+
+namespace {
+
+using nlohmann::json;
+
+/// What a force–indentation (or any parameter) curve needs of one point.
+json point_json(double value, const json& r) {
+  const json& contact = r["contact"];
+  return {{"value", value},
+          {"force", contact["force"]},
+          {"peak_pressure", contact["zone"]["peak_pressure"]},
+          {"contact_length", contact["zone"]["length"]},
+          {"converged", r["converged"]},
+          {"stop_reason", r["stop_reason"]},
+          {"iterations", r["iterations"]}};
+}
+
+}  // namespace
+
+RunOutput run_sweep(const CaseSpec& spec, const RunControl& control,
+                    const std::function<RunOutput(const CaseSpec&, const RunControl&)>& run_point) {
+  json points = json::array();
+  RunOutput last;
+  Vector previous;
+  std::string first_failure;  // stop_reason of the first point that did not converge
+  std::vector<std::string> warnings;
+  const std::size_t n = spec.sweep_points.size();
+  for (std::size_t i = 0; i < n; ++i) {
+    RunControl point_control = control;
+    point_control.want_vtu = control.want_vtu && i + 1 == n;  // the last point's only
+    point_control.start = previous.size() ? &previous : nullptr;
+    last = run_point(spec.sweep_points[i], point_control);
+    if (last.cancelled) return last;
+    const double value = spec.sweep->values[i];
+    points.push_back(point_json(value, last.result));
+    if (!last.result["converged"].get<bool>()) {
+      if (first_failure.empty()) first_failure = last.result["stop_reason"];
+      warnings.push_back("sweep point " + std::to_string(i) + " (" + spec.sweep->pointer + " = " +
+                         json(value).dump() + ") did not converge: " +
+                         last.result.value("message", std::string("no message")));
+    }
+    previous = std::move(last.solution);
+  }
+  json& r = last.result;
+  r["name"] = spec.name;
+  r["converged"] = first_failure.empty();
+  r["stop_reason"] = first_failure.empty() ? "converged" : first_failure;
+  if (!first_failure.empty() && !r.contains("message"))
+    r["message"] = std::to_string(warnings.size()) + " of " + std::to_string(n) +
+                   " sweep points did not converge (see warnings and sweep.points)";
+  for (auto& w : warnings) r["warnings"].push_back(std::move(w));
+  r["sweep"] = {{"pointer", spec.sweep->pointer}, {"points", std::move(points)}};
+  last.solution = std::move(previous);
+  return last;
+}
+
+}  // namespace fosls

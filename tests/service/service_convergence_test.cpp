@@ -1,0 +1,121 @@
+// Honest convergence through the real fosls-serve: a solve stopped by solver.max_iterations
+// is visible in the job, the listing and the metrics, and --fail-unconverged fails it while
+// keeping its result; the submitted case can be read back.
+
+#include <gtest/gtest.h>
+
+#include <nlohmann/json.hpp>
+#include <string>
+
+#include "service_fixture.hpp"
+
+namespace fosls::service {
+namespace {
+
+using nlohmann::json;
+using testing::Service;
+using testing::small_case;
+
+/// Stops after two iterations, far from the tolerance.
+json unconverged_case() {
+  json j = small_case(7);
+  j["name"] = "unconverged";
+  j["solver"] = {{"method", "pgs"}, {"tolerance", 1e-12}, {"max_iterations", 2}};
+  return j;
+}
+
+std::string path(std::int64_t id, const std::string& leaf = "") {
+  return "/v1/jobs/" + std::to_string(id) + (leaf.empty() ? "" : "/" + leaf);
+}
+
+TEST(ServiceConvergence, AnUnconvergedSolveSucceedsAndSaysSoEverywhere) {
+  Service svc(1);
+  auto cli = svc.client();
+  const auto good = svc.submit(small_case(1));
+  const auto bad = svc.submit(unconverged_case());
+  const json good_job = svc.wait_state(good, "succeeded");
+  const json bad_job = svc.wait_state(bad, "succeeded");
+  EXPECT_EQ(good_job["converged"], true);
+  EXPECT_EQ(good_job["stop_reason"], "converged");
+  EXPECT_EQ(bad_job["converged"], false);
+  EXPECT_EQ(bad_job["stop_reason"], "max_iterations");
+  EXPECT_TRUE(bad_job["error"].is_null());
+
+  const json listed = json::parse(cli.Get("/v1/jobs")->body);
+  ASSERT_EQ(listed["jobs"].size(), 2u);
+  EXPECT_EQ(listed["jobs"][0]["id"], bad);  // newest first
+  EXPECT_EQ(listed["jobs"][0]["converged"], false);
+  EXPECT_EQ(listed["jobs"][1]["converged"], true);
+
+  const json result = json::parse(cli.Get(path(bad, "result"))->body);
+  EXPECT_EQ(result["converged"], false);
+  EXPECT_EQ(result["iterations"], 2);
+
+  const std::string metrics = cli.Get("/metrics")->body;
+  EXPECT_NE(metrics.find("fosls_jobs_not_converged 1\n"), std::string::npos) << metrics;
+  EXPECT_NE(metrics.find("fosls_solves_total{stop_reason=\"max_iterations\"} 1\n"),
+            std::string::npos);
+  EXPECT_NE(metrics.find("fosls_solves_total{stop_reason=\"converged\"} 1\n"), std::string::npos);
+}
+
+TEST(ServiceConvergence, FailUnconvergedFailsTheJobAndKeepsItsResult) {
+  Service svc(1, {"--fail-unconverged"});
+  auto cli = svc.client();
+  const auto good = svc.submit(small_case(1));
+  const auto bad = svc.submit(unconverged_case());
+  EXPECT_EQ(svc.wait_state(good, "succeeded")["converged"], true);
+  const json failed = svc.wait_state(bad, "failed");
+  EXPECT_EQ(failed["converged"], false);
+  EXPECT_EQ(failed["stop_reason"], "max_iterations");
+  EXPECT_NE(failed["error"].get<std::string>().find("--fail-unconverged"), std::string::npos)
+      << failed;
+  // The last iterate is still there to look at.
+  auto result = cli.Get(path(bad, "result"));
+  ASSERT_EQ(result->status, 200) << result->body;
+  EXPECT_EQ(json::parse(result->body)["stop_reason"], "max_iterations");
+  EXPECT_EQ(cli.Get(path(bad, "solution.vtu"))->status, 200);
+  EXPECT_NE(cli.Get("/metrics")->body.find("fosls_jobs{state=\"failed\"} 1\n"), std::string::npos);
+}
+
+TEST(ServiceConvergence, TheSubmittedCaseCanBeReadBack) {
+  Service svc(1);
+  auto cli = svc.client();
+  const json submitted = unconverged_case();
+  const auto id = svc.submit(submitted);
+  auto res = cli.Get(path(id, "case"));
+  ASSERT_EQ(res->status, 200) << res->body;
+  EXPECT_EQ(res->get_header_value("Content-Type"), "application/json");
+  EXPECT_EQ(json::parse(res->body), submitted);
+  EXPECT_EQ(svc.job(id)["links"]["case"], path(id, "case"));
+  testing::expect_problem(cli.Get(path(id + 100, "case")), 404);
+  testing::expect_problem(cli.Post(path(id, "case"), "{}", "application/json"), 405);
+}
+
+// A sweep runs in the job like any case: the result carries every point, and a point that
+// does not converge makes the job's converged false.
+TEST(ServiceConvergence, ASweepIsSolvedPointByPoint) {
+  Service svc(1);
+  auto cli = svc.client();
+  json swept = small_case(3);
+  swept["name"] = "swept";
+  swept["boundary"]["top"]["displacement"] = {0, -0.02};
+  swept["sweep"] = {{"pointer", "/boundary/top/displacement/1"}, {"values", {-0.02, -0.04}}};
+  const auto id = svc.submit(swept);
+  const json done = svc.wait_state(id, "succeeded");
+  EXPECT_EQ(done["converged"], true);
+  const json result = json::parse(cli.Get(path(id, "result"))->body);
+  ASSERT_EQ(result["sweep"]["points"].size(), 2u);
+  EXPECT_EQ(result["sweep"]["points"][1]["value"], -0.04);
+  EXPECT_GT(result["sweep"]["points"][1]["force"][1].get<double>(),
+            result["sweep"]["points"][0]["force"][1].get<double>());
+
+  // Refused up front, at the value that makes the case invalid.
+  swept["sweep"]["pointer"] = "/material/mu";
+  swept["sweep"]["values"] = {1, 0};
+  auto refused = svc.post(swept);
+  testing::expect_problem(refused, 422);
+  EXPECT_EQ(json::parse(refused->body)["errors"][0]["pointer"], "/sweep/values/1");
+}
+
+}  // namespace
+}  // namespace fosls::service

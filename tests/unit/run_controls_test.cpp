@@ -1,0 +1,157 @@
+// Case fields that steer a run: solver.time_limit_s stops the solve at the last iterate with
+// stop_reason time_limit; an obstacle's rigid displacement is the same indentation as the
+// opposite displacement of the body; rollers (a null displacement component) give the exact
+// uniaxial solution.
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <fstream>
+#include <sstream>
+#include <string>
+
+#include "case/case_reader.hpp"
+#include "case/case_runner.hpp"
+#include "case/result_rules.hpp"
+#include "case/rule_checker.hpp"
+
+namespace fosls {
+namespace {
+
+using nlohmann::json;
+
+json hertz(int refinements) {
+  std::ifstream in(std::string(FOSLS_SOURCE_DIR) + "/solver/examples/hertz.json");
+  std::stringstream text;
+  text << in.rdbuf();
+  json j = json::parse(text.str());
+  j["mesh"]["refinements"] = refinements;
+  return j;
+}
+
+json solve(const json& j) {
+  const CaseReadResult read = read_case(j);
+  EXPECT_TRUE(read.spec) << (read.errors.empty() ? "" : read.errors[0].detail);
+  return read.spec ? run_case(*read.spec).result : json();
+}
+
+TEST(RunControls, TimeLimitStopsAtTheLastIterateAndSaysWhy) {
+  json j = hertz(3);
+  // Projected Gauss–Seidel to an unreachable tolerance would run for hours.
+  j["solver"] = {
+      {"method", "pgs"}, {"tolerance", 1e-15}, {"max_iterations", 100000}, {"time_limit_s", 1.0}};
+  const json r = solve(j);
+  EXPECT_EQ(r["stop_reason"], "time_limit");
+  EXPECT_EQ(r["converged"], false);
+  EXPECT_EQ(r["cancelled"], false);
+  // Meshing and assembly count too: under load the limit may run out before iteration 1.
+  EXPECT_LT(r["iterations"].get<int>(), 100000);
+  ASSERT_TRUE(r.contains("message"));
+  EXPECT_NE(r["message"].get<std::string>().find("solver.time_limit_s (1 s) ran out"),
+            std::string::npos)
+      << r["message"];
+  ASSERT_FALSE(r["warnings"].empty());
+  // The result stays valid for its documented rules (docs/result-format.md).
+  RuleChecker checker(CaseReadOptions{});
+  checker.check_object(r, *result_rule(), "");
+  EXPECT_TRUE(checker.errors().empty()) << checker.errors()[0].pointer;
+}
+
+TEST(RunControls, ATimeLimitIsANonNegativeNumber) {
+  json j = hertz(1);
+  j["solver"]["time_limit_s"] = -1;
+  const CaseReadResult read = read_case(j);
+  ASSERT_FALSE(read.errors.empty());
+  EXPECT_EQ(read.errors[0].pointer, "/solver/time_limit_s");
+}
+
+// With the constraint along the plane's normal the problem is invariant under a rigid
+// translation: the body pressed down by δ and the obstacle lifted by δ give the same stresses.
+TEST(RunControls, MovingTheObstacleEqualsMovingTheBody) {
+  json pressed = hertz(1);
+  pressed["boundary"]["contact"]["direction"] = "obstacle_normal";
+  json lifted = pressed;
+  lifted["boundary"]["top"]["displacement"] = {0, 0};
+  lifted["boundary"]["contact"]["obstacle"]["displacement"] = {0, 0.01};
+  const json a = solve(pressed), b = solve(lifted);
+  ASSERT_EQ(a["converged"], true);
+  ASSERT_EQ(b["converged"], true);
+  const double fa = a["contact"]["force"][1], fb = b["contact"]["force"][1];
+  EXPECT_GT(std::abs(fa), 0.0);
+  EXPECT_NEAR(fb, fa, 1e-5 * std::abs(fa));
+  ASSERT_EQ(a["contact"]["pressure"].size(), b["contact"]["pressure"].size());
+  double peak = 0.0, diff = 0.0;
+  for (std::size_t i = 0; i < a["contact"]["pressure"].size(); ++i) {
+    const double pa = a["contact"]["pressure"][i], pb = b["contact"]["pressure"][i];
+    peak = std::max(peak, std::abs(pa));
+    diff = std::max(diff, std::abs(pa - pb));
+  }
+  EXPECT_LT(diff, 1e-4 * peak);
+  // And without any motion there is no contact force at all.
+  json none = lifted;
+  none["boundary"]["contact"]["obstacle"]["displacement"] = {0, 0};
+  EXPECT_NEAR(solve(none)["contact"]["force"][1].get<double>(), 0.0, 1e-8 * std::abs(fa));
+}
+
+TEST(RunControls, AGapObstacleCannotBeMoved) {
+  json j = hertz(1);
+  j["boundary"]["contact"]["obstacle"] = {{"type", "gap"}, {"g", 0.0}, {"displacement", {0, 0.01}}};
+  const CaseReadResult read = read_case(j);
+  ASSERT_FALSE(read.errors.empty());
+  EXPECT_EQ(read.errors[0].pointer, "/boundary/contact/obstacle/displacement");
+}
+
+/// The unit square on a frictionless plane (contact at y = 0), a roller on the left (u_x = 0,
+/// a symmetry plane), its top pressed down by δ by a roller that leaves u_x free, the right
+/// side free. The exact solution is linear, so P1 × RT0 reproduces it: u_y = −δ y,
+/// u_x = λδ/(λ+2μ) x, and a uniform pressure p = 4μ(λ+μ)/(λ+2μ) δ (4μδ for λ = ∞). Clamping
+/// the top or the left instead would give another answer, so the rollers are tested.
+json uniaxial_case(const json& lambda) {
+  return {{"name", "uniaxial"},
+          {"mesh", {{"builtin", "square"}, {"size", 0.25}, {"refinements", 2}}},
+          {"material", {{"mu", 1}, {"lambda", lambda}}},
+          {"boundary",
+           {{"top", {{"type", "dirichlet"}, {"displacement", {nullptr, -0.01}}}},
+            {"left", {{"type", "dirichlet"}, {"displacement", {0, nullptr}}}},
+            {"right", {{"type", "neumann"}, {"traction", {0, 0}}}},
+            {"bottom",
+             {{"type", "contact"},
+              {"obstacle", {{"type", "plane"}, {"point", {0, 0}}, {"normal", {0, 1}}}}}}}},
+          {"solver", {{"method", "pdas"}, {"tolerance", 1e-12}}}};
+}
+
+TEST(RunControls, RollersGiveTheExactUniaxialSolution) {
+  for (const auto& [lambda, modulus] : {std::pair<json, double>{1.0, 8.0 / 3.0}, {"inf", 4.0}}) {
+    const json r = solve(uniaxial_case(lambda));
+    ASSERT_EQ(r["converged"], true) << lambda;
+    const double p = modulus * 0.01;
+    const auto& pressure = r["contact"]["pressure"];
+    ASSERT_FALSE(pressure.empty());
+    for (const auto& pe : pressure) EXPECT_NEAR(pe.get<double>(), p, 1e-6 * p) << lambda;
+    EXPECT_NEAR(r["contact"]["force"][1].get<double>(), p, 1e-6 * p) << lambda;
+    EXPECT_NEAR(r["contact"]["force"][0].get<double>(), 0.0, 1e-6 * p) << lambda;
+  }
+}
+
+TEST(RunControls, ABodyThatCanSlideIsRefusedBeforeSolving) {
+  json j = uniaxial_case(1.0);
+  j["boundary"].erase("left");  // nothing holds u_x: the body slides on the frictionless plane
+  const auto errors = validate_case(j);
+  ASSERT_EQ(errors.size(), 1u);
+  EXPECT_EQ(errors[0].pointer, "/boundary");
+  EXPECT_NE(errors[0].detail.find("no dirichlet group prescribes u_x"), std::string::npos)
+      << errors[0].detail;
+  EXPECT_TRUE(validate_case(uniaxial_case(1.0)).empty());
+}
+
+TEST(RunControls, ADisplacementWithBothComponentsNullIsRefused) {
+  json j = uniaxial_case(1.0);
+  j["boundary"]["top"]["displacement"] = {nullptr, nullptr};
+  const CaseReadResult read = read_case(j);
+  ASSERT_FALSE(read.errors.empty());
+  EXPECT_EQ(read.errors[0].pointer, "/boundary/top/displacement");
+  EXPECT_NE(read.errors[0].detail.find("neumann"), std::string::npos);
+}
+
+}  // namespace
+}  // namespace fosls
