@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "assembly/patch_blocks.hpp"
 #include "fem/transfer.hpp"
 
 namespace fosls {
@@ -13,16 +14,25 @@ Discretization::Discretization(MeshHierarchy meshes, ProblemData data)
   for (const Mesh& m : meshes_.meshes)
     spaces_.push_back(std::make_unique<FoslsSpace>(m, roles, obstacle_vertex_normals(m, data_)));
   assembler_ = std::make_unique<FoslsAssembler>(*spaces_.back(), data_);
-  problem_ = assembler_->assemble_system();
+  // Eigen 3.4's SparseMatrix has no move assignment: the matrix is swapped in, not copied.
+  AssembledProblem assembled = assembler_->assemble_system();
+  SparseMatrix a;
+  a.swap(assembled.qp.A);
+  problem_ = std::move(assembled);
+  problem_.qp.A.swap(a);
 }
 
-std::vector<std::vector<int>> vertex_patches(const FoslsSpace& space,
+std::vector<std::vector<int>> vertex_patches(const FoslsSpace& space, std::array<int, 2>* split,
                                              const std::vector<char>& selected) {
   const Mesh& mesh = space.mesh();
   const auto vertex_edges = mesh.vertex_edges();
+  const VertexBlocks blocks = two_vertex_blocks(mesh);
   std::vector<std::vector<int>> patches;
   patches.reserve(mesh.num_vertices());
-  for (int v = 0; v < mesh.num_vertices(); ++v) {
+  for (int k = 0; k < mesh.num_vertices(); ++k) {
+    for (int b = 0; b < 2; ++b)
+      if (split && k == blocks.ends[b]) (*split)[b] = static_cast<int>(patches.size());
+    const int v = blocks.order[k];
     if (!selected.empty() && !selected[v]) continue;
     std::vector<int> p;
     for (int c = 0; c < 2; ++c)
@@ -32,6 +42,9 @@ std::vector<std::vector<int>> vertex_patches(const FoslsSpace& space,
         if (int f = space.free_index(space.sigma_dof(e, i)); f >= 0) p.push_back(f);
     if (!p.empty()) patches.push_back(std::move(p));
   }
+  for (int b = 0; b < 2; ++b)
+    if (split && blocks.ends[b] == mesh.num_vertices())
+      (*split)[b] = static_cast<int>(patches.size());
   return patches;
 }
 
@@ -133,10 +146,11 @@ LevelHierarchy Discretization::build_level_hierarchy() const {
     // an intermediate level smooths where it differs from the level below, so that one cycle
     // costs O(N) of the finest level however many bisection levels there are. A uniform
     // level is smoothed everywhere, the finest level always.
+    const bool everywhere = j == coarsest || j + 1 == num_levels();
     level.patches =
-        j == coarsest || j + 1 == num_levels()
-            ? vertex_patches(fine)
-            : vertex_patches(fine, new_vertices_and_neighbours(fine.mesh(), meshes_.maps[j]));
+        vertex_patches(fine, &level.patch_split,
+                       everywhere ? std::vector<char>{}
+                                  : new_vertices_and_neighbours(fine.mesh(), meshes_.maps[j]));
     level.contact_strip = contact_strip(fine);
     if (j == coarsest) continue;
     const FoslsSpace& coarse = *spaces_[j - 1];

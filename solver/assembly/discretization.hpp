@@ -44,9 +44,12 @@ class Discretization {
   AssembledProblem problem_;
 };
 
-/// Vertex patches of a space in its free numbering (docs/method.md §4.1); only those of the
-/// vertices with `selected[v]` set when `selected` is not empty.
+/// Vertex patches of a space in its free numbering (docs/method.md §4.1), in the order of
+/// two_vertex_blocks: two blocks a smoother may sweep at the same time, then the separator;
+/// `split`, when given, receives the ends of the two blocks. Only the patches of the vertices
+/// with `selected[v]` set when `selected` is not empty.
 std::vector<std::vector<int>> vertex_patches(const FoslsSpace& space,
+                                             std::array<int, 2>* split = nullptr,
                                              const std::vector<char>& selected = {});
 
 /// The vertices of a refined mesh that local smoothing visits: the new ones (midpoints) and

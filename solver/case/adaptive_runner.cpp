@@ -8,6 +8,7 @@
 #include "assembly/solution_prolongation.hpp"
 #include "case/solver_methods.hpp"
 #include "core/indefinite_system.hpp"
+#include "core/peak_memory.hpp"
 #include "mesh/bisection.hpp"
 #include "solvers/solve_loop.hpp"
 
@@ -45,6 +46,7 @@ void solve_finest(CaseSolution& solution, const CaseSpec& spec, bool from_start,
   const LevelHierarchy hierarchy =
       method_info(options.method).needs_hierarchy ? disc.build_level_hierarchy() : LevelHierarchy{};
   const auto t_assembled = Clock::now();
+  solution.hierarchy_mib = peak_rss_mib();
   solution.report = solve_box_qp(problem.qp, hierarchy, options, observer.solver, solution.x);
   const auto t_solved = Clock::now();
   solution.assembly_s += seconds(t0, t_assembled);
@@ -79,6 +81,7 @@ CaseSolution solve_case_levels(MeshHierarchy meshes, const ProblemData& data, co
     solution.disc.reset();  // one level set in memory at a time
     solution.disc = std::make_unique<Discretization>(std::move(meshes), data);
     solution.assembly_s += seconds(t0, Clock::now());
+    solution.assembly_mib = peak_rss_mib();
     const Discretization& disc = *solution.disc;
     const bool started = step == 0 && start && start->size() == disc.problem().qp.size();
     if (started) solution.x = *start;

@@ -48,6 +48,8 @@ struct CaseSolution {
   std::string stop_reason;
   std::vector<int> generation;  ///< bisections from the coarse mesh, per finest triangle
   double assembly_s = 0.0, solve_s = 0.0;
+  /// Peak resident set after the last level's assembly and after its level hierarchy.
+  double assembly_mib = 0.0, hierarchy_mib = 0.0;
 };
 
 /// Observers of the loop; every member is optional.

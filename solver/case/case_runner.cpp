@@ -13,6 +13,7 @@
 #include "case/result_json.hpp"
 #include "case/solver_methods.hpp"
 #include "core/indefinite_system.hpp"
+#include "core/peak_memory.hpp"
 #include "post/vtu_writer.hpp"
 
 namespace fosls {
@@ -128,6 +129,8 @@ RunOutput run_point(const CaseSpec& spec, const RunControl& control, const CaseL
   ProblemData data = problem_data(spec, coarse);
   MeshHierarchy meshes = build_mesh_hierarchy(std::move(coarse), spec.mesh.refinements);
   const auto t_mesh = Clock::now();
+  RunMemory memory;
+  memory.mesh_mib = peak_rss_mib();
   CaseSolveObserver observer;
   if (control.on_iteration) observer.solver.on_iteration = control.on_iteration;
   if (control.cancel)
@@ -148,6 +151,8 @@ RunOutput run_point(const CaseSpec& spec, const RunControl& control, const CaseL
     // Positive definiteness failing inside a solver is the user's weights, not a crash.
     throw indefinite(spec);
   }
+  memory.assembly_mib = solution.assembly_mib;
+  memory.hierarchy_mib = solution.hierarchy_mib;
   const Discretization& disc = *solution.disc;
   const AssembledProblem& problem = disc.problem();
   const auto t_solve = Clock::now();
@@ -170,7 +175,9 @@ RunOutput run_point(const CaseSpec& spec, const RunControl& control, const CaseL
   // Estimation and refinement between the solves of an adaptive run count as solving.
   timing.solve_s = seconds(t_mesh, t_solve) - solution.assembly_s;
   timing.total_s = seconds(t0, t_end);
-  out.result = result_json(spec, solution.report, solution.contact, solution.parts, size, timing);
+  memory.peak_mib = peak_rss_mib();
+  out.result =
+      result_json(spec, solution.report, solution.contact, solution.parts, size, timing, memory);
   if (spec.adaptivity) out.result["adaptivity"] = adaptivity_json(solution, *spec.adaptivity);
   out.solution = std::move(solution.x);
   return out;

@@ -217,6 +217,22 @@ ObjectRulePtr adaptivity_result_rule() {
                     "every solve of the loop, the last one being the result's")});
 }
 
+ObjectRulePtr memory_rule() {
+  return object_rule(
+      "the memory", "memory",
+      {output_field("mesh_mib", number(), "MiB", "peak resident set after meshing"),
+       output_field("assembly_mib", number(), "MiB", "after the finest level's assembly"),
+       output_field("hierarchy_mib", number(), "MiB",
+                    "after the level hierarchy (transfers, patches; mmg, tnnmg, pgs)"),
+       output_field("chain_mib", number(), "MiB",
+                    "after the Galerkin matrices of the coarser levels (mmg, tnnmg)"),
+       output_field("setup_mib", number(), "MiB",
+                    "after the solver set-up: nested iteration, smoothers, factorisation analysis"),
+       output_field("peak_mib", number(), "MiB",
+                    "the whole run (the process's peak: in a process that solved before, the "
+                    "larger of both)")});
+}
+
 }  // namespace
 
 ObjectRulePtr result_rule() {
@@ -275,6 +291,8 @@ ObjectRulePtr result_rule() {
        output_field("mesh", object_value(mesh_echo_rule()), "", "the mesh as given"),
        output_field("weights", object_value(weights_echo_rule()), "", "the weights as used"),
        output_field("timing", object_value(timing_rule()), "", "wall-clock times"),
+       output_field("memory", object_value(memory_rule()), "",
+                    "peak resident set of the process at the end of each stage"),
        optional_field("adaptivity", object_value(adaptivity_result_rule()), nullptr,
                       "the adaptive loop, step by step (only when the case has an adaptivity "
                       "section; the other fields describe its last step)"),
