@@ -6,6 +6,7 @@
 #include <cmath>
 #include <sstream>
 
+#include "assembly/contact_weight.hpp"
 #include "case/adaptive_runner.hpp"
 #include "case/case_admission.hpp"
 #include "case/expression.hpp"
@@ -85,17 +86,35 @@ bool has_roller(const CaseSpec& spec) {
   return false;
 }
 
-CaseException indefinite(const CaseSpec& spec) {
+/// `spec` carries the weights as used (c3 chosen when "auto").
+CaseException indefinite(const CaseSpec& spec, const MeshHierarchy& meshes,
+                         const ProblemData& data) {
   const Weights& w = spec.weights;
   std::ostringstream m;
   m << "the weights c1 = " << w.c1 << ", c2 = " << w.c2 << ", c3 = " << w.c3 << ", c4 = " << w.c4
     << " make the FOSLS matrix indefinite (the contact term c3 is too large relative to c1 and "
-       "c2); lower c3 (the default is 0.1) or raise c1 and c2";
+       "c2)";
+  if (w.c3_auto) {
+    m << "; c3 was chosen as half the limit " << w.c3_limit
+      << " computed on a coarser level, and the finest level's limit is lower: set c3 below "
+         "that by hand";
+  } else {
+    const ContactWeightLimit limit = contact_weight_limit(meshes, data);
+    m << "; on this mesh c3 must stay below about " << limit.limit << " (computed on level "
+      << limit.level << ", " << limit.dofs
+      << " unknowns): remove c3 from the case (or give \"auto\") to have it chosen";
+  }
   // A body held only by rollers may keep a rigid rotation: that looks the same to the check.
   if (has_roller(spec))
     m << ". With null displacement components, also check that the dirichlet groups leave no "
          "rigid motion (a rotation needs two points held across it)";
   return CaseException("/weights", m.str());
+}
+
+bool has_contact(const CaseSpec& spec) {
+  for (const auto& [name, bc] : spec.boundary)
+    if (bc.type == BoundaryCondition::Type::kContact) return true;
+  return false;
 }
 
 }  // namespace
@@ -127,10 +146,17 @@ RunOutput run_point(const CaseSpec& spec, const RunControl& control, const CaseL
   if (auto errors = check_against_mesh(spec, coarse, limits); !errors.empty())
     throw CaseException(std::move(errors));
   ProblemData data = problem_data(spec, coarse);
+  const Mesh coarse_mesh = coarse;  // small; for the message of indefinite weights
   MeshHierarchy meshes = build_mesh_hierarchy(std::move(coarse), spec.mesh.refinements);
   const auto t_mesh = Clock::now();
   RunMemory memory;
   memory.mesh_mib = peak_rss_mib();
+  CaseSpec used = spec;  // the case with the weights as used
+  if (has_contact(spec) && spec.weights.c3_auto) {
+    const ContactWeightLimit limit = contact_weight_limit(meshes, data);
+    used.weights.c3_limit = limit.limit;
+    used.weights.c3 = data.weights.c3 = automatic_contact_weight(limit);
+  }
   CaseSolveObserver observer;
   if (control.on_iteration) observer.solver.on_iteration = control.on_iteration;
   if (control.cancel)
@@ -149,7 +175,7 @@ RunOutput run_point(const CaseSpec& spec, const RunControl& control, const CaseL
     solution = solve_case_levels(std::move(meshes), data, spec, observer, control.start);
   } catch (const IndefiniteSystemError&) {
     // Positive definiteness failing inside a solver is the user's weights, not a crash.
-    throw indefinite(spec);
+    throw indefinite(used, build_mesh_hierarchy(coarse_mesh, spec.mesh.refinements), data);
   }
   memory.assembly_mib = solution.assembly_mib;
   memory.hierarchy_mib = solution.hierarchy_mib;
@@ -177,7 +203,7 @@ RunOutput run_point(const CaseSpec& spec, const RunControl& control, const CaseL
   timing.total_s = seconds(t0, t_end);
   memory.peak_mib = peak_rss_mib();
   out.result =
-      result_json(spec, solution.report, solution.contact, solution.parts, size, timing, memory);
+      result_json(used, solution.report, solution.contact, solution.parts, size, timing, memory);
   if (spec.adaptivity) out.result["adaptivity"] = adaptivity_json(solution, *spec.adaptivity);
   out.solution = std::move(solution.x);
   return out;
