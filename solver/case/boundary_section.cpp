@@ -1,5 +1,5 @@
-// The `boundary` section: a condition per boundary group (dirichlet, neumann, contact), and
-// the obstacles of contact conditions. Also the scalars [a, b] that conditions and the body
+// The `boundary` section: a condition per boundary group (dirichlet, neumann, pressure, contact),
+// and the obstacles of contact conditions. Also the scalars [a, b] that conditions and the body
 // force share.
 
 #include "case/case_sections.hpp"
