@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "assembly/patch_blocks.hpp"
 #include "fem/transfer.hpp"
 
 namespace fosls {
@@ -13,15 +14,24 @@ Discretization::Discretization(MeshHierarchy meshes, ProblemData data)
   for (const Mesh& m : meshes_.meshes)
     spaces_.push_back(std::make_unique<FoslsSpace>(m, roles, obstacle_vertex_normals(m, data_)));
   assembler_ = std::make_unique<FoslsAssembler>(*spaces_.back(), data_);
-  problem_ = assembler_->assemble_system();
+  // Eigen 3.4's SparseMatrix has no move assignment: the matrix is swapped in, not copied.
+  AssembledProblem assembled = assembler_->assemble_system();
+  SparseMatrix a;
+  a.swap(assembled.qp.A);
+  problem_ = std::move(assembled);
+  problem_.qp.A.swap(a);
 }
 
-std::vector<std::vector<int>> vertex_patches(const FoslsSpace& space) {
+std::vector<std::vector<int>> vertex_patches(const FoslsSpace& space, std::array<int, 2>* split) {
   const Mesh& mesh = space.mesh();
   const auto vertex_edges = mesh.vertex_edges();
+  const VertexBlocks blocks = two_vertex_blocks(mesh);
   std::vector<std::vector<int>> patches;
   patches.reserve(mesh.num_vertices());
-  for (int v = 0; v < mesh.num_vertices(); ++v) {
+  for (int k = 0; k < mesh.num_vertices(); ++k) {
+    for (int b = 0; b < 2; ++b)
+      if (split && k == blocks.ends[b]) (*split)[b] = static_cast<int>(patches.size());
+    const int v = blocks.order[k];
     std::vector<int> p;
     for (int c = 0; c < 2; ++c)
       if (int f = space.free_index(space.u_dof(v, c)); f >= 0) p.push_back(f);
@@ -30,6 +40,9 @@ std::vector<std::vector<int>> vertex_patches(const FoslsSpace& space) {
         if (int f = space.free_index(space.sigma_dof(e, i)); f >= 0) p.push_back(f);
     if (!p.empty()) patches.push_back(std::move(p));
   }
+  for (int b = 0; b < 2; ++b)
+    if (split && blocks.ends[b] == mesh.num_vertices())
+      (*split)[b] = static_cast<int>(patches.size());
   return patches;
 }
 
@@ -117,7 +130,7 @@ LevelHierarchy Discretization::build_level_hierarchy() const {
     const FoslsSpace& fine = *spaces_[j];
     Level& level = h.levels[j - coarsest];
     level.num_dofs = fine.num_free();
-    level.patches = vertex_patches(fine);
+    level.patches = vertex_patches(fine, &level.patch_split);
     level.contact_strip = contact_strip(fine);
     if (j == coarsest) continue;
     const FoslsSpace& coarse = *spaces_[j - 1];

@@ -44,8 +44,11 @@ class Discretization {
   AssembledProblem problem_;
 };
 
-/// Vertex patches of a space in its free numbering (docs/method.md §4.1).
-std::vector<std::vector<int>> vertex_patches(const FoslsSpace& space);
+/// Vertex patches of a space in its free numbering (docs/method.md §4.1), in the order of
+/// two_vertex_blocks: two blocks a smoother may sweep at the same time, then the separator;
+/// `split`, when given, receives the ends of the two blocks.
+std::vector<std::vector<int>> vertex_patches(const FoslsSpace& space,
+                                             std::array<int, 2>* split = nullptr);
 
 /// Free DOFs of the triangles within `layers` layers of the contact boundary (the strip
 /// smoother's block), sorted; empty without contact. Two layers make the measured iteration

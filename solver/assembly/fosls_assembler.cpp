@@ -7,6 +7,7 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "assembly/assembly_pattern.hpp"
 #include "fem/element_geometry.hpp"
 
 namespace fosls {
@@ -139,17 +140,6 @@ FoslsAssembler::FoslsAssembler(const FoslsSpace& space, const ProblemData& data)
   }
 }
 
-std::array<int, 12> FoslsAssembler::local_dofs(int t) const {
-  const Mesh& mesh = space_.mesh();
-  std::array<int, 12> d;
-  for (int k = 0; k < 3; ++k)
-    for (int c = 0; c < 2; ++c) {
-      d[2 * k + c] = space_.u_dof(mesh.triangle(t)[k], c);
-      d[6 + 2 * k + c] = space_.sigma_dof(mesh.triangle_edge(t, k), c);
-    }
-  return d;
-}
-
 void FoslsAssembler::element_kernel(int t, Local& out) const {
   const FunctionalWeights& w = data_.weights;
   ElementGeometry g(space_.mesh(), t);
@@ -245,50 +235,55 @@ AssembledProblem FoslsAssembler::assemble_system() const {
   for (int d = 0; d < n_full; ++d)
     if (space_.role(d) != DofRole::kFixed) xd[d] = 0.0;
 
+  // Pattern first, values in place (assembly_pattern.hpp): each thread writes only
+  // the columns it owns, visiting their triangles in increasing order (AssemblyPartition).
   const int threads = omp_get_max_threads();
-  std::vector<std::vector<Eigen::Triplet<double>>> triplets(threads);
-  std::vector<Vector> bs(threads, Vector::Zero(n_free));
+  AssemblyPattern pattern = assembly_pattern(space_, threads);
+  SparseMatrix& a = pattern.matrix;
+  const AssemblyPartition& part = pattern.partition;
+  double* values = a.valuePtr();
+  Vector b = Vector::Zero(n_free);
   std::vector<double> cs(threads, 0.0);
-#pragma omp parallel
-  {
-    const int tid = omp_get_thread_num();
-    auto& trip = triplets[tid];
-    Vector& b = bs[tid];
+#pragma omp parallel num_threads(threads)
+  // Each part once, also when the runtime gives fewer threads than asked for.
+  for (int tid = omp_get_thread_num(); tid < threads; tid += omp_get_num_threads()) {
     double& c = cs[tid];
-    trip.reserve(static_cast<std::size_t>(144) * mesh.num_triangles() / threads + 144);
     Local loc;
-#pragma omp for schedule(static)
-    for (int t = 0; t < mesh.num_triangles(); ++t) {
+    for (int t : part.triangles[tid]) {
       element_kernel(t, loc);
       rotate_local(t, loc);
-      const auto dofs = local_dofs(t);
-      c += loc.c;
+      const auto dofs = triangle_dofs(space_, t);
+      std::array<int, 12> free;
+      for (int i = 0; i < 12; ++i) free[i] = space_.free_index(dofs[i]);
+      const bool in_range = t >= part.range_begin[tid] && t < part.range_begin[tid + 1];
+      if (in_range) c += loc.c;
       for (int i = 0; i < 12; ++i) {
-        const int fi = space_.free_index(dofs[i]);
+        const int fi = free[i];
         if (fi >= 0) {
+          if (part.owner[fi] != tid) continue;
           double bi = loc.b[i];
-          for (int j = 0; j < 12; ++j) {
-            const int fj = space_.free_index(dofs[j]);
-            if (fj >= 0)
-              trip.emplace_back(fi, fj, loc.K(i, j));
-            else
-              bi -= loc.K(i, j) * xd[dofs[j]];
-          }
+          for (int j = 0; j < 12; ++j)
+            if (free[j] < 0) bi -= loc.K(i, j) * xd[dofs[j]];
           b[fi] += bi;
-        } else {
+        } else if (in_range) {
           const double xi = xd[dofs[i]];
           c -= loc.b[i] * xi;
           for (int j = 0; j < 12; ++j)
-            if (space_.free_index(dofs[j]) < 0) c += 0.5 * loc.K(i, j) * xi * xd[dofs[j]];
+            if (free[j] < 0) c += 0.5 * loc.K(i, j) * xi * xd[dofs[j]];
         }
+      }
+      for (int j = 0; j < 12; ++j) {
+        const int fj = free[j];
+        if (fj < 0 || part.owner[fj] != tid) continue;
+        for (int i = 0; i < 12; ++i)
+          if (free[i] >= 0) values[entry_position(a, free[i], fj)] += loc.K(i, j);
       }
     }
   }
   // Contact term C3 ⟨u·n − g, σ_nn⟩ on each contact edge: σ_nn = S_n/|e| is constant, u·n and
   // g are linear along the edge, so the term is C3 S_n ((u·n)_p + (u·n)_q − g_p − g_q) / 2.
+  // Its entries couple DOFs of the edge's triangle, so they are in the pattern.
   const double c3 = data_.weights.c3;
-  auto& trip0 = triplets[0];
-  Vector& b0 = bs[0];
   for (int e = 0; e < mesh.num_edges(); ++e) {
     if (!space_.is_contact_edge(e) || c3 == 0.0) continue;
     const int sn = space_.free_index(space_.sigma_dof(e, 0));
@@ -306,29 +301,17 @@ AssembledProblem FoslsAssembler::assemble_system() const {
         if (val == 0.0) continue;
         const int fj = space_.free_index(dof);
         if (fj >= 0) {
-          trip0.emplace_back(sn, fj, val);
-          trip0.emplace_back(fj, sn, val);
+          values[entry_position(a, sn, fj)] += val;
+          values[entry_position(a, fj, sn)] += val;
         } else {
-          b0[sn] -= val * xd[dof];
+          b[sn] -= val * xd[dof];
         }
       }
     }
-    b0[sn] += c3 * gbar;
+    b[sn] += c3 * gbar;
   }
-
-  out.qp.A.resize(n_free, n_free);
-  for (int t = 0; t < threads; ++t) {
-    SparseMatrix part(n_free, n_free);
-    part.setFromTriplets(triplets[t].begin(), triplets[t].end());
-    std::vector<Eigen::Triplet<double>>().swap(triplets[t]);
-    if (t == 0)
-      out.qp.A = std::move(part);
-    else
-      out.qp.A += part;
-  }
-  out.qp.A.makeCompressed();
-  out.qp.b = Vector::Zero(n_free);
-  for (const auto& b : bs) out.qp.b += b;
+  out.qp.A.swap(a);  // Eigen 3.4's SparseMatrix has no move: std::move would copy
+  out.qp.b = std::move(b);
   out.qp.constant = 0.0;
   for (double c : cs) out.qp.constant += c;
 
@@ -372,7 +355,7 @@ FunctionalParts FoslsAssembler::functional(const Vector& x_full) const {
 #pragma omp parallel for reduction(+ : mom, con, asym) schedule(static)
   for (int t = 0; t < mesh.num_triangles(); ++t) {
     ElementGeometry g(mesh, t);
-    const auto dofs = local_dofs(t);
+    const auto dofs = triangle_dofs(space_, t);
     Vec12 xl;
     for (int i = 0; i < 12; ++i) xl[i] = x_cart[dofs[i]];
     const double wq = g.area / 3.0;

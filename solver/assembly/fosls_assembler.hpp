@@ -59,7 +59,6 @@ class FoslsAssembler {
   struct Local;
   void element_kernel(int t, Local& out) const;
   void rotate_local(int t, Local& loc) const;
-  std::array<int, 12> local_dofs(int t) const;
 
   const FoslsSpace& space_;
   const ProblemData& data_;

@@ -14,6 +14,7 @@
 #include "case/result_json.hpp"
 #include "case/solver_methods.hpp"
 #include "core/indefinite_system.hpp"
+#include "core/peak_memory.hpp"
 #include "post/contact_output.hpp"
 #include "post/vtu_writer.hpp"
 #include "solvers/solve_loop.hpp"
@@ -141,7 +142,10 @@ RunOutput run_point(const CaseSpec& spec, const RunControl& control, const CaseL
   ProblemData data = problem_data(spec, coarse);
   MeshHierarchy meshes = build_mesh_hierarchy(std::move(coarse), spec.mesh.refinements);
   const auto t_mesh = Clock::now();
+  RunMemory memory;
+  memory.mesh_mib = peak_rss_mib();
   Discretization disc(std::move(meshes), std::move(data));
+  memory.assembly_mib = peak_rss_mib();
   const auto& problem = disc.problem();
   if (has_contact(spec) && !contact_layer_is_definite(disc.finest_space(), problem.qp))
     throw indefinite(spec);
@@ -150,6 +154,7 @@ RunOutput run_point(const CaseSpec& spec, const RunControl& control, const CaseL
   const LevelHierarchy hierarchy =
       method.needs_hierarchy ? disc.build_level_hierarchy() : LevelHierarchy{};
   const auto t_assembly = Clock::now();
+  memory.hierarchy_mib = peak_rss_mib();
 
   SolverObserver observer;
   if (control.on_iteration) observer.on_iteration = control.on_iteration;
@@ -194,7 +199,8 @@ RunOutput run_point(const CaseSpec& spec, const RunControl& control, const CaseL
   timing.assembly_s = seconds(t_mesh, t_assembly);
   timing.solve_s = seconds(t_assembly, t_solve);
   timing.total_s = seconds(t0, t_end);
-  out.result = result_json(spec, report, contact, parts, size, timing);
+  memory.peak_mib = peak_rss_mib();
+  out.result = result_json(spec, report, contact, parts, size, timing, memory);
   out.solution = std::move(x);
   return out;
 }

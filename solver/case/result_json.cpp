@@ -152,7 +152,7 @@ std::vector<std::string> result_warnings(const SolverReport& report, const Solve
 
 json result_json(const CaseSpec& spec, const SolverReport& report, const ContactResult& contact,
                  const FunctionalParts& functional, const ProblemSize& size,
-                 const RunTiming& timing) {
+                 const RunTiming& timing, const RunMemory& memory) {
   const SolverOptions& options = spec.solver;
   json r;
   r["name"] = spec.name;
@@ -198,6 +198,12 @@ json result_json(const CaseSpec& spec, const SolverReport& report, const Contact
                  {"setup_s", report.setup_s},
                  {"solve_s", timing.solve_s},
                  {"total_s", timing.total_s}};
+  r["memory"] = {{"mesh_mib", memory.mesh_mib},
+                 {"assembly_mib", memory.assembly_mib},
+                 {"hierarchy_mib", memory.hierarchy_mib},
+                 {"chain_mib", report.chain_mib > 0 ? report.chain_mib : memory.hierarchy_mib},
+                 {"setup_mib", report.setup_mib > 0 ? report.setup_mib : memory.hierarchy_mib},
+                 {"peak_mib", memory.peak_mib}};
   return r;
 }
 

@@ -28,6 +28,12 @@ struct RunTiming {
   double mesh_s = 0, assembly_s = 0, solve_s = 0, total_s = 0;
 };
 
+/// Peak resident set of the process (MiB) at the end of each stage of a run, so that a table
+/// shows which stage set the peak (the solver's own stages are in SolverReport).
+struct RunMemory {
+  double mesh_mib = 0, assembly_mib = 0, hierarchy_mib = 0, peak_mib = 0;
+};
+
 StopReason stop_reason(const SolverReport& report);
 
 /// Why a solve stopped without converging, with the numbers and what to change; empty when it
@@ -40,6 +46,7 @@ std::vector<std::string> result_warnings(const SolverReport& report, const Solve
 /// The whole result JSON.
 nlohmann::json result_json(const CaseSpec& spec, const SolverReport& report,
                            const ContactResult& contact, const FunctionalParts& functional,
-                           const ProblemSize& size, const RunTiming& timing);
+                           const ProblemSize& size, const RunTiming& timing,
+                           const RunMemory& memory);
 
 }  // namespace fosls

@@ -178,6 +178,22 @@ ObjectRulePtr timing_rule() {
        output_field("total_s", number(), "s", "the whole run")});
 }
 
+ObjectRulePtr memory_rule() {
+  return object_rule(
+      "the memory", "memory",
+      {output_field("mesh_mib", number(), "MiB", "peak resident set after meshing"),
+       output_field("assembly_mib", number(), "MiB", "after the finest level's assembly"),
+       output_field("hierarchy_mib", number(), "MiB",
+                    "after the level hierarchy (transfers, patches; mmg, tnnmg, pgs)"),
+       output_field("chain_mib", number(), "MiB",
+                    "after the Galerkin matrices of the coarser levels (mmg, tnnmg)"),
+       output_field("setup_mib", number(), "MiB",
+                    "after the solver set-up: nested iteration, smoothers, factorisation analysis"),
+       output_field("peak_mib", number(), "MiB",
+                    "the whole run (the process's peak: in a process that solved before, the "
+                    "larger of both)")});
+}
+
 }  // namespace
 
 ObjectRulePtr result_rule() {
@@ -236,6 +252,8 @@ ObjectRulePtr result_rule() {
        output_field("mesh", object_value(mesh_echo_rule()), "", "the mesh as given"),
        output_field("weights", object_value(weights_echo_rule()), "", "the weights as used"),
        output_field("timing", object_value(timing_rule()), "", "wall-clock times"),
+       output_field("memory", object_value(memory_rule()), "",
+                    "peak resident set of the process at the end of each stage"),
        optional_field("sweep", object_value(sweep_rule(choice_value(reasons))), nullptr,
                       "a case with a sweep: every point's force and convergence; the other "
                       "fields are the last point's, except converged and stop_reason, which say "

@@ -4,6 +4,8 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <omp.h>
+
 #include <cmath>
 #include <cstdio>
 #include <fstream>
@@ -30,6 +32,7 @@ struct BenchOptions {
   double tolerance = 1e-8;
   int max_iterations = 500;
   std::string json_path;
+  std::string threads;  ///< comma-separated thread counts; empty: the process's default
 };
 
 std::vector<std::string> split(const std::string& s) {
@@ -41,15 +44,30 @@ std::vector<std::string> split(const std::string& s) {
   return out;
 }
 
+}  // namespace
+}  // namespace fosls
+
+// OpenBLAS (under CHOLMOD) keeps its own thread count; declared weak so that the bench still
+// links where CHOLMOD uses another BLAS.
+extern "C" void openblas_set_num_threads(int) __attribute__((weak));
+
+namespace fosls {
+namespace {
+
 /// Runs one configuration in a child process, so that its peak memory is its own; the child
-/// writes one JSON line to the pipe.
-nlohmann::json run_isolated(const nlohmann::json& case_json) {
+/// writes one JSON line to the pipe. `threads` > 0 sets the OpenMP and OpenBLAS thread counts
+/// of the child.
+nlohmann::json run_isolated(const nlohmann::json& case_json, int threads) {
   int fd[2];
   if (pipe(fd) != 0) return {{"error", "pipe failed"}};
   std::fflush(nullptr);
   const pid_t pid = fork();
   if (pid == 0) {
     close(fd[0]);
+    if (threads > 0) {
+      omp_set_num_threads(threads);
+      if (openblas_set_num_threads) openblas_set_num_threads(threads);
+    }
     nlohmann::json row;
     try {
       CaseReadResult read = read_case(case_json, {});
@@ -70,6 +88,9 @@ nlohmann::json run_isolated(const nlohmann::json& case_json) {
                                r["timing"]["setup_s"].get<double>()},
                {"solve_s",
                 r["timing"]["solve_s"].get<double>() - r["timing"]["setup_s"].get<double>()},
+               {"total_s", r["timing"]["total_s"]},
+               {"threads", omp_get_max_threads()},
+               {"memory", r["memory"]},
                // The physical answer per level, so that a mesh-convergence study is one command.
                {"force", r["contact"]["force"]},
                {"peak_pressure", r["contact"]["zone"]["peak_pressure"]},
@@ -114,6 +135,33 @@ std::string unknown_name(const std::vector<std::string>& names, Find find, const
   return out;
 }
 
+/// Adds to every row the ratios of its total time and peak memory to those of the pdas row
+/// with the same level and thread count, and prints them as a second table.
+void print_against_pdas(nlohmann::json& rows) {
+  auto same_run = [](const nlohmann::json& a, const nlohmann::json& b) {
+    return a["level"] == b["level"] && a.value("threads", 0) == b.value("threads", 0);
+  };
+  bool header = false;
+  for (auto& row : rows) {
+    if (row.contains("error") || row["method"] == "pdas") continue;
+    for (const auto& direct : rows) {
+      if (direct["method"] != "pdas" || direct.contains("error") || !same_run(row, direct))
+        continue;
+      row["time_vs_pdas"] = row["total_s"].get<double>() / direct["total_s"].get<double>();
+      row["memory_vs_pdas"] = row["peak_mib"].get<double>() / direct["peak_mib"].get<double>();
+      if (!header)
+        std::printf("\n%-5s %-6s %-6s %-3s %3s %12s %12s\n", "level", "method", "smooth", "obs",
+                    "thr", "time/pdas", "memory/pdas");
+      header = true;
+      std::printf("%-5d %-6s %-6s %-3s %3d %12.3f %12.3f\n", row["level"].get<int>(),
+                  row["method"].get<std::string>().c_str(),
+                  row["smoother"].get<std::string>().c_str(),
+                  row["coarse_obstacle"].get<std::string>().c_str(), row["threads"].get<int>(),
+                  row["time_vs_pdas"].get<double>(), row["memory_vs_pdas"].get<double>());
+    }
+  }
+}
+
 int run_bench(const BenchOptions& o) {
   nlohmann::json base;
   bool found = false;
@@ -142,9 +190,20 @@ int run_bench(const BenchOptions& o) {
     std::cerr << "error: --levels: need 1 <= A <= B <= 12\n";
     return kExitBadInput;
   }
-  std::printf("%-5s %9s %-6s %-6s %-3s %6s %5s %8s %9s %9s %9s %11s %11s %10s %10s\n", "level",
-              "dofs", "method", "smooth", "obs", "iters", "conv", "rate", "setup_s", "solve_s",
-              "peak_MiB", "|F|", "p_max", "width", "J^1/2");
+  std::vector<int> thread_counts;
+  for (const auto& t : split(o.threads)) {
+    int n = 0;
+    if (std::sscanf(t.c_str(), "%d", &n) != 1 || n < 1 || n > 256) {
+      std::cerr << "error: --threads: expected thread counts like 1,2, got \"" << t << "\"\n";
+      return kExitBadInput;
+    }
+    thread_counts.push_back(n);
+  }
+  if (thread_counts.empty()) thread_counts.push_back(0);  // the process's default
+  std::printf(
+      "%-5s %9s %-6s %-6s %-3s %3s %6s %5s %8s %9s %9s %9s %9s %9s %9s %11s %11s %10s %10s\n",
+      "level", "dofs", "method", "smooth", "obs", "thr", "iters", "conv", "rate", "setup_s",
+      "solve_s", "total_s", "asm_MiB", "chain_MiB", "peak_MiB", "|F|", "p_max", "width", "J^1/2");
   nlohmann::json rows = nlohmann::json::array();
   bool all_ok = true;
   const auto methods = split(o.methods), smoothers = split(o.smoothers),
@@ -158,51 +217,56 @@ int run_bench(const BenchOptions& o) {
     return kExitBadInput;
   }
   for (int level = first; level <= last; ++level)
-    for (const auto& method : methods)
-      for (const auto& smoother : smoothers)
-        for (const auto& obstacle : obstacles) {
-          // Options a method does not use give no new row.
-          const MethodInfo& info = *find_method(method);
-          const bool uses_smoother = uses_option(info, SolverOption::kSmoother);
-          const bool uses_obstacle = uses_option(info, SolverOption::kCoarseObstacle);
-          if ((!uses_smoother && smoother != smoothers[0]) ||
-              (!uses_obstacle && obstacle != obstacles[0]))
-            continue;
-          nlohmann::json c = base;
-          c["mesh"]["refinements"] = level - 1;
-          c["solver"]["method"] = method;
-          c["solver"]["smoother"] = smoother;
-          c["solver"]["coarse_obstacle"] = obstacle;
-          c["solver"]["tolerance"] = o.tolerance;
-          c["solver"]["max_iterations"] = o.max_iterations;
-          nlohmann::json row = run_isolated(c);
-          row["level"] = level;
-          row["method"] = method;
-          row["smoother"] = uses_smoother ? smoother : "-";
-          row["coarse_obstacle"] = uses_obstacle ? obstacle : "-";
-          if (row.contains("error")) {
-            all_ok = false;
-            std::printf("%-5d %9s %-6s %-6s %-3s error: %s\n", level, "-", method.c_str(),
-                        row["smoother"].get<std::string>().c_str(),
-                        row["coarse_obstacle"].get<std::string>().c_str(),
-                        row["error"].get<std::string>().c_str());
-          } else {
-            const double force =
-                std::hypot(row["force"][0].get<double>(), row["force"][1].get<double>());
-            std::printf(
-                "%-5d %9lld %-6s %-6s %-3s %6d %5s %8.4f %9.3f %9.3f %9.1f %11.5g %11.5g %10.4g "
-                "%10.3g\n",
-                level, row["dofs"].get<long long>(), method.c_str(),
-                row["smoother"].get<std::string>().c_str(),
-                row["coarse_obstacle"].get<std::string>().c_str(), row["iterations"].get<int>(),
-                row["converged"].get<bool>() ? "yes" : "no", row["rate"].get<double>(),
-                row["setup_s"].get<double>(), row["solve_s"].get<double>(),
-                row["peak_mib"].get<double>(), force, row["peak_pressure"].get<double>(),
-                row["contact_width"].get<double>(), row["estimator"].get<double>());
+    for (const int threads : thread_counts)
+      for (const auto& method : methods)
+        for (const auto& smoother : smoothers)
+          for (const auto& obstacle : obstacles) {
+            // Options a method does not use give no new row.
+            const MethodInfo& info = *find_method(method);
+            const bool uses_smoother = uses_option(info, SolverOption::kSmoother);
+            const bool uses_obstacle = uses_option(info, SolverOption::kCoarseObstacle);
+            if ((!uses_smoother && smoother != smoothers[0]) ||
+                (!uses_obstacle && obstacle != obstacles[0]))
+              continue;
+            nlohmann::json c = base;
+            c["mesh"]["refinements"] = level - 1;
+            c["solver"]["method"] = method;
+            c["solver"]["smoother"] = smoother;
+            c["solver"]["coarse_obstacle"] = obstacle;
+            c["solver"]["tolerance"] = o.tolerance;
+            c["solver"]["max_iterations"] = o.max_iterations;
+            nlohmann::json row = run_isolated(c, threads);
+            row["level"] = level;
+            row["method"] = method;
+            row["smoother"] = uses_smoother ? smoother : "-";
+            row["coarse_obstacle"] = uses_obstacle ? obstacle : "-";
+            if (row.contains("error")) {
+              all_ok = false;
+              std::printf("%-5d %9s %-6s %-6s %-3s error: %s\n", level, "-", method.c_str(),
+                          row["smoother"].get<std::string>().c_str(),
+                          row["coarse_obstacle"].get<std::string>().c_str(),
+                          row["error"].get<std::string>().c_str());
+            } else {
+              const double force =
+                  std::hypot(row["force"][0].get<double>(), row["force"][1].get<double>());
+              std::printf(
+                  "%-5d %9lld %-6s %-6s %-3s %3d %6d %5s %8.4f %9.3f %9.3f %9.3f %9.1f %9.1f %9.1f "
+                  "%11.5g %11.5g %10.4g %10.3g\n",
+                  level, row["dofs"].get<long long>(), method.c_str(),
+                  row["smoother"].get<std::string>().c_str(),
+                  row["coarse_obstacle"].get<std::string>().c_str(), row["threads"].get<int>(),
+                  row["iterations"].get<int>(), row["converged"].get<bool>() ? "yes" : "no",
+                  row["rate"].get<double>(), row["setup_s"].get<double>(),
+                  row["solve_s"].get<double>(), row["total_s"].get<double>(),
+                  row["memory"]["assembly_mib"].get<double>(),
+                  row["memory"]["chain_mib"].get<double>(), row["peak_mib"].get<double>(), force,
+                  row["peak_pressure"].get<double>(), row["contact_width"].get<double>(),
+                  row["estimator"].get<double>());
+            }
+            std::fflush(stdout);
+            rows.push_back(row);
           }
-          std::fflush(stdout);
-          rows.push_back(row);
-        }
+  print_against_pdas(rows);
   if (!o.json_path.empty()) std::ofstream(o.json_path) << rows.dump(2) << '\n';
   return all_ok ? kExitOk : kExitInternal;
 }
@@ -223,6 +287,9 @@ void add_bench_command(CLI::App& app, int& exit_code) {
   cmd->add_option("--tolerance", o->tolerance, "Relative KKT tolerance");
   cmd->add_option("--max-iterations", o->max_iterations, "Iteration cap per run");
   cmd->add_option("--json", o->json_path, "Also write the rows as JSON to this file");
+  cmd->add_option("--threads", o->threads,
+                  "Comma-separated thread counts (OpenMP and OpenBLAS) to run each "
+                  "configuration with, e.g. 1,2; default: the environment's");
   cmd->callback([o, &exit_code] { exit_code = run_bench(*o); });
 }
 

@@ -33,6 +33,9 @@ struct Level {
   SparseMatrix prolongation;
   /// DOFs of each vertex patch: the vertex's u DOFs and both σ rows on every edge through it.
   std::vector<std::vector<int>> patches;
+  /// Patches [0, patch_split[0]) and [patch_split[0], patch_split[1]) share no entry of x or
+  /// of the residual: a sweep may run them on two threads, then the rest (the separator).
+  std::array<int, 2> patch_split = {0, 0};
   /// Relation of the contact DOFs of level j−1 to those of level j.
   std::vector<ContactLink> links;
   /// DOFs of the triangles touching the contact boundary: the block of the strip smoother.

@@ -4,6 +4,8 @@
 #include <algorithm>
 #include <chrono>
 
+#include "solvers/galerkin_product.hpp"
+
 namespace fosls {
 
 namespace {
@@ -47,13 +49,10 @@ GalerkinChain galerkin_chain(const SparseMatrix& A, const LevelHierarchy& hierar
   const int top = hierarchy.num_levels() - 1;
   GalerkinChain c;
   c.matrices.resize(std::max(top, 0));
-  c.ap.resize(top + 1);
   for (int j = top; j >= 1; --j) {
-    const SparseMatrix& p = hierarchy.levels[j].prolongation;
-    const SparseMatrix ap = (j == top ? A : c.matrices[j]) * p;
-    c.matrices[j - 1] = SparseMatrix(p.transpose()) * ap;
-    c.matrices[j - 1].makeCompressed();
-    c.ap[j] = ap;
+    SparseMatrix coarse =
+        galerkin_product(j == top ? A : c.matrices[j], hierarchy.levels[j].prolongation);
+    c.matrices[j - 1].swap(coarse);  // no move in Eigen 3.4: swapped, not copied
   }
   return c;
 }
@@ -153,7 +152,6 @@ SparseMatrix MultilevelCycle::truncated_galerkin() {
   // active set.
   const int top = hierarchy_.num_levels() - 1;
   const SparseMatrix& full = chain_->matrices[top - 1];
-  const RowMajorMatrix& ap_rows = chain_->ap[top];
   SparseMatrix f = truncated_prolongations_[top] - hierarchy_.levels[top].prolongation;
   f.prune(0.0);
   if (f.nonZeros() == 0) return full;
@@ -167,11 +165,14 @@ SparseMatrix MultilevelCycle::truncated_galerkin() {
   for (int col = 0; col < f.outerSize(); ++col)
     for (SparseMatrix::InnerIterator it(f, col); it; ++it)
       tf.emplace_back(local[it.row()], col, it.value());
+  // Rows `rows` of A P: row k of A is its column k (A is symmetric), times the rows of P.
+  const RowMajorMatrix p_rows = hierarchy_.levels[top].prolongation;
   for (int k = 0; k < m; ++k) {
-    for (RowMajorMatrix::InnerIterator it(ap_rows, rows[k]); it; ++it)
-      tap.emplace_back(k, static_cast<int>(it.col()), it.value());
-    for (SparseMatrix::InnerIterator it(qp_.A, rows[k]); it; ++it)
+    for (SparseMatrix::InnerIterator it(qp_.A, rows[k]); it; ++it) {
+      for (RowMajorMatrix::InnerIterator pt(p_rows, static_cast<int>(it.row())); pt; ++pt)
+        tap.emplace_back(k, static_cast<int>(pt.col()), it.value() * pt.value());
       if (int l = local[it.row()]; l >= 0) taa.emplace_back(l, k, it.value());
+    }
   }
   SparseMatrix rf(m, nc), rap(m, nc), aff(m, m);
   rf.setFromTriplets(tf.begin(), tf.end());
@@ -193,7 +194,8 @@ void MultilevelCycle::rebuild_coarse_levels() {
     s.patch.reset();
     s.point.reset();
     if (options_.smoother == SmootherType::kPatch)
-      s.patch = std::make_unique<PatchSmoother>(matrix(j), hierarchy_.levels[j].patches);
+      s.patch = std::make_unique<PatchSmoother>(matrix(j), hierarchy_.levels[j].patches,
+                                                hierarchy_.levels[j].patch_split);
     else
       s.point = std::make_unique<PointSmoother>(matrix(j));
     s.strip.reset();
@@ -208,11 +210,11 @@ void MultilevelCycle::rebuild_coarse_levels() {
     if (!truncating) {
       a = chain_->matrices[j];
     } else if (j == top - 1) {
-      a = truncated_galerkin();
+      SparseMatrix truncated = truncated_galerkin();
+      a.swap(truncated);
     } else {
-      const SparseMatrix& p = prolongation(j + 1);
-      const SparseMatrix ap = matrix(j + 1) * p;
-      a = SparseMatrix(p.transpose()) * ap;
+      SparseMatrix coarse = galerkin_product(matrix(j + 1), prolongation(j + 1));
+      a.swap(coarse);
     }
     // A coarse DOF whose basis function was truncated away entirely has an empty row and
     // column; a unit diagonal keeps the level definite and its correction (with zero

@@ -50,12 +50,13 @@ struct CycleStatistics {
 
 using RowMajorMatrix = Eigen::SparseMatrix<double, Eigen::RowMajor, int>;
 
-/// The untruncated Galerkin matrices A_j = P_{j+1}ᵀ A_{j+1} P_{j+1} of every coarser level and
-/// the products A_j P_j (row-major, for the truncation corrections), computed once per solve
-/// and shared by the nested iteration, the cycles of every level and the definiteness check.
+/// The untruncated Galerkin matrices A_j = P_{j+1}ᵀ A_{j+1} P_{j+1} of every coarser level,
+/// computed once per solve and shared by the nested iteration, the cycles of every level and
+/// the definiteness check. The products A_j P_j are not kept: the truncation corrections need
+/// only the few rows of A P at the contact boundary, recomputed from A and P per rebuild (kept,
+/// the finest A P was the largest matrix of a solve, ≈ 1.5 × A).
 struct GalerkinChain {
   std::vector<SparseMatrix> matrices;  ///< A_0 … A_{J−1} (A_J is the problem's own matrix)
-  std::vector<RowMajorMatrix> ap;      ///< ap[j] = A_j P_j for j ≥ 1 (ap[0] empty)
 };
 GalerkinChain galerkin_chain(const SparseMatrix& A, const LevelHierarchy& hierarchy);
 

@@ -28,23 +28,48 @@ void PointSmoother::sweep(Vector& x, Vector& r, const Vector& lo, const Vector& 
   }
 }
 
-PatchSmoother::PatchSmoother(const SparseMatrix& A, const std::vector<std::vector<int>>& patches)
-    : A_(A), patches_(patches) {
+namespace {
+
+/// Solves L Lᵀ y = y in place for L lower triangular, packed by columns (column b holds rows
+/// b … m−1).
+void solve_packed_cholesky(const double* l, int m, Vector& y) {
+  // Column b starts at b·m − b(b−1)/2.
+  auto column = [m](int b) { return b * m - b * (b - 1) / 2; };
+  for (int b = 0; b < m; ++b) {
+    const double* c = l + column(b);
+    y[b] /= c[0];
+    for (int a = b + 1; a < m; ++a) y[a] -= c[a - b] * y[b];
+  }
+  for (int b = m - 1; b >= 0; --b) {
+    const double* c = l + column(b);
+    double s = y[b];
+    for (int a = b + 1; a < m; ++a) s -= c[a - b] * y[a];
+    y[b] = s / c[0];
+  }
+}
+
+}  // namespace
+
+PatchSmoother::PatchSmoother(const SparseMatrix& A, const std::vector<std::vector<int>>& patches,
+                             std::array<int, 2> split)
+    : A_(A), patches_(patches), split_(split) {
+  // Only the lower triangle of each factor is kept, packed by columns: half the memory of the
+  // full m × m blocks, which were the largest part of a multilevel solve after A itself.
   offset_.resize(patches.size() + 1, 0);
   for (std::size_t p = 0; p < patches.size(); ++p)
-    offset_[p + 1] = offset_[p] + patches[p].size() * patches[p].size();
+    offset_[p + 1] = offset_[p] + patches[p].size() * (patches[p].size() + 1) / 2;
   factors_.resize(offset_.back());
   int failed = -1;
 #pragma omp parallel
   {
     std::vector<int> local(A.rows(), -1);
+    Eigen::MatrixXd block;
 #pragma omp for schedule(dynamic, 256)
     for (std::size_t p = 0; p < patches.size(); ++p) {
       const auto& idx = patches[p];
       const int m = static_cast<int>(idx.size());
       for (int a = 0; a < m; ++a) local[idx[a]] = a;
-      Eigen::Map<Eigen::MatrixXd> block(factors_.data() + offset_[p], m, m);
-      block.setZero();
+      block.setZero(m, m);
       for (int b = 0; b < m; ++b)
         for (SparseMatrix::InnerIterator it(A, idx[b]); it; ++it)
           if (int a = local[it.row()]; a >= 0) block(a, b) = it.value();
@@ -54,6 +79,9 @@ PatchSmoother::PatchSmoother(const SparseMatrix& A, const std::vector<std::vecto
 #pragma omp critical
         failed = static_cast<int>(p);
       }
+      double* packed = factors_.data() + offset_[p];
+      for (int b = 0; b < m; ++b)
+        for (int a = b; a < m; ++a) *packed++ = block(a, b);
     }
   }
   if (failed >= 0)
@@ -65,7 +93,7 @@ void PatchSmoother::solve_patch(int p, const Vector& rl, Vector& x, const Vector
                                 const Vector& hi, Vector& change) const {
   const auto& idx = patches_[p];
   const int m = static_cast<int>(idx.size());
-  Eigen::Map<const Eigen::MatrixXd> l(factors_.data() + offset_[p], m, m);
+  const double* l = factors_.data() + offset_[p];  // packed lower columns
   Vector delta(m);
   change.setZero(m);
   bool bounded = false;
@@ -73,10 +101,11 @@ void PatchSmoother::solve_patch(int p, const Vector& rl, Vector& x, const Vector
     bounded |= is_bounded_above(hi[idx[a]]) || is_bounded_below(lo[idx[a]]);
   if (!bounded) {
     delta = rl;
-    l.triangularView<Eigen::Lower>().solveInPlace(delta);
-    l.transpose().triangularView<Eigen::Upper>().solveInPlace(delta);
+    solve_packed_cholesky(l, m, delta);
   } else {
-    const Eigen::MatrixXd lower = l.triangularView<Eigen::Lower>();
+    Eigen::MatrixXd lower = Eigen::MatrixXd::Zero(m, m);
+    for (int b = 0, k = 0; b < m; ++b)
+      for (int a = b; a < m; ++a) lower(a, b) = l[k++];
     const Eigen::MatrixXd a = lower * lower.transpose();
     Vector dlo(m), dhi(m);
     for (int k = 0; k < m; ++k) {
@@ -101,9 +130,34 @@ void PatchSmoother::solve_patch(int p, const Vector& rl, Vector& x, const Vector
 void PatchSmoother::sweep(Vector& x, Vector& r, const Vector& lo, const Vector& hi,
                           bool forward) const {
   const int np = static_cast<int>(patches_.size());
+  const auto [end0, end1] = split_;
+  const bool parallel = omp_get_max_threads() > 1 && end0 >= kMinParallelPatches &&
+                        end1 - end0 >= kMinParallelPatches;
+  if (!forward) sweep_range(end1, np, x, r, lo, hi, false);
+  if (parallel) {
+    // The blocks share no entry of x, r (patch_blocks.hpp): no locks, one meeting at the end.
+#pragma omp parallel num_threads(2)
+    {
+      if (omp_get_thread_num() == 0)
+        sweep_range(0, end0, x, r, lo, hi, forward);
+      else
+        sweep_range(end0, end1, x, r, lo, hi, forward);
+    }
+  } else if (forward) {
+    sweep_range(0, end0, x, r, lo, hi, true);
+    sweep_range(end0, end1, x, r, lo, hi, true);
+  } else {
+    sweep_range(end0, end1, x, r, lo, hi, false);
+    sweep_range(0, end0, x, r, lo, hi, false);
+  }
+  if (forward) sweep_range(end1, np, x, r, lo, hi, true);
+}
+
+void PatchSmoother::sweep_range(int begin, int end, Vector& x, Vector& r, const Vector& lo,
+                                const Vector& hi, bool forward) const {
   Vector rl, change;
-  for (int k = 0; k < np; ++k) {
-    const int p = forward ? k : np - 1 - k;
+  for (int k = begin; k < end; ++k) {
+    const int p = forward ? k : end - 1 - (k - begin);
     const auto& idx = patches_[p];
     rl.resize(idx.size());
     for (std::size_t a = 0; a < idx.size(); ++a) rl[a] = r[idx[a]];

@@ -8,6 +8,7 @@
 #include <stdexcept>
 
 #include "core/indefinite_system.hpp"
+#include "core/peak_memory.hpp"
 
 namespace fosls {
 
@@ -70,7 +71,8 @@ class PgsStep : public Step {
  public:
   PgsStep(const BoxQp& qp, const LevelHierarchy& h, const MultilevelOptions& o) : qp_(qp) {
     if (o.smoother == SmootherType::kPatch)
-      patch_ = std::make_unique<PatchSmoother>(qp.A, h.levels.back().patches);
+      patch_ = std::make_unique<PatchSmoother>(qp.A, h.levels.back().patches,
+                                               h.levels.back().patch_split);
     else
       point_ = std::make_unique<PointSmoother>(qp.A);
   }
@@ -231,7 +233,6 @@ bool nested_initial_guess(const BoxQp& qp, const LevelHierarchy& h, const Solver
     sub.levels.assign(h.levels.begin(), h.levels.begin() + j + 1);
     auto sub_chain = std::make_shared<GalerkinChain>();
     sub_chain->matrices.assign(chain->matrices.begin(), chain->matrices.begin() + j);
-    sub_chain->ap.assign(chain->ap.begin(), chain->ap.begin() + j + 1);
     if (j > 0) {
       xc = h.levels[j].prolongation * xc;
       for (int i = 0; i < xc.size(); ++i)
@@ -262,8 +263,10 @@ SolverReport solve_box_qp(const BoxQp& qp, const LevelHierarchy& hierarchy,
       throw IndefiniteSystemError("the FOSLS matrix is not positive definite");
   }
   const double chain_s = std::chrono::duration<double>(Clock::now() - t0).count();
+  const double chain_mib = multilevel ? peak_rss_mib() : 0.0;
   SolverReport report = solve_with_chain(qp, hierarchy, options, observer, x, chain);
   report.setup_s += chain_s;
+  report.chain_mib = chain_mib;
   return report;
 }
 
@@ -311,6 +314,7 @@ SolverReport solve_with_chain(const BoxQp& qp, const LevelHierarchy& hierarchy,
       observer.on_sweep(qp.energy_from_residual(xs, rs));
     });
   report.setup_s = std::chrono::duration<double>(Clock::now() - t_setup).count();
+  report.setup_mib = peak_rss_mib();
 
   const auto t0 = Clock::now();
   Vector r;

@@ -56,6 +56,10 @@ struct SolverReport {
   /// Iterations spent on each coarser level by the nested iteration (coarsest first).
   std::vector<int> nested_iterations;
   double solve_s = 0.0;
+  /// Peak resident set (MiB) after the Galerkin chain and after the whole set-up (0 where the
+  /// method has no such stage).
+  double chain_mib = 0.0;
+  double setup_mib = 0.0;
   CycleStatistics cycle;
   std::string message;
 };
