@@ -4,8 +4,10 @@
 #include <sys/file.h>
 #include <unistd.h>
 
+#include <chrono>
 #include <filesystem>
 #include <stdexcept>
+#include <thread>
 
 #include "postgres_job_store.hpp"
 #include "sqlite_job_store.hpp"
@@ -83,7 +85,15 @@ OpenedStore open_store(const StoreLocation& location, const std::string& program
   // process dies, also on kill -9.
   const std::string lock_path = location.target + ".lock";
   opened.lock_fd = open(lock_path.c_str(), O_RDWR | O_CREAT | O_CLOEXEC, 0644);
-  if (opened.lock_fd < 0 || flock(opened.lock_fd, LOCK_EX | LOCK_NB) != 0) {
+  // A child that the previous process forked holds the lock until it calls exec (the
+  // descriptor is close-on-exec): after a kill -9 that is a few milliseconds, so wait up to 2 s
+  // before calling the store taken (seen as a flaky restart in the kill -9 test under load).
+  bool locked = false;
+  for (int attempt = 0; opened.lock_fd >= 0 && attempt < 20 && !locked; ++attempt) {
+    locked = flock(opened.lock_fd, LOCK_EX | LOCK_NB) == 0;
+    if (!locked) std::this_thread::sleep_for(std::chrono::milliseconds(100));
+  }
+  if (!locked) {
     throw std::runtime_error("another fosls-serve is using " + location.target + " (lock " +
                              lock_path + "); a SQLite store belongs to one process, " + program +
                              " processes that share a queue need --store postgresql://…");

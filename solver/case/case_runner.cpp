@@ -6,6 +6,7 @@
 #include <cmath>
 #include <sstream>
 
+#include "assembly/contact_weight.hpp"
 #include "assembly/definiteness.hpp"
 #include "assembly/discretization.hpp"
 #include "case/case_admission.hpp"
@@ -92,12 +93,24 @@ bool has_roller(const CaseSpec& spec) {
   return false;
 }
 
-CaseException indefinite(const CaseSpec& spec) {
+/// `spec` carries the weights as used (c3 chosen when "auto").
+CaseException indefinite(const CaseSpec& spec, const MeshHierarchy& meshes,
+                         const ProblemData& data) {
   const Weights& w = spec.weights;
   std::ostringstream m;
   m << "the weights c1 = " << w.c1 << ", c2 = " << w.c2 << ", c3 = " << w.c3 << ", c4 = " << w.c4
     << " make the FOSLS matrix indefinite (the contact term c3 is too large relative to c1 and "
-       "c2); lower c3 (the default is 0.1) or raise c1 and c2";
+       "c2)";
+  if (w.c3_auto) {
+    m << "; c3 was chosen as half the limit " << w.c3_limit
+      << " computed on a coarser level, and the finest level's limit is lower: set c3 below "
+         "that by hand";
+  } else {
+    const ContactWeightLimit limit = contact_weight_limit(meshes, data);
+    m << "; on this mesh c3 must stay below about " << limit.limit << " (computed on level "
+      << limit.level << ", " << limit.dofs
+      << " unknowns): remove c3 from the case (or give \"auto\") to have it chosen";
+  }
   // A body held only by rollers may keep a rigid rotation: that looks the same to the check.
   if (has_roller(spec))
     m << ". With null displacement components, also check that the dirichlet groups leave no "
@@ -144,11 +157,17 @@ RunOutput run_point(const CaseSpec& spec, const RunControl& control, const CaseL
   const auto t_mesh = Clock::now();
   RunMemory memory;
   memory.mesh_mib = peak_rss_mib();
+  CaseSpec used = spec;  // the case with the weights as used
+  if (has_contact(spec) && spec.weights.c3_auto) {
+    const ContactWeightLimit limit = contact_weight_limit(meshes, data);
+    used.weights.c3_limit = limit.limit;
+    used.weights.c3 = data.weights.c3 = automatic_contact_weight(limit);
+  }
   Discretization disc(std::move(meshes), std::move(data));
   memory.assembly_mib = peak_rss_mib();
   const auto& problem = disc.problem();
   if (has_contact(spec) && !contact_layer_is_definite(disc.finest_space(), problem.qp))
-    throw indefinite(spec);
+    throw indefinite(used, disc.meshes(), disc.data());
   SolverOptions options = spec.solver;
   const MethodInfo& method = method_info(options.method);
   const LevelHierarchy hierarchy =
@@ -176,7 +195,7 @@ RunOutput run_point(const CaseSpec& spec, const RunControl& control, const CaseL
     report = solve_box_qp(problem.qp, hierarchy, options, observer, x);
   } catch (const IndefiniteSystemError&) {
     // Positive definiteness failing inside a solver is the user's weights, not a crash.
-    throw indefinite(spec);
+    throw indefinite(used, disc.meshes(), disc.data());
   }
   const auto t_solve = Clock::now();
 
@@ -200,7 +219,7 @@ RunOutput run_point(const CaseSpec& spec, const RunControl& control, const CaseL
   timing.solve_s = seconds(t_assembly, t_solve);
   timing.total_s = seconds(t0, t_end);
   memory.peak_mib = peak_rss_mib();
-  out.result = result_json(spec, report, contact, parts, size, timing, memory);
+  out.result = result_json(used, report, contact, parts, size, timing, memory);
   out.solution = std::move(x);
   return out;
 }

@@ -70,8 +70,12 @@ struct BoundaryCondition {
 struct Weights {
   double c1 = 1.0;
   double c2 = 1.0;
+  /// The weight used; with c3_auto it is chosen from the mesh when the case runs
+  /// (assembly/contact_weight.hpp) and `c3_limit` records the limit it was chosen from.
   double c3 = 0.1;
   double c4 = 0.0;
+  bool c3_auto = true;
+  double c3_limit = 0.0;  ///< 0 when not computed
 };
 
 /// A number of the case that takes several values (the case's `sweep`).

@@ -192,7 +192,9 @@ json result_json(const CaseSpec& spec, const SolverReport& report, const Contact
   r["weights"] = {{"c1", spec.weights.c1},
                   {"c2", spec.weights.c2},
                   {"c3", spec.weights.c3},
-                  {"c4", spec.weights.c4}};
+                  {"c4", spec.weights.c4},
+                  {"c3_rule", spec.weights.c3_auto ? "auto" : "given"},
+                  {"c3_limit", spec.weights.c3_limit > 0 ? json(spec.weights.c3_limit) : json()}};
   r["timing"] = {{"mesh_s", timing.mesh_s},
                  {"assembly_s", timing.assembly_s},
                  {"setup_s", report.setup_s},

@@ -163,6 +163,14 @@ ObjectRulePtr weights_echo_rule() {
   std::vector<FieldRule> fields;
   for (const char* c : {"c1", "c2", "c3", "c4"})
     fields.push_back(output_field(c, number(), "1", std::string("weight ") + c + " used"));
+  fields.push_back(output_field("c3_rule", choice_value({"auto", "given"}), "",
+                                "\"auto\" when c3 was chosen from the mesh, \"given\" when the "
+                                "case set it"));
+  fields.push_back(output_field(
+      "c3_limit", one_of_value({number_value(), null_value()}, "a number or null"), "1",
+      "with c3_rule auto: the largest c3 keeping the functional convex on the level it was "
+      "computed on (c3 = min(0.1, c3_limit / 2)); null otherwise, without contact or when "
+      "unbounded"));
   return object_rule("the weights", "weights_echo", std::move(fields));
 }
 

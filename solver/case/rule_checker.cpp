@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdlib>
 
 #include "case/expression.hpp"
 
@@ -10,6 +11,12 @@ namespace fosls {
 namespace {
 
 using nlohmann::json;
+
+bool looks_like_number(const std::string& s) {
+  char* end = nullptr;
+  std::strtod(s.c_str(), &end);
+  return !s.empty() && end == s.c_str() + s.size();
+}
 
 std::string quoted(const std::string& s) { return "\"" + s + "\""; }
 
@@ -226,8 +233,15 @@ bool RuleChecker::check_map(const json& j, const ValueRule& rule, const std::str
 }
 
 bool RuleChecker::check_one_of(const json& j, const ValueRule& rule, const std::string& pointer) {
-  for (const auto& alternative : rule.alternatives)
-    if (takes_type(alternative, j)) return check(j, alternative, pointer);
+  for (const auto& alternative : rule.alternatives) {
+    // A number written as a string ("0.5" for 0.5) is a mistyped number, not a misspelt word:
+    // name every alternative rather than the words alone.
+    const bool quoted_number = alternative.kind == ValueKind::kChoice && j.is_string() &&
+                               looks_like_number(j.get<std::string>()) &&
+                               std::find(alternative.choices.begin(), alternative.choices.end(),
+                                         j.get<std::string>()) == alternative.choices.end();
+    if (takes_type(alternative, j) && !quoted_number) return check(j, alternative, pointer);
+  }
   error(pointer, "expected " + value_noun(rule) + ", got " + describe_value(j));
   return false;
 }

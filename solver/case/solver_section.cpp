@@ -34,8 +34,13 @@ ObjectRulePtr weights_rule() {
   r->fields = {
       optional_field("c1", number_value(Range::positive()), w.c1, "weight of ‖div σ + f‖²"),
       optional_field("c2", number_value(Range::positive()), w.c2, "weight of ‖Aσ − ε(u)‖²"),
-      optional_field("c3", number_value(Range::non_negative()), w.c3,
-                     "weight of the contact term ⟨u·n − g, σ_nn⟩"),
+      optional_field("c3",
+                     one_of_value({number_value(Range::non_negative()), choice_value({"auto"})},
+                                  "a number >= 0 or the string \"auto\""),
+                     "auto",
+                     "weight of the contact term ⟨u·n − g, σ_nn⟩; \"auto\": half the largest "
+                     "value that keeps the functional convex on this mesh, at most 0.1 "
+                     "(docs/method.md §2.1)"),
       optional_field("c4", number_value(Range::non_negative()), w.c4, "weight of ‖as σ‖²"),
   };
   return r;
@@ -45,7 +50,10 @@ Weights read_weights_section(const json& j) {
   Weights w;
   w.c1 = j.value("c1", w.c1);
   w.c2 = j.value("c2", w.c2);
-  w.c3 = j.value("c3", w.c3);
+  if (j.contains("c3") && j["c3"].is_number()) {
+    w.c3 = j["c3"].get<double>();
+    w.c3_auto = false;
+  }
   w.c4 = j.value("c4", w.c4);
   return w;
 }

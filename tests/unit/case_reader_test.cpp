@@ -369,7 +369,7 @@ TEST(ReadCase, WrongTypesNameTheExpectedType) {
       {"/boundary/top/displacement/0", true, "expected a number"},
       {"/solver", "fast", "expected an object"},
       {"/solver/method", 1, "expected a string"},
-      {"/weights/c3", "0.5", "expected a number"},
+      {"/weights/c3", "0.5", "expected a number >= 0 or the string \"auto\""},
       {"/name", json::object(), "expected a string"},
   };
   for (const auto& row : rows) {

@@ -1,0 +1,107 @@
+#include "assembly/contact_weight.hpp"
+
+#include <Eigen/Eigenvalues>
+#include <Eigen/SparseCholesky>
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <memory>
+#include <random>
+
+#include "assembly/fosls_assembler.hpp"
+
+namespace fosls {
+
+namespace {
+
+/// The matrix of J on `space` with the given contact weight.
+SparseMatrix functional_matrix(const FoslsSpace& space, ProblemData data, double c3) {
+  data.weights.c3 = c3;
+  return FoslsAssembler(space, data).assemble_system().qp.A;
+}
+
+/// Cholesky factor of A0. Without a Neumann boundary an incompressible A0 can be singular (the
+/// constant pressure); a shift of 1e-12 of its diagonal then keeps the factorisation defined
+/// and moves c3* by a relative 1e-12 at most.
+struct A0Solver {
+  explicit A0Solver(const SparseMatrix& a0) {
+    llt.compute(a0);
+    if (llt.info() == Eigen::Success) return;
+    SparseMatrix shifted = a0;
+    for (int i = 0; i < shifted.rows(); ++i) shifted.coeffRef(i, i) *= 1.0 + 1e-12;
+    llt.compute(shifted);
+  }
+  Eigen::SimplicialLLT<SparseMatrix> llt;
+};
+
+/// The smallest eigenvalue μ_min of B x = μ A0 x by Lanczos on A0⁻¹B, which is self-adjoint in
+/// the A0 inner product; full reorthogonalisation (the steps are few and the vectors short).
+/// Stops once the smallest Ritz value's residual is below 1e-3 of it (the limit is then within
+/// about 0.1 %), or after 80 steps. Ritz values lie inside the spectrum, so an early stop errs
+/// towards a larger c3*; the rule's factor ½ covers that.
+double smallest_pencil_eigenvalue(const SparseMatrix& a0, const SparseMatrix& b, int& steps) {
+  const int n = static_cast<int>(a0.rows());
+  A0Solver solver(a0);
+  if (solver.llt.info() != Eigen::Success) return -std::numeric_limits<double>::infinity();
+  std::mt19937 random(20191105);  // deterministic: the same case gives the same c3
+  std::uniform_real_distribution<double> uniform(-1.0, 1.0);
+  Vector v(n);
+  for (int i = 0; i < n; ++i) v[i] = uniform(random);
+  std::vector<Vector> basis, a0_basis;
+  std::vector<double> alpha, beta;
+  double theta = 0.0;
+  const int max_steps = std::min(80, n);
+  for (steps = 0; steps < max_steps; ++steps) {
+    Vector a0v = a0 * v;
+    const double norm = std::sqrt(v.dot(a0v));
+    if (!(norm > 0)) break;
+    v /= norm, a0v /= norm;
+    if (steps > 0) beta.push_back(norm);
+    basis.push_back(v), a0_basis.push_back(a0v);
+    const Vector bv = b * v;
+    alpha.push_back(v.dot(bv));
+    Vector w = solver.llt.solve(bv);
+    for (int pass = 0; pass < 2; ++pass)
+      for (std::size_t i = 0; i < basis.size(); ++i) w -= a0_basis[i].dot(w) * basis[i];
+    const int k = static_cast<int>(alpha.size());
+    Eigen::MatrixXd t = Eigen::MatrixXd::Zero(k, k);
+    for (int i = 0; i < k; ++i) t(i, i) = alpha[i];
+    for (int i = 0; i + 1 < k; ++i) t(i, i + 1) = t(i + 1, i) = beta[i];
+    Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> ritz(t);
+    theta = ritz.eigenvalues()[0];
+    const double next_beta = std::sqrt(std::max(0.0, w.dot(a0 * w)));
+    const double residual = next_beta * std::abs(ritz.eigenvectors()(k - 1, 0));
+    if (k >= 5 && residual <= 1e-3 * std::abs(theta)) break;
+    v = w;
+  }
+  ++steps;
+  return theta;
+}
+
+}  // namespace
+
+ContactWeightLimit contact_weight_limit(const MeshHierarchy& meshes, const ProblemData& data,
+                                        int max_dofs) {
+  const auto roles = data.roles();
+  ContactWeightLimit out;
+  std::unique_ptr<FoslsSpace> chosen;
+  for (int level = 0; level < meshes.num_levels(); ++level) {
+    const Mesh& mesh = meshes.meshes[level];
+    auto space = std::make_unique<FoslsSpace>(mesh, roles, obstacle_vertex_normals(mesh, data));
+    if (chosen && space->num_free() > max_dofs) break;
+    chosen = std::move(space);
+    out.level = level;
+  }
+  out.dofs = chosen->num_free();
+  const SparseMatrix a0 = functional_matrix(*chosen, data, 0.0);
+  const SparseMatrix b = functional_matrix(*chosen, data, 1.0) - a0;
+  const double mu_min = smallest_pencil_eigenvalue(a0, b, out.lanczos_steps);
+  out.limit = mu_min < 0 ? -1.0 / mu_min : std::numeric_limits<double>::infinity();
+  return out;
+}
+
+double automatic_contact_weight(const ContactWeightLimit& limit) {
+  return std::min(kDefaultContactWeight, 0.5 * limit.limit);
+}
+
+}  // namespace fosls
