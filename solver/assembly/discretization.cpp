@@ -22,7 +22,8 @@ Discretization::Discretization(MeshHierarchy meshes, ProblemData data)
   problem_.qp.A.swap(a);
 }
 
-std::vector<std::vector<int>> vertex_patches(const FoslsSpace& space, std::array<int, 2>* split) {
+std::vector<std::vector<int>> vertex_patches(const FoslsSpace& space, std::array<int, 2>* split,
+                                             const std::vector<char>& selected) {
   const Mesh& mesh = space.mesh();
   const auto vertex_edges = mesh.vertex_edges();
   const VertexBlocks blocks = two_vertex_blocks(mesh);
@@ -32,6 +33,7 @@ std::vector<std::vector<int>> vertex_patches(const FoslsSpace& space, std::array
     for (int b = 0; b < 2; ++b)
       if (split && k == blocks.ends[b]) (*split)[b] = static_cast<int>(patches.size());
     const int v = blocks.order[k];
+    if (!selected.empty() && !selected[v]) continue;
     std::vector<int> p;
     for (int c = 0; c < 2; ++c)
       if (int f = space.free_index(space.u_dof(v, c)); f >= 0) p.push_back(f);
@@ -44,6 +46,16 @@ std::vector<std::vector<int>> vertex_patches(const FoslsSpace& space, std::array
     if (split && blocks.ends[b] == mesh.num_vertices())
       (*split)[b] = static_cast<int>(patches.size());
   return patches;
+}
+
+std::vector<char> new_vertices_and_neighbours(const Mesh& fine, const RefinementMaps& maps) {
+  std::vector<char> selected(fine.num_vertices(), 0);
+  for (int e = 0; e < fine.num_edges(); ++e) {
+    const auto& ab = fine.edge(e);
+    if (ab[0] >= maps.num_coarse_vertices || ab[1] >= maps.num_coarse_vertices)
+      selected[ab[0]] = selected[ab[1]] = 1;
+  }
+  return selected;
 }
 
 std::vector<int> contact_strip(const FoslsSpace& space, int layers) {
@@ -130,7 +142,15 @@ LevelHierarchy Discretization::build_level_hierarchy() const {
     const FoslsSpace& fine = *spaces_[j];
     Level& level = h.levels[j - coarsest];
     level.num_dofs = fine.num_free();
-    level.patches = vertex_patches(fine, &level.patch_split);
+    // Local smoothing (Chen, Nochetto and Xu's multilevel methods on graded bisection grids):
+    // an intermediate level smooths where it differs from the level below, so that one cycle
+    // costs O(N) of the finest level however many bisection levels there are. A uniform
+    // level is smoothed everywhere, the finest level always.
+    const bool everywhere = j == coarsest || j + 1 == num_levels();
+    level.patches =
+        vertex_patches(fine, &level.patch_split,
+                       everywhere ? std::vector<char>{}
+                                  : new_vertices_and_neighbours(fine.mesh(), meshes_.maps[j]));
     level.contact_strip = contact_strip(fine);
     if (j == coarsest) continue;
     const FoslsSpace& coarse = *spaces_[j - 1];

@@ -46,9 +46,16 @@ class Discretization {
 
 /// Vertex patches of a space in its free numbering (docs/method.md §4.1), in the order of
 /// two_vertex_blocks: two blocks a smoother may sweep at the same time, then the separator;
-/// `split`, when given, receives the ends of the two blocks.
+/// `split`, when given, receives the ends of the two blocks. Only the patches of the vertices
+/// with `selected[v]` set when `selected` is not empty.
 std::vector<std::vector<int>> vertex_patches(const FoslsSpace& space,
-                                             std::array<int, 2>* split = nullptr);
+                                             std::array<int, 2>* split = nullptr,
+                                             const std::vector<char>& selected = {});
+
+/// The vertices of a refined mesh that local smoothing visits: the new ones (midpoints) and
+/// their neighbours. Under uniform refinement that is every vertex; under a bisection step,
+/// the refined region and one layer around it.
+std::vector<char> new_vertices_and_neighbours(const Mesh& fine, const RefinementMaps& maps);
 
 /// Free DOFs of the triangles within `layers` layers of the contact boundary (the strip
 /// smoother's block), sorted; empty without contact. Two layers make the measured iteration

@@ -110,18 +110,27 @@ CaseAdmission admit_case(const nlohmann::json& j, const CaseReadOptions& options
     return out;
   }
   out.errors = check_against_groups(spec, groups, unknowns, exact, options.limits);
-  if (out.errors.empty()) out.estimate = estimate_resources(unknowns, exact, spec.solver.method);
+  if (!out.errors.empty()) return out;
+  out.estimate = estimate_resources(unknowns, exact, spec.solver.method);
+  // An adaptive run may grow up to adaptivity.max_dofs: admit it for that size.
+  if (spec.adaptivity && spec.adaptivity->steps > 0) {
+    const ResourceEstimate adaptive =
+        estimate_adaptive_resources(spec.adaptivity->max_dofs, spec.solver.method);
+    if (adaptive.memory_bytes > out.estimate->memory_bytes) out.estimate = adaptive;
+  }
   return out;
 }
 
 std::optional<CaseError> check_memory_budget(const ResourceEstimate& estimate, SolverMethod method,
                                              double budget_bytes, const std::string& budget_name) {
   if (estimate.memory_bytes <= budget_bytes) return std::nullopt;
+  const bool adaptive = estimate.limited_by == "/adaptivity/max_dofs";
   return CaseError{
-      "/mesh/refinements",
+      estimate.limited_by,
       "the solve needs " + describe(estimate, method) + ", more than the " +
-          bytes_text(budget_bytes) + " a job may use (" + budget_name +
-          "); use fewer refinements or a coarser mesh.size" +
+          bytes_text(budget_bytes) + " a job may use (" + budget_name + "); " +
+          (adaptive ? "lower adaptivity.max_dofs"
+                    : "use fewer refinements or a coarser mesh.size") +
           (method == SolverMethod::kPgs ? std::string() : ", or solver.method pgs (the leanest)")};
 }
 

@@ -23,6 +23,9 @@ ObjectRulePtr case_rule(const CaseReadOptions& options) {
                      "weights of the least-squares functional"),
       optional_field("solver", object_value(solver_rule()), nullptr,
                      "the iteration and its parameters"),
+      optional_field("adaptivity", object_value(adaptivity_rule(options)), nullptr,
+                     "adaptive refinement driven by the functional (absent: uniform refinement "
+                     "only)"),
       optional_field("sweep", object_value(sweep_rule(options)), nullptr,
                      "a number of the case that takes several values, solved in order with "
                      "continuation"),
@@ -51,6 +54,8 @@ CaseReadResult read_case(const nlohmann::json& j, const CaseReadOptions& options
   spec.boundary = read_boundary_section(j["boundary"]);
   if (j.contains("weights")) spec.weights = read_weights_section(j["weights"]);
   if (j.contains("solver")) spec.solver = read_solver_section(j["solver"]);
+  if (j.contains("adaptivity"))
+    spec.adaptivity = read_adaptivity_section(j["adaptivity"], options.limits);
   if (j.contains("sweep")) {
     read_sweep_section(j, options, spec, result.errors);
     if (!result.errors.empty()) return result;

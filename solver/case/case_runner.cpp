@@ -7,8 +7,7 @@
 #include <sstream>
 
 #include "assembly/contact_weight.hpp"
-#include "assembly/definiteness.hpp"
-#include "assembly/discretization.hpp"
+#include "case/adaptive_runner.hpp"
 #include "case/case_admission.hpp"
 #include "case/expression.hpp"
 #include "case/mesh_factory.hpp"
@@ -16,9 +15,7 @@
 #include "case/solver_methods.hpp"
 #include "core/indefinite_system.hpp"
 #include "core/peak_memory.hpp"
-#include "post/contact_output.hpp"
 #include "post/vtu_writer.hpp"
-#include "solvers/solve_loop.hpp"
 
 namespace fosls {
 
@@ -153,6 +150,7 @@ RunOutput run_point(const CaseSpec& spec, const RunControl& control, const CaseL
   if (auto errors = check_against_mesh(spec, coarse, limits); !errors.empty())
     throw CaseException(std::move(errors));
   ProblemData data = problem_data(spec, coarse);
+  const Mesh coarse_mesh = coarse;  // small; for the message of indefinite weights
   MeshHierarchy meshes = build_mesh_hierarchy(std::move(coarse), spec.mesh.refinements);
   const auto t_mesh = Clock::now();
   RunMemory memory;
@@ -163,49 +161,37 @@ RunOutput run_point(const CaseSpec& spec, const RunControl& control, const CaseL
     used.weights.c3_limit = limit.limit;
     used.weights.c3 = data.weights.c3 = automatic_contact_weight(limit);
   }
-  Discretization disc(std::move(meshes), std::move(data));
-  memory.assembly_mib = peak_rss_mib();
-  const auto& problem = disc.problem();
-  if (has_contact(spec) && !contact_layer_is_definite(disc.finest_space(), problem.qp))
-    throw indefinite(used, disc.meshes(), disc.data());
-  SolverOptions options = spec.solver;
-  const MethodInfo& method = method_info(options.method);
-  const LevelHierarchy hierarchy =
-      method.needs_hierarchy ? disc.build_level_hierarchy() : LevelHierarchy{};
-  const auto t_assembly = Clock::now();
-  memory.hierarchy_mib = peak_rss_mib();
-
-  SolverObserver observer;
-  if (control.on_iteration) observer.on_iteration = control.on_iteration;
+  CaseSolveObserver observer;
+  if (control.on_iteration) observer.solver.on_iteration = control.on_iteration;
   if (control.cancel)
-    observer.cancelled = [&control] { return control.cancel->load(std::memory_order_relaxed); };
+    observer.solver.cancelled = [&control] {
+      return control.cancel->load(std::memory_order_relaxed);
+    };
   // The limit counts the whole run: a user sets it for the answer's latency, not the loop's.
   if (spec.solver.time_limit_s > 0) {
     const auto deadline = t0 + std::chrono::duration_cast<Clock::duration>(
                                    std::chrono::duration<double>(spec.solver.time_limit_s));
-    observer.out_of_time = [deadline] { return Clock::now() >= deadline; };
+    observer.solver.out_of_time = [deadline] { return Clock::now() >= deadline; };
   }
-  Vector x;
-  if (control.start && control.start->size() == problem.qp.size()) {
-    x = *control.start;
-    options.nested = false;  // the previous point's solution is the better start
-  }
-  SolverReport report;
+  observer.on_step = control.on_step;
+  CaseSolution solution;
   try {
-    report = solve_box_qp(problem.qp, hierarchy, options, observer, x);
+    solution = solve_case_levels(std::move(meshes), data, spec, observer, control.start);
   } catch (const IndefiniteSystemError&) {
     // Positive definiteness failing inside a solver is the user's weights, not a crash.
-    throw indefinite(used, disc.meshes(), disc.data());
+    throw indefinite(used, build_mesh_hierarchy(coarse_mesh, spec.mesh.refinements), data);
   }
+  memory.assembly_mib = solution.assembly_mib;
+  memory.hierarchy_mib = solution.hierarchy_mib;
+  const Discretization& disc = *solution.disc;
+  const AssembledProblem& problem = disc.problem();
   const auto t_solve = Clock::now();
 
-  const Vector full = disc.assembler().full_vector(problem, x);
-  const FunctionalParts parts = disc.assembler().functional(full);
-  const ContactResult contact = contact_output(disc.assembler(), problem, full);
-
   RunOutput out;
-  out.cancelled = report.cancelled;
-  if (control.want_vtu) out.vtu = write_vtu(disc.assembler(), problem, full, parts, contact);
+  out.cancelled = solution.report.cancelled;
+  if (control.want_vtu)
+    out.vtu = write_vtu(disc.assembler(), problem, solution.full, solution.parts, solution.contact,
+                        solution.generation);
   const auto t_end = Clock::now();
   ProblemSize size;
   size.levels = disc.num_levels();
@@ -215,12 +201,15 @@ RunOutput run_point(const CaseSpec& spec, const RunControl& control, const CaseL
   size.triangles = disc.meshes().finest().num_triangles();
   RunTiming timing;
   timing.mesh_s = seconds(t0, t_mesh);
-  timing.assembly_s = seconds(t_mesh, t_assembly);
-  timing.solve_s = seconds(t_assembly, t_solve);
+  timing.assembly_s = solution.assembly_s;
+  // Estimation and refinement between the solves of an adaptive run count as solving.
+  timing.solve_s = seconds(t_mesh, t_solve) - solution.assembly_s;
   timing.total_s = seconds(t0, t_end);
   memory.peak_mib = peak_rss_mib();
-  out.result = result_json(used, report, contact, parts, size, timing, memory);
-  out.solution = std::move(x);
+  out.result =
+      result_json(used, solution.report, solution.contact, solution.parts, size, timing, memory);
+  if (spec.adaptivity) out.result["adaptivity"] = adaptivity_json(solution, *spec.adaptivity);
+  out.solution = std::move(solution.x);
   return out;
 }
 

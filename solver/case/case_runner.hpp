@@ -19,6 +19,9 @@ namespace fosls {
 struct RunControl {
   /// Called after every iteration from the solving thread; keep it cheap.
   std::function<void(const IterationRecord&)> on_iteration;
+  /// Called before each solve of an adaptive run (and before the one solve of a uniform run)
+  /// with the step, 0 first, and the unknowns of its level.
+  std::function<void(int step, long long dofs)> on_step;
   /// When set and it becomes true, the solve stops at the next iteration and the result
   /// says "cancelled": true.
   const std::atomic<bool>* cancel = nullptr;

@@ -1,6 +1,7 @@
 #pragma once
 // The sections of the case JSON, one file each (mesh_section.cpp, geometry_section.cpp,
-// material_section.cpp, boundary_section.cpp, solver_section.cpp): the rules of the section
+// material_section.cpp, boundary_section.cpp, solver_section.cpp,
+// adaptivity_section.cpp): the rules of the section
 // (case_rules.hpp) and its conversion into the CaseSpec. A converter is called only on JSON
 // that passed its section's rules, so it needs no checks of its own; absent fields take the
 // defaults of the rules.
@@ -38,6 +39,8 @@ Weights read_weights_section(const nlohmann::json& j);
 ObjectRulePtr solver_rule();
 SolverOptions read_solver_section(const nlohmann::json& j);
 
+ObjectRulePtr adaptivity_rule(const CaseReadOptions& options);
+AdaptivitySpec read_adaptivity_section(const nlohmann::json& j, const CaseLimits& limits);
 ObjectRulePtr sweep_rule(const CaseReadOptions& options);
 /// Reads the case at each value of its sweep into spec.sweep_points; a value that makes the
 /// case invalid is an error at /sweep/values/<i> naming the field and the reason.

@@ -78,6 +78,17 @@ struct Weights {
   double c3_limit = 0.0;  ///< 0 when not computed
 };
 
+/// The `adaptivity` section: solve → estimate → mark → refine by newest-vertex bisection →
+/// solve again from the prolongated solution, until one of the limits stops it.
+struct AdaptivitySpec {
+  int steps = 10;                ///< refinement steps at most (steps + 1 solves)
+  long long max_dofs = 200'000;  ///< a refinement that would give more DOFs is not made
+  double theta = 0.5;            ///< Dörfler parameter: refine the triangles of θ of J
+  /// Stop once the estimator J^½ has fallen to `target` times its value on the starting mesh
+  /// (0: no target).
+  double target = 0.0;
+};
+
 /// A number of the case that takes several values (the case's `sweep`).
 struct SweepSpec {
   std::string pointer;  ///< JSON pointer into the case
@@ -93,6 +104,7 @@ struct CaseSpec {
   std::map<std::string, BoundaryCondition> boundary;
   Weights weights;
   SolverOptions solver;  ///< the case's `solver` section (method, tolerance, smoothing, ...)
+  std::optional<AdaptivitySpec> adaptivity;  ///< absent: uniform refinement only
   std::optional<SweepSpec> sweep;
   /// With a sweep: the case at each value, in order (without a sweep of their own).
   std::vector<CaseSpec> sweep_points;

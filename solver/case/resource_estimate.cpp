@@ -43,6 +43,13 @@ ResourceEstimate estimate_resources(long long unknowns, bool exact, SolverMethod
   return {unknowns, exact, kSolveBaseBytes + bytes_per_unknown(method) * unknowns};
 }
 
+ResourceEstimate estimate_adaptive_resources(long long max_dofs, SolverMethod method) {
+  const bool levels = method == SolverMethod::kMmg || method == SolverMethod::kTnnmg;
+  const double factor = levels ? kAdaptiveHierarchyFactor : 1.0;
+  return {max_dofs, false, kSolveBaseBytes + factor * bytes_per_unknown(method) * max_dofs,
+          "/adaptivity/max_dofs"};
+}
+
 std::string describe(const ResourceEstimate& e, SolverMethod method) {
   static const char* names[] = {"mmg", "tnnmg", "pdas", "pgs"};
   char text[160];

@@ -34,9 +34,18 @@ struct ResourceEstimate {
   long long unknowns = 0;
   bool unknowns_exact = false;  ///< false when the coarse mesh was estimated, not built
   double memory_bytes = 0;      ///< estimated peak resident memory of the solve
+  /// The case field that sets the size: what to change when the estimate is too large.
+  std::string limited_by = "/mesh/refinements";
 };
 
 ResourceEstimate estimate_resources(long long unknowns, bool exact, SolverMethod method);
+
+/// An adaptive run's peak: its finest level has at most `max_dofs` unknowns, and mmg and tnnmg
+/// keep every level of the bisection hierarchy, whose sizes fall by about 2/3 per level (about
+/// 3 N in all against 4/3 N for uniform levels): measured on Hertz, 27 570 unknowns on 10
+/// levels, 135 MB against 64 MB for the same finest size on 4 uniform levels.
+inline constexpr double kAdaptiveHierarchyFactor = 2.9;
+ResourceEstimate estimate_adaptive_resources(long long max_dofs, SolverMethod method);
 
 /// The estimate as one sentence ("about 1.2 GiB for 850 000 unknowns with mmg").
 std::string describe(const ResourceEstimate& estimate, SolverMethod method);

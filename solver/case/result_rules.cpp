@@ -186,6 +186,45 @@ ObjectRulePtr timing_rule() {
        output_field("total_s", number(), "s", "the whole run")});
 }
 
+ObjectRulePtr adaptive_step_rule() {
+  return object_rule(
+      "an adaptive step", "adaptive_step",
+      {output_field("step", count(), "1", "0 for the solve on the starting mesh, then 1, 2, ..."),
+       output_field("levels", count(), "1",
+                    "levels of the hierarchy: the coarse mesh, its uniform refinements and one "
+                    "per bisection step so far"),
+       output_field("dofs", count(), "1", "unknowns solved for"),
+       output_field("dofs_total", count(), "1", "all DOFs of the level (what max_dofs limits)"),
+       output_field("triangles", count(), "1", "triangles of the mesh"),
+       output_field("estimator", number(), "scaled",
+                    "the error estimator J^½ at this step's solution"),
+       output_field("force", tuple_value(number(), 2, "an array of 2 numbers [x, y]"), "S·L",
+                    "the contact force at this step's solution (as contact.force)"),
+       output_field("iterations", count(), "1", "iterations of this step's solve"),
+       output_field("converged", boolean_value(), "", "this step's solve met its stopping rule"),
+       output_field("marked", count(), "1",
+                    "triangles marked by Dörfler marking for the next step (0 on the last)"),
+       output_field("time_s", number(), "s",
+                    "assembly, solve, estimation, marking and refinement of this step")});
+}
+
+ObjectRulePtr adaptivity_result_rule() {
+  return object_rule(
+      "the adaptive run", "adaptivity_result",
+      {output_field("theta", number(), "1", "adaptivity.theta used"),
+       output_field("max_dofs", count(), "1", "adaptivity.max_dofs used"),
+       output_field("target", number(), "1", "adaptivity.target used"),
+       output_field("stop_reason",
+                    choice_value({"steps", "max_dofs", "target", "not_converged", "time_limit",
+                                  "cancelled"}),
+                    "",
+                    "why the loop stopped: the steps were made, the next refinement would exceed "
+                    "max_dofs, the estimator reached target (or vanished), a solve did not "
+                    "converge, solver.time_limit_s ran out, or the job was cancelled"),
+       output_field("steps", list_value(object_value(adaptive_step_rule()), "one per solve"), "",
+                    "every solve of the loop, the last one being the result's")});
+}
+
 ObjectRulePtr memory_rule() {
   return object_rule(
       "the memory", "memory",
@@ -262,6 +301,9 @@ ObjectRulePtr result_rule() {
        output_field("timing", object_value(timing_rule()), "", "wall-clock times"),
        output_field("memory", object_value(memory_rule()), "",
                     "peak resident set of the process at the end of each stage"),
+       optional_field("adaptivity", object_value(adaptivity_result_rule()), nullptr,
+                      "the adaptive loop, step by step (only when the case has an adaptivity "
+                      "section; the other fields describe its last step)"),
        optional_field("sweep", object_value(sweep_rule(choice_value(reasons))), nullptr,
                       "a case with a sweep: every point's force and convergence; the other "
                       "fields are the last point's, except converged and stop_reason, which say "

@@ -40,10 +40,16 @@ void print_errors(const std::vector<CaseError>& errors) {
 class ProgressLine {
  public:
   explicit ProgressLine(bool enabled) : enabled_(enabled) {}
+  /// An adaptive run's solves each get their own line, headed by the step.
+  void start_step(int step, long long dofs) {
+    finish();
+    step_ = "step " + std::to_string(step) + " (" + std::to_string(dofs) + " unknowns)  ";
+  }
   void update(const IterationRecord& r) {
     if (!enabled_) return;
-    char line[160];
-    std::snprintf(line, sizeof line, "\riteration %5d  J %.6e  kkt residual %.3e  active %d\033[K",
+    char line[200];
+    std::snprintf(line, sizeof line,
+                  "\r%siteration %5d  J %.6e  kkt residual %.3e  active %d\033[K", step_.c_str(),
                   r.iteration, r.energy, r.kkt_residual, r.active);
     std::cerr << line << std::flush;
     shown_ = true;
@@ -56,6 +62,7 @@ class ProgressLine {
  private:
   bool enabled_;
   bool shown_ = false;
+  std::string step_;
 };
 
 bool write_file(const std::string& path, const std::string& text) {
@@ -194,6 +201,8 @@ int run_solve(const SolveOptions& o) {
     RunControl control;
     control.want_vtu = !o.vtu_path.empty();
     control.on_iteration = [&progress](const IterationRecord& r) { progress.update(r); };
+    if (read.spec->adaptivity)
+      control.on_step = [&progress](int step, long long dofs) { progress.start_step(step, dofs); };
     RunOutput output = run_case(*read.spec, control, read_options.limits);
     progress.finish();
 

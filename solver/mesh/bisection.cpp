@@ -172,4 +172,12 @@ Bisection refine_by_bisection(const Mesh& mesh, const BisectionState& state,
   return out;
 }
 
+void refine_finest_level(MeshHierarchy& hierarchy, BisectionState& state,
+                         const std::vector<int>& marked) {
+  Bisection step = refine_by_bisection(hierarchy.finest(), state, marked);
+  hierarchy.meshes.push_back(std::move(step.fine));
+  hierarchy.maps.push_back(std::move(step.maps));
+  state = std::move(step.state);
+}
+
 }  // namespace fosls

@@ -51,4 +51,10 @@ struct Bisection {
 Bisection refine_by_bisection(const Mesh& mesh, const BisectionState& state,
                               const std::vector<int>& marked);
 
+/// One adaptive step on a nested hierarchy: bisects the marked triangles of its finest mesh
+/// (with closure) and appends the result as a new finest level; `state` belongs to the finest
+/// mesh before the call and to the new one after it.
+void refine_finest_level(MeshHierarchy& hierarchy, BisectionState& state,
+                         const std::vector<int>& marked);
+
 }  // namespace fosls

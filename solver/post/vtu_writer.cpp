@@ -38,8 +38,14 @@ const std::vector<VtuArray>& array_table() {
        false,
        {},
        "scaled",
-       "the triangle's share of the FOSLS functional J (its error indicator), in the scaled "
-       "units of the result's functional"},
+       "the triangle's share of the FOSLS functional J (its error indicator η_T², which "
+       "drives adaptive refinement), in the scaled units of the result's functional"},
+      {"generation",
+       false,
+       {},
+       "1",
+       "refinement level of the triangle: bisections from its coarse-mesh ancestor (a uniform "
+       "refinement counts as two)"},
   };
   return table;
 }
@@ -71,7 +77,7 @@ std::span<const VtuArray> vtu_arrays() { return array_table(); }
 
 std::string write_vtu(const FoslsAssembler& assembler, const AssembledProblem& problem,
                       const Vector& x_full, const FunctionalParts& functional,
-                      const ContactResult& contact) {
+                      const ContactResult& contact, const std::vector<int>& generation) {
   const FoslsSpace& space = assembler.space();
   const Mesh& mesh = space.mesh();
   const FeField field(space, x_full, problem.stress_scale);
@@ -131,6 +137,7 @@ std::string write_vtu(const FoslsAssembler& assembler, const AssembledProblem& p
   write_array(o, "sigma", sigma);
   write_array(o, "von_mises", von_mises);
   write_array(o, "functional", functional.element);
+  write_array(o, "generation", std::vector<double>(generation.begin(), generation.end()));
   o << "</CellData>\n</Piece>\n</UnstructuredGrid>\n</VTKFile>\n";
   return o.str();
 }

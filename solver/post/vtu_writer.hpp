@@ -23,8 +23,10 @@ struct VtuArray {
 /// Every array write_vtu writes, in the order of the file.
 std::span<const VtuArray> vtu_arrays();
 
+/// `generation`: per triangle, the bisections that separate it from its coarse-mesh ancestor
+/// (a red refinement counts as two).
 std::string write_vtu(const FoslsAssembler& assembler, const AssembledProblem& problem,
                       const Vector& x_full, const FunctionalParts& functional,
-                      const ContactResult& contact);
+                      const ContactResult& contact, const std::vector<int>& generation);
 
 }  // namespace fosls

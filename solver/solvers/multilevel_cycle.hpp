@@ -111,6 +111,8 @@ class MultilevelCycle {
   const LevelHierarchy& hierarchy_;
   MultilevelOptions options_;
   std::vector<std::unique_ptr<LevelState>> levels_;
+  /// revisit_[j]: level j visits level j−1 cycle_index times (else once); see the constructor.
+  std::vector<char> revisit_;
   std::vector<char> truncated_;  ///< the fine truncated set the levels below were built for
   bool built_ = false;
   /// Per level j ≥ 1 (index j): the truncated set of level j (the fine truncated set on the

@@ -1,10 +1,12 @@
 // Invariants of the monotone multilevel method: J never increases
 // — after every fine-level smoother sweep, every coarse correction and every iteration — and
-// every iterate satisfies the bounds exactly, for the three coarse-obstacle projections.
+// every iterate satisfies the bounds exactly, for the three coarse-obstacle projections, on
+// uniform hierarchies and on hierarchies adapted by newest-vertex bisection.
 #include <gtest/gtest.h>
 
 #include <limits>
 
+#include "adapted_hierarchy.hpp"
 #include "contact_problems.hpp"
 #include "solvers/solve_loop.hpp"
 
@@ -18,17 +20,26 @@ struct Case {
   bool hertz;
   double lambda;
   CoarseProjection projection;
+  int adaptive_steps = 0;  ///< bisection levels on top of the uniform ones
 };
+
+Discretization discretization(const Case& c) {
+  // Adapted hierarchies: two uniform levels and five bisection levels (7 levels in all).
+  const int uniform = c.adaptive_steps > 0 ? 1 : 3;
+  const ProblemData data = c.hertz ? testing::hertz(c.lambda) : testing::signorini_square(c.lambda);
+  MeshHierarchy meshes = build_mesh_hierarchy(
+      c.hertz ? make_hertz({.size = 0.1}) : make_square({.size = 0.25}), uniform);
+  if (c.adaptive_steps > 0)
+    meshes = testing::adapted_hierarchy(std::move(meshes), data, c.adaptive_steps);
+  return Discretization(std::move(meshes), data);
+}
 
 class Monotonicity : public ::testing::TestWithParam<Case> {};
 
 TEST_P(Monotonicity, EnergyNeverIncreasesAndIteratesStayFeasible) {
   const Case& c = GetParam();
-  const Discretization disc =
-      c.hertz ? Discretization(build_mesh_hierarchy(make_hertz({.size = 0.1}), 3),
-                               testing::hertz(c.lambda))
-              : Discretization(build_mesh_hierarchy(make_square({.size = 0.25}), 3),
-                               testing::signorini_square(c.lambda));
+  const Discretization disc = discretization(c);
+  ASSERT_EQ(disc.num_levels(), c.adaptive_steps > 0 ? 2 + c.adaptive_steps : 4);
   const LevelHierarchy h = disc.build_level_hierarchy();
   const BoxQp& qp = disc.problem().qp;
   MultilevelOptions options;
@@ -76,7 +87,12 @@ INSTANTIATE_TEST_SUITE_P(
                       Case{"hertz_lambda1_b", true, 1.0, CoarseProjection::kB},
                       Case{"hertz_lambda1_c", true, 1.0, CoarseProjection::kC},
                       Case{"square_lambda1_b", false, 1.0, CoarseProjection::kB},
-                      Case{"square_lambda1_c", false, 1.0, CoarseProjection::kC}),
+                      Case{"square_lambda1_c", false, 1.0, CoarseProjection::kC},
+                      Case{"adapted_square_lambda1_a", false, 1.0, CoarseProjection::kA, 5},
+                      Case{"adapted_square_lambdainf_a", false, kInf, CoarseProjection::kA, 5},
+                      Case{"adapted_hertz_lambda1_a", true, 1.0, CoarseProjection::kA, 5},
+                      Case{"adapted_hertz_lambdainf_a", true, kInf, CoarseProjection::kA, 5},
+                      Case{"adapted_hertz_lambda1_c", true, 1.0, CoarseProjection::kC, 5}),
     [](const auto& info) { return std::string(info.param.name); });
 
 }  // namespace

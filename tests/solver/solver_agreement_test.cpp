@@ -1,11 +1,12 @@
 // Every method reaches the same discrete solution: mmg, tnnmg and pgs
 // agree with pdas to a relative energy-norm difference ≤ 1e-8 at tolerance 1e-12, on the
-// curved-gap square and on hertz, for λ = 1 and λ = ∞.
+// curved-gap square and on hertz, for λ = 1 and λ = ∞, on uniform and on adapted meshes.
 #include <gtest/gtest.h>
 
 #include <cstdio>
 #include <limits>
 
+#include "adapted_hierarchy.hpp"
 #include "contact_problems.hpp"
 #include "solvers/solve_loop.hpp"
 
@@ -63,6 +64,13 @@ Discretization hertz(double lambda, int refinements) {
                         testing::hertz(lambda));
 }
 
+/// `refinements` uniform levels, then four adaptive bisection steps.
+Discretization adapted(const ProblemData& data, Mesh coarse, int refinements) {
+  return Discretization(
+      testing::adapted_hierarchy(build_mesh_hierarchy(std::move(coarse), refinements), data, 4),
+      data);
+}
+
 // The multilevel methods on 3 levels; single-level PGS, whose rate tends to 1 as h → 0
 // (≈ 0.999 here), on 2 levels so that 1e-12 is reached in a test's time.
 const std::vector<SolverMethod> kMultilevel = {SolverMethod::kMmg, SolverMethod::kTnnmg};
@@ -83,6 +91,18 @@ TEST(Agreement, HertzLambdaOne) {
 TEST(Agreement, HertzIncompressible) {
   check_agreement(hertz(kInf, 2), kMultilevel);
   check_agreement(hertz(kInf, 1), kSingleLevel);
+}
+TEST(Agreement, AdaptedCurvedGapSquare) {
+  const ProblemData data = testing::signorini_square(1.0);
+  check_agreement(adapted(data, make_square({.size = 0.25}), 1), kMultilevel);
+  check_agreement(adapted(data, make_square({.size = 0.25}), 0), kSingleLevel);
+}
+TEST(Agreement, AdaptedHertz) {
+  for (double lambda : {1.0, kInf}) {
+    const ProblemData data = testing::hertz(lambda);
+    check_agreement(adapted(data, make_hertz({.size = 0.1}), 1), kMultilevel);
+  }
+  check_agreement(adapted(testing::hertz(1.0), make_hertz({.size = 0.1}), 0), kSingleLevel);
 }
 
 }  // namespace

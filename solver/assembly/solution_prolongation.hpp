@@ -1,0 +1,16 @@
+#pragma once
+// Carrying a solution from one level to the next finer one: the start of the next solve of an
+// adaptive loop.
+
+#include "assembly/discretization.hpp"
+
+namespace fosls {
+
+/// The free DOFs of a solution on the second-finest level of `disc`, carried to the finest
+/// level by the level transfer (fem/transfer.hpp: P1 interpolation for u, the RT0 embedding
+/// for σ, rotated contact coordinates). Bounds are not imposed here: the solve loop projects
+/// its initial iterate onto them (a midpoint's interpolated U_n can exceed a curved gap).
+/// Throws std::invalid_argument when `disc` has one level or x_coarse has the wrong size.
+Vector prolongate_to_finest(const Discretization& disc, const Vector& x_coarse);
+
+}  // namespace fosls

@@ -1,0 +1,72 @@
+#pragma once
+// The solve of a case on its levels: once on the uniformly refined hierarchy, or, with an
+// `adaptivity` section, the adaptive loop
+//   solve → estimate (η_T² = the functional on T) → mark (Dörfler) → refine (newest-vertex
+//   bisection) → solve again from the prolongated solution
+// in which every bisection step is one more level of the nested hierarchy that the multilevel
+// solvers cycle on (coarse mesh, its uniform refinements, then the adapted meshes).
+
+#include <array>
+#include <functional>
+#include <memory>
+#include <nlohmann/json.hpp>
+#include <string>
+#include <vector>
+
+#include "assembly/discretization.hpp"
+#include "case/case_spec.hpp"
+#include "post/contact_output.hpp"
+
+namespace fosls {
+
+/// One solve of the adaptive loop (docs/result-format.md, `adaptivity.steps`).
+struct AdaptiveStepRecord {
+  int step = 0;
+  int levels = 0;
+  long long dofs = 0;        ///< unknowns solved for
+  long long dofs_total = 0;  ///< all DOFs of the level
+  long long triangles = 0;
+  double estimator = 0.0;  ///< J^½ at the solution
+  std::array<double, 2> force = {0.0, 0.0};
+  int iterations = 0;
+  bool converged = false;
+  int marked = 0;  ///< triangles marked for the next refinement (0 on the last step)
+  double time_s = 0.0;
+};
+
+/// The solution on the finest level, and how it was reached.
+struct CaseSolution {
+  std::unique_ptr<Discretization> disc;
+  Vector x;     ///< free DOFs
+  Vector full;  ///< all DOFs (rotated, scaled)
+  FunctionalParts parts;
+  ContactResult contact;
+  SolverReport report;  ///< of the last solve
+  std::vector<AdaptiveStepRecord> steps;
+  /// Why the adaptive loop stopped: "steps", "max_dofs", "target", "not_converged",
+  /// "time_limit" or "cancelled"; empty without adaptivity.
+  std::string stop_reason;
+  std::vector<int> generation;  ///< bisections from the coarse mesh, per finest triangle
+  double assembly_s = 0.0, solve_s = 0.0;
+  /// Peak resident set after the last level's assembly and after its level hierarchy.
+  double assembly_mib = 0.0, hierarchy_mib = 0.0;
+};
+
+/// Observers of the loop; every member is optional.
+struct CaseSolveObserver {
+  SolverObserver solver;
+  /// Before each solve: the step (0 for the first) and the unknowns of its level.
+  std::function<void(int step, long long dofs)> on_step;
+};
+
+/// Solves on `meshes` and, when the case asks for it, adapts. `start`, when given and of the
+/// finest level's size, is the first solve's initial iterate (continuation; no nested
+/// iteration then). Throws IndefiniteSystemError when the weights make the matrix indefinite.
+CaseSolution solve_case_levels(MeshHierarchy meshes, const ProblemData& data, const CaseSpec& spec,
+                               const CaseSolveObserver& observer = {},
+                               const Vector* start = nullptr);
+
+/// The result's `adaptivity` object (docs/result-format.md).
+nlohmann::json adaptivity_json(const CaseSolution& solution, const AdaptivitySpec& spec);
+
+}  // namespace fosls
