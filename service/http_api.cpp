@@ -412,6 +412,15 @@ void HttpApi::list_jobs(const Request& req, Response& res) {
       return;
     }
   }
+  if (req.has_param("converged")) {
+    const std::string text = req.get_param_value("converged");
+    if (text != "true" && text != "false") {
+      send_problem(req, res,
+                   problems::invalid_parameter("converged", "'" + text + "' is not true or false"));
+      return;
+    }
+    query.converged = text == "true";
+  }
   if (req.has_param("page_size")) {
     const std::string text = req.get_param_value("page_size");
     int n = 0;

@@ -86,6 +86,7 @@ enum class LeaseStatus {
 /// Keyset pagination over jobs, newest first.
 struct JobListQuery {
   std::optional<JobState> state;
+  std::optional<bool> converged;  ///< only jobs whose solve did (true) or did not (false) converge
   int page_size = 20;
   std::optional<std::int64_t> before_id;  ///< only jobs with id < before_id
 };

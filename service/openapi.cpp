@@ -145,6 +145,10 @@ json job_paths() {
       false);
   paths["/v1/jobs"]["get"]["parameters"] = {
       {{"name", "state"}, {"in", "query"}, {"schema", job_schema()["properties"]["state"]}},
+      {{"name", "converged"},
+       {"in", "query"},
+       {"description", "only jobs whose solve did (true) or did not (false) converge"},
+       {"schema", {{"type", "boolean"}}}},
       {{"name", "page_size"},
        {"in", "query"},
        {"schema", {{"type", "integer"}, {"minimum", 1}, {"maximum", 100}, {"default", 20}}}},

@@ -131,6 +131,11 @@ JobPage SqlJobStore::list(const JobListQuery& query) {
     params.emplace_back(std::string(to_string(*query.state)));
     where += "state = ?" + std::to_string(params.size());
   }
+  if (query.converged) {
+    params.emplace_back(static_cast<std::int64_t>(*query.converged));
+    where +=
+        std::string(where.empty() ? "" : " AND ") + "converged = ?" + std::to_string(params.size());
+  }
   if (query.before_id) {
     params.emplace_back(*query.before_id);
     where += std::string(where.empty() ? "" : " AND ") + "id < ?" + std::to_string(params.size());

@@ -215,14 +215,18 @@ AssembledProblem FoslsAssembler::assemble_system() const {
     } else if (gd.role == GroupRole::kNeumann) {
       const Point a = mesh.vertex(pq[0]), b = mesh.vertex(pq[1]);
       const double len = (b - a).norm();
+      // A normal pressure p is the traction t = −p n with the edge's outward normal n.
+      const Point n = mesh.edge_normal(e);
       for (int c = 0; c < 2; ++c) {
+        const ScalarFunction& t = gd.normal_pressure ? gd.values[0] : gd.values[c];
+        const double factor = gd.normal_pressure ? -n[c] : 1.0;
         double flux = 0.0;
-        if (gd.values[c])
+        if (t)
           for (int q = 0; q < 3; ++q) {
             Point x = a + kGaussX[q] * (b - a);
-            flux += kGaussW[q] * gd.values[c](x.x(), x.y());
+            flux += kGaussW[q] * t(x.x(), x.y());
           }
-        xd[space_.sigma_dof(e, c)] = flux * len / mu_;
+        xd[space_.sigma_dof(e, c)] = factor * flux * len / mu_;
       }
     }
   }

@@ -55,6 +55,8 @@ struct ContactData {
 struct GroupData {
   GroupRole role = GroupRole::kNeumann;
   std::array<ScalarFunction, 2> values;  ///< u_D (Dirichlet) or t_N (Neumann), Cartesian
+  /// Neumann: values[0] is a normal pressure p, the traction t = −p n (n the outward normal).
+  bool normal_pressure = false;
   ContactData contact;
 };
 

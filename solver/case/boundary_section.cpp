@@ -1,5 +1,5 @@
-// The `boundary` section: a condition per boundary group (dirichlet, neumann, contact), and
-// the obstacles of contact conditions. Also the scalars [a, b] that conditions and the body
+// The `boundary` section: a condition per boundary group (dirichlet, neumann, pressure, contact),
+// and the obstacles of contact conditions. Also the scalars [a, b] that conditions and the body
 // force share.
 
 #include "case/case_sections.hpp"
@@ -87,7 +87,7 @@ ObjectRulePtr condition_rule(const CaseReadOptions& options) {
   r->title = "a boundary condition";
   r->anchor = "condition";
   r->discriminator = "type";
-  r->discriminator_meaning = "dirichlet, neumann or contact";
+  r->discriminator_meaning = "dirichlet, neumann, pressure or contact";
   const ValueRule pair = scalar_pair_value(options);
   r->variants = {
       {"dirichlet",
@@ -107,6 +107,14 @@ ObjectRulePtr condition_rule(const CaseReadOptions& options) {
        "a neumann condition",
        "prescribed traction σn",
        {required_field("traction", pair, "the prescribed traction [t_x, t_y]")},
+       {},
+       ""},
+      {"pressure",
+       "a pressure condition",
+       "a normal pressure: the traction t = −p n with the body's outward normal n",
+       {required_field("pressure", scalar_value(options.limits.max_expression_length),
+                       "the pressure p: a number or an expression of x and y; p > 0 pushes "
+                       "into the body")},
        {},
        ""},
       {"contact",
@@ -153,6 +161,9 @@ BoundaryCondition read_condition(const json& j) {
   } else if (type == "neumann") {
     bc.type = BoundaryCondition::Type::kNeumann;
     bc.values = read_scalar_pair(j["traction"]);
+  } else if (type == "pressure") {
+    bc.type = BoundaryCondition::Type::kPressure;
+    bc.values[0] = read_scalar(j["pressure"]);
   } else {
     bc.type = BoundaryCondition::Type::kContact;
     bc.obstacle = read_obstacle(j["obstacle"]);

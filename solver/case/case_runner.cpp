@@ -63,6 +63,10 @@ ProblemData problem_data(const CaseSpec& spec, const Mesh& mesh) {
       case BoundaryCondition::Type::kNeumann:
         g.role = GroupRole::kNeumann;
         break;
+      case BoundaryCondition::Type::kPressure:
+        g.role = GroupRole::kNeumann;
+        g.normal_pressure = true;
+        break;
       case BoundaryCondition::Type::kContact:
         g.role = GroupRole::kContact;
         g.contact.obstacle = rigid_obstacle(bc.obstacle);

@@ -55,9 +55,10 @@ struct Obstacle {
 enum class ContactDirection { kBodyNormal, kObstacleNormal };
 
 struct BoundaryCondition {
-  enum class Type { kDirichlet, kNeumann, kContact };
+  enum class Type { kDirichlet, kNeumann, kPressure, kContact };
   Type type = Type::kNeumann;
-  std::array<Scalar, 2> values;  ///< displacement (Dirichlet) or traction (Neumann)
+  /// displacement (Dirichlet), traction (Neumann) or [p, 0] (pressure)
+  std::array<Scalar, 2> values;
   /// Dirichlet: false for a component given as null, which is free with zero traction (a
   /// roller or symmetry plane).
   std::array<bool, 2> prescribed = {true, true};

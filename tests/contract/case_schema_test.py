@@ -96,6 +96,8 @@ BOTH_REFUSE = [
     ("displacement_boolean_component", setting("/boundary/top/displacement", [None, False])),
     ("gap_obstacle_moved", setting("/boundary/bottom/obstacle/displacement", [0, 0.1])),
     ("time_limit_negative", setting("/solver/time_limit_s", -1)),
+    ("pressure_without_value", setting("/boundary/left", {"type": "pressure"})),
+    ("pressure_as_pair", setting("/boundary/left", {"type": "pressure", "pressure": [0, 1]})),
     ("sweep_without_pointer", setting("/sweep", {"values": [1]})),
     ("sweep_without_values", setting("/sweep", {"pointer": "/material/mu"})),
     ("sweep_text_value", setting("/sweep", {"pointer": "/material/mu", "values": ["2"]})),
@@ -158,6 +160,7 @@ BOTH_ACCEPT = [
     ("moved_plane", setting("/boundary/bottom/obstacle", {
         "type": "plane", "point": [0, 0], "normal": [0, 1], "displacement": [0, 0.01]})),
     ("time_limit", setting("/solver/time_limit_s", 30)),
+    ("pressure", setting("/boundary/left", {"type": "pressure", "pressure": "0.01*y"})),
     ("sweep", setting("/sweep", {"pointer": "/material/mu", "values": [1, 2]})),
 ]
 

@@ -109,6 +109,13 @@ TEST_P(JobStoreContract, AFailedJobCanKeepAResultAndItsConvergence) {
   EXPECT_FALSE(listed.jobs[0].convergence.converged);  // a result without the field
   EXPECT_EQ(listed.jobs[0].id, plain);
   EXPECT_EQ(store().count_not_converged(), 1);
+  JobListQuery unconverged;
+  unconverged.converged = false;
+  const auto only = store().list(unconverged);
+  ASSERT_EQ(only.jobs.size(), 1u);
+  EXPECT_EQ(only.jobs[0].id, id);
+  unconverged.converged = true;
+  EXPECT_TRUE(store().list(unconverged).jobs.empty());  // the other job's result says nothing
 }
 
 TEST_P(JobStoreContract, NonFiniteProgressIsStoredAsUnknown) {

@@ -46,6 +46,12 @@ TEST(ServiceConvergence, AnUnconvergedSolveSucceedsAndSaysSoEverywhere) {
   EXPECT_EQ(listed["jobs"][0]["id"], bad);  // newest first
   EXPECT_EQ(listed["jobs"][0]["converged"], false);
   EXPECT_EQ(listed["jobs"][1]["converged"], true);
+  const json not_converged = json::parse(cli.Get("/v1/jobs?converged=false")->body);
+  ASSERT_EQ(not_converged["jobs"].size(), 1u);
+  EXPECT_EQ(not_converged["jobs"][0]["id"], bad);
+  EXPECT_EQ(json::parse(cli.Get("/v1/jobs?converged=true&state=succeeded")->body)["jobs"][0]["id"],
+            good);
+  testing::expect_problem(cli.Get("/v1/jobs?converged=maybe"), 400);
 
   const json result = json::parse(cli.Get(path(bad, "result"))->body);
   EXPECT_EQ(result["converged"], false);

@@ -9,6 +9,7 @@
 #include <fstream>
 #include <sstream>
 #include <string>
+#include <vector>
 
 #include "case/case_reader.hpp"
 #include "case/case_runner.hpp"
@@ -142,6 +143,51 @@ TEST(RunControls, ABodyThatCanSlideIsRefusedBeforeSolving) {
   EXPECT_NE(errors[0].detail.find("no dirichlet group prescribes u_x"), std::string::npos)
       << errors[0].detail;
   EXPECT_TRUE(validate_case(uniaxial_case(1.0)).empty());
+}
+
+/// The values of the point array `name` of a VTU text, flattened.
+std::vector<double> point_array(const std::string& vtu, const std::string& name) {
+  const auto at = vtu.find("Name=\"" + name + "\"");
+  const auto begin = vtu.find('>', at) + 1, end = vtu.find("</DataArray>", at);
+  std::istringstream in(vtu.substr(begin, end - begin));
+  std::vector<double> values;
+  for (double v; in >> v;) values.push_back(v);
+  return values;
+}
+
+// A pressure p on the top of a block held by rollers below and on the left: uniaxial stress
+// σ_yy = −p, so u_y(top) = −p (λ+2μ)/(4μ(λ+μ)) and u_x(right) = p λ/(4μ(λ+μ)); the same as the
+// traction [0, −p], and the sign says the pressure pushes into the body.
+TEST(RunControls, APressureIsTheTractionAlongTheInwardNormal) {
+  json j = uniaxial_case(1.0);
+  j["boundary"] = {{"top", {{"type", "pressure"}, {"pressure", 0.01}}},
+                   {"left", {{"type", "dirichlet"}, {"displacement", {0, nullptr}}}},
+                   {"bottom", {{"type", "dirichlet"}, {"displacement", {nullptr, 0}}}}};
+  json traction = j;
+  traction["boundary"]["top"] = {{"type", "neumann"}, {"traction", {0, -0.01}}};
+  const CaseReadResult read = read_case(j), read_traction = read_case(traction);
+  ASSERT_TRUE(read.spec && read_traction.spec);
+  const RunOutput out = run_case(*read.spec), out_traction = run_case(*read_traction.spec);
+  ASSERT_EQ(out.result["converged"], true);
+  const std::vector<double> u = point_array(out.vtu, "u");
+  ASSERT_FALSE(u.empty());
+  constexpr std::size_t components = 3;  // VTK vectors: (u_x, u_y, 0)
+  double uy_min = 0.0, ux_max = 0.0;
+  for (std::size_t i = 0; i + 2 < u.size(); i += components) {
+    ux_max = std::max(ux_max, u[i]);
+    uy_min = std::min(uy_min, u[i + 1]);
+  }
+  EXPECT_NEAR(uy_min, -0.01 * 3.0 / 8.0, 1e-8);
+  EXPECT_NEAR(ux_max, 0.01 / 8.0, 1e-8);
+  EXPECT_EQ(u, point_array(out_traction.vtu, "u"));
+
+  // On the right side the outward normal is +x: the pressure is the traction [−p, 0] there.
+  j["boundary"]["right"] = {{"type", "pressure"}, {"pressure", 0.01}};
+  traction["boundary"]["right"] = {{"type", "neumann"}, {"traction", {-0.01, 0}}};
+  const RunOutput both = run_case(*read_case(j).spec);
+  const RunOutput both_traction = run_case(*read_case(traction).spec);
+  EXPECT_EQ(point_array(both.vtu, "u"), point_array(both_traction.vtu, "u"));
+  EXPECT_NE(point_array(both.vtu, "u"), u);
 }
 
 TEST(RunControls, ADisplacementWithBothComponentsNullIsRefused) {
