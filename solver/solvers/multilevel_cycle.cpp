@@ -5,6 +5,7 @@
 #include <chrono>
 
 #include "core/fosls_assert.hpp"
+#include "core/indefinite_system.hpp"
 #include "solvers/galerkin_product.hpp"
 
 namespace fosls {
@@ -216,6 +217,7 @@ SparseMatrix MultilevelCycle::truncated_galerkin() {
 
 namespace {
 constexpr double kCoarseShift = 1e-10;
+constexpr double kRetryCoarseShift = 1e-8;
 }  // namespace
 
 void MultilevelCycle::rebuild_coarse_levels() {
@@ -284,7 +286,20 @@ void MultilevelCycle::rebuild_coarse_levels() {
     if (j > 0) {
       // The truncated prolongation into level j needs level j's (truncated) matrix.
       truncate_level(j);
-      make_smoother(j);
+      try {
+        make_smoother(j);
+      } catch (const IndefiniteSystemError&) {
+        if (!truncating) throw;
+        // On deep bisection hierarchies (Hertz after 9 adaptive steps, 11 levels) the rounding
+        // of the truncated chain outgrows kCoarseShift, and the strip block of a level lost
+        // definiteness: a case with weights far inside the limit was refused. A larger shift on
+        // that level, only when needed, keeps its correction minimising a majorant of J, so
+        // the cycle stays monotone; raising kCoarseShift for every level slowed the robustness
+        // cases (146 iterations on one).
+        const Vector d = a.diagonal();
+        for (int i = 0; i < a.rows(); ++i) a.coeffRef(i, i) += kRetryCoarseShift * d[i];
+        make_smoother(j);
+      }
     }
   }
   coarse_solver_ = std::make_unique<SparseBoxQpSolver>(matrix(0));
