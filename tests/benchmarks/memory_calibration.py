@@ -26,7 +26,11 @@ METHODS = ["mmg", "tnnmg", "pdas", "pgs"]
 def peak_of(cmd):
     """Runs cmd; returns (peak RSS in bytes, wall seconds, stdout)."""
     t0 = time.time()
-    proc = subprocess.Popen(cmd, stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
+    # Output goes to files, not pipes: the result JSON of a large case fills a pipe that is
+    # only read at the end, and the child then blocks forever (seen at 2.1M unknowns).
+    out_file = tempfile.TemporaryFile(mode="w+")
+    err_file = tempfile.TemporaryFile(mode="w+")
+    proc = subprocess.Popen(cmd, stdout=out_file, stderr=err_file, text=True)
     peak = 0
     status = f"/proc/{proc.pid}/status"
     while proc.poll() is None:
@@ -38,7 +42,10 @@ def peak_of(cmd):
         except OSError:
             pass
         time.sleep(0.02)
-    out, err = proc.communicate()
+    proc.wait()
+    out_file.seek(0)
+    err_file.seek(0)
+    out, err = out_file.read(), err_file.read()
     if proc.returncode not in (0, 3):
         sys.exit(f"{' '.join(cmd)} failed ({proc.returncode}): {err}")
     return peak, time.time() - t0, out
