@@ -5,6 +5,7 @@
 #include <fstream>
 #include <sstream>
 
+#include "../shipped_example.hpp"
 #include "case/case_reader.hpp"
 #include "case/case_runner.hpp"
 
@@ -12,10 +13,7 @@ namespace fosls {
 namespace {
 
 nlohmann::json run_example(const std::string& name, int steps = -1) {
-  std::ifstream in(std::string(FOSLS_SOURCE_DIR) + "/solver/examples/" + name + ".json");
-  std::stringstream text;
-  text << in.rdbuf();
-  nlohmann::json j = nlohmann::json::parse(text.str());
+  nlohmann::json j = testing::load_shipped_example(name);
   if (steps >= 0) {
     j["adaptivity"]["steps"] = steps;
     j["adaptivity"].erase("max_dofs");

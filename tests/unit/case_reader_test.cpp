@@ -2,6 +2,7 @@
 // where it belongs, and bad input gets every problem listed with its JSON pointer.
 
 #include "case/case_reader.hpp"
+#include "../shipped_example.hpp"
 
 #include <gtest/gtest.h>
 #include <unistd.h>
@@ -20,14 +21,7 @@ namespace {
 
 using nlohmann::json;
 
-json load_example(const std::string& name) {
-  std::ifstream in(std::string(FOSLS_SOURCE_DIR) + "/solver/examples/" + name + ".json");
-  std::stringstream text;
-  text << in.rdbuf();
-  json j = json::parse(text.str(), nullptr, false);
-  EXPECT_FALSE(j.is_discarded()) << name;
-  return j;
-}
+json load_example(const std::string& name) { return testing::load_shipped_example(name); }
 
 /// A small valid case that the tests below break one field at a time.
 json valid_case() {

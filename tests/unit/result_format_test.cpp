@@ -11,6 +11,7 @@
 #include <sstream>
 #include <string>
 
+#include "../shipped_example.hpp"
 #include "case/case_reader.hpp"
 #include "case/case_runner.hpp"
 #include "case/result_rules.hpp"
@@ -22,12 +23,7 @@ namespace {
 
 using nlohmann::json;
 
-json load_example(const std::string& name) {
-  std::ifstream in(std::string(FOSLS_SOURCE_DIR) + "/solver/examples/" + name + ".json");
-  std::stringstream text;
-  text << in.rdbuf();
-  return json::parse(text.str());
-}
+json load_example(const std::string& name) { return testing::load_shipped_example(name); }
 
 RunOutput solve(const json& j) {
   const CaseReadResult read = read_case(j);
