@@ -231,7 +231,7 @@ def fitted_slope(dofs, estimators):
 
 
 class CornerSingularity(unittest.TestCase):
-    """Section 7: the L-shaped body's re-entrant corner (and the contact zone's ends) limit
+    """Section 11: the L-shaped body's re-entrant corner (and the contact zone's ends) limit
     uniform refinement to J^½ ~ N^(−0.3); the adaptive loop recovers N^(−1/2)."""
 
     def setUp(self):
