@@ -4,6 +4,7 @@ plane-strain (2D) Hertz theory: writes docs/figures/hertz_force_indentation.svg 
 table of docs/validation.md, "Force-indentation curve".
 
     /usr/bin/python3 tests/validation/force_indentation.py [--bin build/bin/fosls-contact]
+        [--refinements 3] [--figure PATH] [--check TOL]
 
 The case is solver/examples/hertz.json at rest (top fixed), the plane obstacle lifted by delta
 (its "displacement"), the constraint along the obstacle normal, delta swept over ten values in
@@ -26,10 +27,11 @@ ROOT = os.path.abspath(os.path.join(os.path.dirname(__file__), "..", ".."))
 DELTAS = [0.001 * k for k in range(1, 11)]
 
 
-def sweep_case():
+def sweep_case(refinements):
     with open(os.path.join(ROOT, "solver", "examples", "hertz.json")) as f:
         case = json.load(f)
     case["name"] = "hertz_indentation"
+    case["mesh"]["refinements"] = refinements
     case["boundary"]["top"]["displacement"] = [0, 0]
     contact = case["boundary"]["contact"]
     contact["obstacle"]["displacement"] = [0, DELTAS[0]]
@@ -61,6 +63,15 @@ def hertz_indentation(F, R, Estar):
     """delta(F) of a cylinder on a half-space, against a far-field reference."""
     a = math.sqrt(4 * F * R / (math.pi * Estar))
     return F / (math.pi * Estar) * (2 * math.log(4 * R / a) - 1)
+
+
+def relative_stiffness_deviation(points, R, Estar):
+    """Largest |FOSLS F/delta - Hertz F/delta|, both relative to their first point."""
+    first = points[0]["force"][1] / points[0]["value"]
+    first_hertz = points[0]["force"][1] / hertz_indentation(points[0]["force"][1], R, Estar)
+    return max(abs(p["force"][1] / p["value"] / first -
+                   p["force"][1] / hertz_indentation(p["force"][1], R, Estar) / first_hertz)
+               for p in points)
 
 
 def table(points, R, Estar):
@@ -119,10 +130,14 @@ def main():
     parser = argparse.ArgumentParser(description=__doc__,
                                      formatter_class=argparse.RawDescriptionHelpFormatter)
     parser.add_argument("--bin", default=os.path.join(ROOT, "build", "bin", "fosls-contact"))
+    parser.add_argument("--refinements", type=int, default=3)
     parser.add_argument("--figure",
                         default=os.path.join(ROOT, "docs", "figures", "hertz_force_indentation.svg"))
+    parser.add_argument("--check", type=float, metavar="TOL",
+                        help="fail unless every point converged, F grows with delta, and the "
+                             "relative stiffness follows Hertz's within TOL")
     args = parser.parse_args()
-    case = sweep_case()
+    case = sweep_case(args.refinements)
     started = time.time()
     result = solve(args.bin, case)
     wall = time.time() - started
@@ -133,6 +148,23 @@ def main():
     print("%d unknowns, E* = %.4g, R = %g, %d points in %.1f s (wall); wrote %s\n" % (
         result["dofs"], Estar, R, len(points), wall, os.path.relpath(args.figure, ROOT)))
     print(table(points, R, Estar))
+    deviation = relative_stiffness_deviation(points, R, Estar)
+    print("\nlargest deviation of the relative stiffness from Hertz's: %.4f" % deviation)
+    if args.check is not None:
+        forces = [p["force"][1] for p in points]
+        problems = []
+        if not all(p["converged"] for p in points):
+            problems.append("a point did not converge")
+        if any(b <= a for a, b in zip(forces, forces[1:])):
+            problems.append("F does not grow with delta: %s" % forces)
+        if not deviation <= args.check:
+            problems.append("relative stiffness off Hertz's by %.4f > %g" % (deviation, args.check))
+        # A linear F(delta) would keep the relative stiffness at 1: the check must see growth.
+        growth = forces[-1] / points[-1]["value"] / (forces[0] / points[0]["value"])
+        if not growth > 1.2:
+            problems.append("stiffness grows by a factor %.3f only" % growth)
+        if problems:
+            sys.exit("force_indentation: " + "; ".join(problems))
 
 
 if __name__ == "__main__":

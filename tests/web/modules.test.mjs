@@ -12,7 +12,8 @@ import { locateJson, rangeForPointer, lineOfOffset, splitPointer } from '../../w
 import { contactModulus, hertzContact, hertzForCase, hertzPressure, lameParameters } from '../../web/app/hertz.js';
 import { parseVtu } from '../../web/app/vtu.js';
 import { autoMagnification, colourAt, maxDisplacement } from '../../web/app/mesh_view.js';
-import { MESH_FIELDS } from '../../web/app/mesh_fields.js';
+import { MESH_FIELDS, probeSummary } from '../../web/app/mesh_fields.js';
+import { contactCsv, sweepCsv } from '../../web/app/csv_export.js';
 import { bounds, deformedPoints, fitTransform, locatePoint, meshEdges, valueRange } from '../../web/app/mesh_drawing.js';
 
 const repo = join(dirname(fileURLToPath(import.meta.url)), '..', '..');
@@ -239,4 +240,22 @@ test('the fit puts the mesh in the middle of the canvas, y up, and points are lo
   const moved = deformedPoints(mesh, 100);
   assert.deepEqual([moved[2], moved[5]], [1.1, 1 - 0.2]);
   assert.equal(locatePoint(mesh, moved, 1.05, 0.5)?.cell, 0);
+});
+
+test('a probe adds σ of the triangle and u interpolated at the point', () => {
+  const mesh = parseVtu(twoTriangles);
+  // Triangle 1 = points 0, 2, 3; its centroid: u = mean of (0, 0), (0.001, −0.002), (0, −0.002).
+  const r = probeSummary(mesh, { cell: 1, weights: [1 / 3, 1 / 3, 1 / 3] }, String);
+  assert.ok(Math.abs(r.u[0] - 0.001 / 3) < 1e-18 && Math.abs(r.u[1] + 0.004 / 3) < 1e-18, `${r.u}`);
+  assert.match(r.text, /^σ = \[2, -3; 4, 2\] · u = \(/);
+  // At a vertex the interpolation is the vertex's value.
+  assert.deepEqual(probeSummary(mesh, { cell: 1, weights: [0, 1, 0] }, String).u, [0.001, -0.002]);
+});
+
+test('CSV of the contact boundary and of a sweep', () => {
+  const contact = { x: [-0.1, 0.1], y: [0, 0], s: [0.9, 1.1], length: [0.2, 0.2], pressure: [0.5, 0], gap: [0, 0.01], active: [true, false] };
+  assert.equal(contactCsv(contact), 'x,y,s,length,pressure,gap,active\n-0.1,0,0.9,0.2,0.5,0,1\n0.1,0,1.1,0.2,0,0.01,0\n');
+  assert.equal(contactCsv({ x: [] }), 'x,y,s,length,pressure,gap,active\n');
+  const sweep = { pointer: '/a/b', points: [{ value: 1, force: [0, 2.5], peak_pressure: 3, contact_length: 0.4, converged: false, stop_reason: 'max_iterations', iterations: 200 }] };
+  assert.equal(sweepCsv(sweep), '/a/b,force_x,force_y,peak_pressure,contact_length,converged,stop_reason,iterations\n1,0,2.5,3,0.4,0,"max_iterations",200\n');
 });

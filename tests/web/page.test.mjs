@@ -258,6 +258,14 @@ test('pressure and gap are plotted along the contact boundary', async () => {
   assert.equal(await plot.getAttribute('data-series'), 'pressure|gap|Hertz pressure (plane strain)');
   assert.equal(await plot.getAttribute('data-points'), String(result.contact.gap.length));
   await expectPixels('#pressure-plot', '#2e8b57', 100, 'gap line');
+  // The CSV link holds the same numbers, one row per contact edge.
+  const csv = await page.locator('#download-contact-csv').evaluate(async (a) => (await fetch(a.href)).text());
+  const rows = csv.trim().split('\n').map((line) => line.split(','));
+  assert.deepEqual(rows[0], ['x', 'y', 's', 'length', 'pressure', 'gap', 'active']);
+  assert.equal(rows.length - 1, result.contact.x.length);
+  assert.deepEqual(rows.slice(1).map((r) => Number(r[4])), result.contact.pressure);
+  assert.deepEqual(rows.slice(1).map((r) => Number(r[5])), result.contact.gap);
+  assert.equal(await page.locator('#sweep-csv-item').isVisible(), false, 'no sweep, no sweep CSV');
   // The gap (an edge mean) nearly closes where the edge carries pressure, and opens at the ends.
   const gap = result.contact.gap;
   const gmax = Math.max(...gap);
@@ -278,7 +286,7 @@ test('the mesh view zooms about the pointer, pans, shows edges and probes values
     await page.mouse.move(x, y);
     await page.waitForFunction(() => document.querySelector('#mesh-probe').dataset.cell !== undefined);
     const d = await page.locator('#mesh-probe').evaluate((e) => ({ ...e.dataset }));
-    return { cell: Number(d.cell), value: Number(d.value), x: Number(d.x), y: Number(d.y) };
+    return { cell: Number(d.cell), value: Number(d.value), x: Number(d.x), y: Number(d.y), u: [Number(d.ux), Number(d.uy)] };
   };
   const p0 = await probeAt(...at);
   const p1 = await probeAt(at[0] + 100, at[1]);
@@ -292,7 +300,14 @@ test('the mesh view zooms about the pointer, pans, shows edges and probes values
   const cross = (ux, uy, vx, vy) => ux * vy - uy * vx;
   const signs = [cross(bx - ax, by - ay, p0.x - ax, p0.y - ay), cross(cx - bx, cy - by, p0.x - bx, p0.y - by), cross(ax - cx, ay - cy, p0.x - cx, p0.y - cy)];
   assert.ok(signs.every((v) => v >= -1e-15) || signs.every((v) => v <= 1e-15), `point in triangle ${p0.cell}`);
-  assert.match(await page.locator('#mesh-probe').innerText(), /^Probe: x = .*von Mises stress = /);
+  assert.match(await page.locator('#mesh-probe').innerText(), /^Probe: x = .*von Mises stress = .*σ = \[.*u = \(/);
+  // u at the probed point: the linear interpolation of the triangle's vertex values.
+  const twiceArea = cross(bx - ax, by - ay, cx - ax, cy - ay);
+  const weights = [signs[1] / twiceArea, signs[2] / twiceArea, signs[0] / twiceArea];
+  const uAt = (d) => weights.reduce((sum, w, k) => sum + w * mesh.pointData.u.values[tri[k] * mesh.pointData.u.components + d], 0);
+  const probed = p0.u;
+  const umax = Math.max(...mesh.pointData.u.values.map(Math.abs));
+  assert.ok(Math.abs(probed[0] - uAt(0)) < 1e-9 * umax && Math.abs(probed[1] - uAt(1)) < 1e-9 * umax, `u ${probed} against ${uAt(0)}, ${uAt(1)}`);
 
   // Zoom about the pointer: the point under it stays, 100 px span 1/zoom of the length.
   await page.mouse.move(...at);
@@ -384,6 +399,11 @@ test('a sweep shows the force of every point against the swept value', async () 
   assert.equal(await page.locator('#sweep-plot').getAttribute('data-unconverged'), '0');
   await expectPixels('#sweep-plot', '#1f5fbf', 50, 'sweep curve');
   assert.match(await page.locator('#sweep-note').innerText(), /^3 points of \/boundary\/top\/displacement\/1.*all converged/);
+  const csv = await page.locator('#download-sweep-csv').evaluate(async (a) => (await fetch(a.href)).text());
+  const lines = csv.trim().split('\n');
+  assert.equal(lines[0], '/boundary/top/displacement/1,force_x,force_y,peak_pressure,contact_length,converged,stop_reason,iterations');
+  const result = await (await fetch(`${server.url}/v1/jobs/${await row.getAttribute('data-job-id')}/result`)).json();
+  assert.deepEqual(lines.slice(1).map((l) => Number(l.split(',')[2])), result.sweep.points.map((p) => p.force[1]));
 });
 
 test('a second job is drawn over the first: pressure and gap, and the sweep curve', async () => {

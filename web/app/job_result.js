@@ -3,6 +3,7 @@
 // bar. `view` is the page's record of the job shown: {result, mesh, meshError, hertz,
 // compare, charts}; `plots` the chart module (null when uPlot is missing).
 import * as api from './api.js';
+import { contactCsv, sweepCsv } from './csv_export.js';
 import { fmt, seconds } from './format.js';
 import { MESH_FIELDS, UNITS } from './mesh_fields.js';
 import { autoMagnification } from './mesh_view.js';
@@ -70,6 +71,16 @@ export function renderSummary(job, view) {
   $('download-result').download = `job-${job.id}-result.json`;
   $('download-vtu').href = api.solutionUrl(job.id);
   $('download-vtu').download = `job-${job.id}.vtu`;
+  setCsvLink($('download-contact-csv'), contactCsv(r.contact), `job-${job.id}-contact.csv`);
+  $('sweep-csv-item').hidden = !r.sweep;
+  if (r.sweep) setCsvLink($('download-sweep-csv'), sweepCsv(r.sweep), `job-${job.id}-sweep.csv`);
+}
+
+/** Points `link` at a CSV made in the browser (the previous one's memory is released). */
+function setCsvLink(link, text, filename) {
+  if (link.href.startsWith('blob:')) URL.revokeObjectURL(link.href);
+  link.href = URL.createObjectURL(new Blob([text], { type: 'text/csv' }));
+  link.download = filename;
 }
 
 /** The charts of the view (and of the job compared with, when one is chosen). */

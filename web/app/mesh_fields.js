@@ -51,3 +51,24 @@ export const MESH_FIELDS = {
   u_y: { label: 'displacement u_y', unit: 'L', compute: displacementPerCell((x, y) => y) },
   functional: { label: 'FOSLS functional (error indicator)', unit: 'scaled', compute: cellArray('functional') },
 };
+
+/**
+ * What a probe reports besides the coloured field: σ of the triangle (row by row) and u at the
+ * point, interpolated linearly from the triangle's vertices (u is P1). `hit` is {cell,
+ * weights} (barycentric); returns {text, u: [ux, uy] or null}.
+ */
+export function probeSummary(mesh, hit, format) {
+  const parts = [];
+  const sigma = mesh.cellData.sigma;
+  if (sigma && sigma.components >= 4) {
+    const s = (k) => format(sigma.values[hit.cell * sigma.components + k]);
+    parts.push(`σ = [${s(0)}, ${s(1)}; ${s(2)}, ${s(3)}]`);
+  }
+  const u = mesh.pointData.u;
+  let at = null;
+  if (u) {
+    at = [0, 1].map((d) => hit.weights.reduce((sum, w, k) => sum + w * u.values[mesh.triangles[3 * hit.cell + k] * u.components + d], 0));
+    parts.push(`u = (${format(at[0])}, ${format(at[1])})`);
+  }
+  return { text: parts.join(' · '), u: at };
+}

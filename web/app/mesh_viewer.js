@@ -2,6 +2,7 @@
 // or the Reset button), mesh edges on or off, and a probe that reports the value and the
 // coordinates under the pointer (hover) or at a clicked point (pinned, marked with a cross).
 import { bounds, deformedPoints, drawMesh, fitTransform, locatePoint } from './mesh_drawing.js';
+import { probeSummary } from './mesh_fields.js';
 
 const ZOOM_MIN = 0.5;
 const ZOOM_MAX = 2000;
@@ -173,9 +174,12 @@ export class MeshViewer {
     const [x, y] = this.pointOf_(hit, this.mesh_.points);
     const value = this.field_.values[hit.cell];
     const f = this.format_;
+    const more = probeSummary(this.mesh_, hit, f);
     out.textContent = `${pinned ? 'Pinned' : 'Probe'}: x = ${f(x)}, y = ${f(y)} (undeformed) · ` +
-      `${this.field_.label} = ${f(value)} (${this.field_.unitText}) · triangle ${hit.cell}`;
+      `${this.field_.label} = ${f(value)} (${this.field_.unitText}) · triangle ${hit.cell}` +
+      (more.text ? ` · ${more.text}` : '');
     Object.assign(out.dataset, { cell: String(hit.cell), value: String(value), x: String(x), y: String(y) });
+    if (more.u) Object.assign(out.dataset, { ux: String(more.u[0]), uy: String(more.u[1]) });
   }
 
   listen_() {
