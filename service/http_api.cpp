@@ -10,6 +10,7 @@
 
 #include "api_routes.hpp"
 #include "json_duplicates.hpp"
+#include "large_body.hpp"
 #include "openapi.hpp"
 #include "problem.hpp"
 #include "problem_catalogue.hpp"
@@ -454,7 +455,7 @@ void HttpApi::get_solution(const Request& req, Response& res, std::int64_t id) {
     if (auto text = store_.vtu(id)) {
       res.set_header("Content-Disposition",
                      "attachment; filename=\"job-" + std::to_string(id) + ".vtu\"");
-      res.set_content(*text, "application/xml");
+      set_large_body(req, res, std::move(*text), "application/xml");
       return;
     }
   }

@@ -103,6 +103,20 @@ json mesh_json(const MeshSpec& mesh) {
   return m;
 }
 
+json stopping_json(const SolverReport& report, const SolverOptions& options) {
+  const char* converged_by = report.converged_by == ConvergedBy::kKktResidual ? "kkt_residual"
+                             : report.converged_by == ConvergedBy::kAlgebraicError
+                                 ? "algebraic_error"
+                                 : "none";
+  return {{"rule",
+           options.stopping == StoppingRule::kDiscretisation ? "discretisation" : "kkt_residual"},
+          {"fraction", options.discretisation_fraction},
+          {"converged_by", converged_by},
+          {"algebraic_error",
+           std::isfinite(report.algebraic_error) ? json(report.algebraic_error) : json()},
+          {"estimator", report.estimator}};
+}
+
 }  // namespace
 
 StopReason stop_reason(const SolverReport& report) {
@@ -163,6 +177,7 @@ json result_json(const CaseSpec& spec, const SolverReport& report, const Contact
   r["cancelled"] = report.cancelled;
   r["iterations"] = report.iterations;
   r["tolerance"] = options.tolerance;
+  r["stopping"] = stopping_json(report, options);
   r["levels"] = size.levels;
   r["dofs"] = size.dofs;
   r["dofs_total"] = size.dofs_total;

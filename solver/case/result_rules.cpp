@@ -139,6 +139,26 @@ ObjectRulePtr functional_rule() {
                     "\"stresses scaled by mu\": σ and f enter J divided by μ")});
 }
 
+ObjectRulePtr stopping_rule() {
+  return object_rule(
+      "the stopping rule", "stopping",
+      {output_field("rule", choice_value({"kkt_residual", "discretisation"}), "",
+                    "solver.tolerance as a rule: a number is kkt_residual, \"discretisation\" "
+                    "also stops at the discretisation error (docs/method.md §5.1)"),
+       output_field("fraction", number(), "1", "solver.discretisation_fraction used"),
+       output_field("converged_by", choice_value({"kkt_residual", "algebraic_error", "none"}), "",
+                    "the test the last iterate met: the KKT residual reached tolerance, or the "
+                    "algebraic error estimate fell to fraction · estimator; none when the solve "
+                    "did not converge"),
+       output_field("algebraic_error",
+                    one_of_value({number_value(), null_value()}, "a number or null"), "scaled",
+                    "estimated algebraic error (J(x) − J(x_h))^½ of the last iterate from the "
+                    "decrease of J and its observed rate; null while the last three iterations "
+                    "did not decrease J at a rate below 1"),
+       output_field("estimator", number(), "scaled",
+                    "J^½ of the last iterate, the estimated discretisation error")});
+}
+
 ObjectRulePtr material_echo_rule() {
   return object_rule(
       "the material", "material_echo",
@@ -257,7 +277,9 @@ ObjectRulePtr result_rule() {
        output_field("method", choice_value(method_names()), "", "the solver method"),
        output_field("converged", boolean_value(), "",
                     "the stopping rule was met: final_kkt_residual ≤ tolerance · "
-                    "initial_kkt_residual"),
+                    "initial_kkt_residual or, with solver.tolerance \"discretisation\", the "
+                    "estimated algebraic error ≤ fraction · J^½ (stopping.converged_by says "
+                    "which)"),
        output_field("stop_reason", choice_value(reasons), "",
                     "why the iteration stopped: converged, max_iterations (solver.max_iterations "
                     "reached first), time_limit (solver.time_limit_s ran out first; the result "
@@ -266,7 +288,12 @@ ObjectRulePtr result_rule() {
        output_field("iterations", count(), "1",
                     "iterations on the finest level (the nested iteration's are in "
                     "solver_statistics)"),
-       output_field("tolerance", number(), "1", "solver.tolerance of the case"),
+       output_field("tolerance", number(), "1",
+                    "solver.tolerance of the case; with \"discretisation\" the KKT tolerance "
+                    "that still applies (the default)"),
+       output_field("stopping", object_value(stopping_rule()), "",
+                    "the stopping rule, which test ended the solve, and the two error "
+                    "estimates at the last iterate"),
        output_field("levels", count(), "1", "levels of the hierarchy: mesh.refinements + 1"),
        output_field("dofs", count(), "1", "unknowns of the finest level that are solved for"),
        output_field("dofs_total", count(), "1",

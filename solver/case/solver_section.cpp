@@ -67,8 +67,19 @@ ObjectRulePtr solver_rule() {
   r->fields = {
       optional_field("method", choice_value(method_names()), method_info(s.method).name,
                      "the solver method"),
-      optional_field("tolerance", number_value(Range::open(0, 1)), s.tolerance,
-                     "stopping tolerance: the KKT residual relative to the initial iterate's"),
+      optional_field(
+          "tolerance",
+          one_of_value({number_value(Range::open(0, 1)), choice_value({"discretisation"})},
+                       "a number in (0, 1) or the string \"discretisation\""),
+          s.tolerance,
+          "stopping tolerance: the KKT residual relative to the initial iterate's; "
+          "\"discretisation\": stop once the estimated algebraic error is "
+          "discretisation_fraction times the estimated discretisation error J^½, or "
+          "at the default KKT tolerance, whichever comes first (docs/method.md §5.1)"),
+      optional_field("discretisation_fraction", number_value(Range::open(0, 1)),
+                     s.discretisation_fraction,
+                     "with tolerance \"discretisation\": the algebraic error allowed, as a "
+                     "fraction of the discretisation error"),
       optional_field("max_iterations", integer_value(Range::closed(1, 100000)), s.max_iterations,
                      "iterations before giving up (the result says \"converged\": false)"),
       optional_field("time_limit_s", number_value(Range::closed(0, 1e7)), s.time_limit_s,
@@ -99,7 +110,11 @@ ObjectRulePtr solver_rule() {
 SolverOptions read_solver_section(const json& j) {
   SolverOptions s;
   if (j.contains("method")) s.method = find_method(j["method"])->method;
-  s.tolerance = j.value("tolerance", s.tolerance);
+  if (j.contains("tolerance") && j["tolerance"].is_string())
+    s.stopping = StoppingRule::kDiscretisation;
+  else
+    s.tolerance = j.value("tolerance", s.tolerance);
+  s.discretisation_fraction = j.value("discretisation_fraction", s.discretisation_fraction);
   s.max_iterations = j.value("max_iterations", s.max_iterations);
   s.time_limit_s = j.value("time_limit_s", s.time_limit_s);
   if (j.contains("smoother")) s.multilevel.smoother = find_smoother(j["smoother"])->type;

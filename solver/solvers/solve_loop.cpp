@@ -4,12 +4,14 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <limits>
 #include <memory>
 #include <stdexcept>
 
 #include "core/fosls_assert.hpp"
 #include "core/indefinite_system.hpp"
 #include "core/peak_memory.hpp"
+#include "solvers/algebraic_error.hpp"
 #include "solvers/subspace_acceleration.hpp"
 
 namespace fosls {
@@ -227,6 +229,7 @@ bool nested_initial_guess(const BoxQp& qp, const LevelHierarchy& h, const Solver
                                       chain->matrices[j - 1], options.multilevel.projection);
   SolverOptions inner = options;
   inner.nested = false;
+  inner.stopping = StoppingRule::kKktResidual;
   inner.tolerance = options.nested_tolerance;
   inner.max_iterations = options.nested_max_iterations;
   Vector xc;
@@ -341,6 +344,8 @@ SolverReport solve_with_chain(const BoxQp& qp, const LevelHierarchy& hierarchy,
   report.initial_kkt = record(0, 0.0, 0).kkt_residual;
   report.final_kkt = report.initial_kkt;
   report.converged = report.initial_kkt == 0.0;
+  const bool by_discretisation =
+      options.stopping == StoppingRule::kDiscretisation && options.method != SolverMethod::kPdas;
   for (int k = 1; k <= options.max_iterations && !report.converged; ++k) {
     if (observer.cancelled && observer.cancelled()) {
       report.cancelled = true;
@@ -373,8 +378,20 @@ SolverReport solve_with_chain(const BoxQp& qp, const LevelHierarchy& hierarchy,
     const IterationRecord rec = record(k, correction, changed);
     report.iterations = k;
     report.final_kkt = rec.kkt_residual;
-    report.converged = rec.kkt_residual <= options.tolerance * report.initial_kkt;
+    if (rec.kkt_residual <= options.tolerance * report.initial_kkt)
+      report.converged_by = ConvergedBy::kKktResidual;
+    else if (by_discretisation &&
+             algebraic_error_is_small(report.history, options.discretisation_fraction))
+      report.converged_by = ConvergedBy::kAlgebraicError;
+    report.converged = report.converged_by != ConvergedBy::kNone;
   }
+  if (report.converged && report.converged_by == ConvergedBy::kNone)
+    report.converged_by = ConvergedBy::kKktResidual;  // the initial iterate solved it
+  // pdas does not decrease J monotonically: its energy history says nothing about its error.
+  report.algebraic_error = options.method == SolverMethod::kPdas
+                               ? std::numeric_limits<double>::infinity()
+                               : std::sqrt(energy_error_estimate(report.history));
+  report.estimator = std::sqrt(std::max(0.0, report.history.back().energy));
   report.active = static_cast<int>(std::count(active.begin(), active.end(), 1));
   const int h = static_cast<int>(report.history.size());
   if (h >= 2) {

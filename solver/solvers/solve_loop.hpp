@@ -21,10 +21,24 @@ enum class SolverMethod {
 
 const char* method_name(SolverMethod m);
 
+/// When a solve has converged (docs/method.md §5.1).
+enum class StoppingRule {
+  kKktResidual,     ///< kkt_k ≤ tolerance · kkt_0
+  kDiscretisation,  ///< that, or the algebraic error ≤ discretisation_fraction · J^½
+};
+
+/// Which test a converged solve met.
+enum class ConvergedBy { kNone, kKktResidual, kAlgebraicError };
+
 struct SolverOptions {
   SolverMethod method = SolverMethod::kMmg;
   MultilevelOptions multilevel;  ///< smoother and smoothing steps are used by pgs and tnnmg too
   double tolerance = 1e-8;       ///< on kkt_k / kkt_0
+  StoppingRule stopping = StoppingRule::kKktResidual;
+  /// Of kDiscretisation: the algebraic error estimate (solvers/algebraic_error.hpp) allowed as a
+  /// fraction of the discretisation error estimate J^½. pdas, not monotone, stops by the KKT
+  /// test only.
+  double discretisation_fraction = 0.1;
   int max_iterations = 200;
   /// Wall-clock seconds the whole run may take (0: no limit), from the start of the run
   /// (meshing and assembly included); the caller enforces it through SolverObserver::out_of_time.
@@ -44,6 +58,11 @@ struct SolverOptions {
 
 struct SolverReport {
   bool converged = false;
+  ConvergedBy converged_by = ConvergedBy::kNone;
+  /// At the last iterate: E^½, E the estimated energy excess J(x) − J(x_h) (infinite when it
+  /// could not be estimated; solvers/algebraic_error.hpp), and J^½.
+  double algebraic_error = 0.0;
+  double estimator = 0.0;
   bool cancelled = false;
   bool time_limited = false;  ///< stopped by SolverObserver::out_of_time
   int iterations = 0;

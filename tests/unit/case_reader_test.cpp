@@ -337,6 +337,22 @@ TEST(ReadCase, PointersEscapeTildeAndSlash) {
   EXPECT_TRUE(has_error(r, "/mesh/x~1y", "unknown field"));
 }
 
+TEST(ReadCase, ToleranceDiscretisation) {
+  json j = valid_case();
+  j["solver"] = {{"tolerance", "discretisation"}, {"discretisation_fraction", 0.25}};
+  const auto r = read_case(j);
+  ASSERT_TRUE(r.spec) << dump_errors(r.errors);
+  EXPECT_EQ(r.spec->solver.stopping, StoppingRule::kDiscretisation);
+  EXPECT_EQ(r.spec->solver.discretisation_fraction, 0.25);
+  // The KKT test stays, at the default tolerance.
+  EXPECT_EQ(r.spec->solver.tolerance, SolverOptions{}.tolerance);
+  EXPECT_EQ(read_case(valid_case()).spec->solver.stopping, StoppingRule::kKktResidual);
+  for (double f : {0.0, 1.0, -0.1}) {
+    j["solver"]["discretisation_fraction"] = f;
+    EXPECT_TRUE(has_error(read_case(j), "/solver/discretisation_fraction", "in (0, 1)")) << f;
+  }
+}
+
 TEST(ReadCase, UnknownFieldsListTheKnownOnes) {
   json j = valid_case();
   j["material"]["Mu"] = 1;
@@ -364,6 +380,7 @@ TEST(ReadCase, WrongTypesNameTheExpectedType) {
       {"/solver", "fast", "expected an object"},
       {"/solver/method", 1, "expected a string"},
       {"/weights/c3", "0.5", "expected a number >= 0 or the string \"auto\""},
+      {"/solver/tolerance", "tight", "expected the string \"discretisation\""},
       {"/name", json::object(), "expected a string"},
   };
   for (const auto& row : rows) {

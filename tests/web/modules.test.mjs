@@ -1,5 +1,6 @@
 // Unit tests of the page's pure modules (no browser): JSON pointer locations, the Hertz
-// formulas, the VTU reader and the mesh view's colour map and magnification.
+// formulas, the VTU reader, the mesh view's colour map, magnification, fields, edges, fit
+// and point location.
 //   node --test tests/web/modules.test.mjs
 import { test } from 'node:test';
 import assert from 'node:assert/strict';
@@ -11,6 +12,9 @@ import { locateJson, rangeForPointer, lineOfOffset, splitPointer } from '../../w
 import { contactModulus, hertzContact, hertzForCase, hertzPressure, lameParameters } from '../../web/app/hertz.js';
 import { parseVtu } from '../../web/app/vtu.js';
 import { autoMagnification, colourAt, maxDisplacement } from '../../web/app/mesh_view.js';
+import { MESH_FIELDS, probeSummary } from '../../web/app/mesh_fields.js';
+import { contactCsv, sweepCsv } from '../../web/app/csv_export.js';
+import { bounds, deformedPoints, fitTransform, locatePoint, meshEdges, valueRange } from '../../web/app/mesh_drawing.js';
 
 const repo = join(dirname(fileURLToPath(import.meta.url)), '..', '..');
 const hertzText = readFileSync(join(repo, 'solver', 'examples', 'hertz.json'), 'utf8');
@@ -133,8 +137,8 @@ const twoTriangles = `<?xml version="1.0"?>
 </PointData>
 <CellData Scalars="von_mises">
 <DataArray type="Float64" Name="sigma" NumberOfComponents="4" format="ascii">
-1 0 0 1
-2 0 0 2
+1 0.25 0.5 -1
+2 -3 4 2
 </DataArray>
 <DataArray type="Float64" Name="von_mises" format="ascii">
 0.5
@@ -191,4 +195,67 @@ test('the Hertz comparison can be rebuilt from a result alone', async () => {
   assert.equal(h.Estar, 4);
   assert.ok(Math.abs(h.a - Math.sqrt((4 * 0.02 * 2) / (Math.PI * 4))) < 1e-12);
   assert.equal(caseFromResult({ name: 'x' }), null);
+});
+
+test('the mesh fields: each σ component, u per triangle, and their units', () => {
+  const mesh = parseVtu(twoTriangles);
+  const values = (id) => [...MESH_FIELDS[id].compute(mesh)];
+  assert.deepEqual(values('sigma_xx'), [1, 2]);
+  assert.deepEqual(values('sigma_xy'), [0.25, -3]);
+  assert.deepEqual(values('sigma_yx'), [0.5, 4]);
+  assert.deepEqual(values('sigma_yy'), [-1, 2]);
+  assert.deepEqual(values('von_mises'), [0.5, 1.5e-3]);
+  // u_y per triangle: the mean over its vertices (0, 0, −0.002 and 0, −0.002, −0.002).
+  const uy = values('u_y');
+  assert.ok(Math.abs(uy[0] + 0.002 / 3) < 1e-18 && Math.abs(uy[1] + 0.004 / 3) < 1e-18, `${uy}`);
+  assert.equal(MESH_FIELDS.functional.compute(mesh), null, 'no functional array: null, not zeros');
+  for (const id of ['von_mises', 'sigma_xx', 'sigma_xy', 'sigma_yx', 'sigma_yy']) assert.equal(MESH_FIELDS[id].unit, 'S');
+  for (const id of ['displacement', 'u_x', 'u_y']) assert.equal(MESH_FIELDS[id].unit, 'L');
+  assert.deepEqual(valueRange([3, NaN, -2, 1]), { min: -2, max: 3 });
+  assert.deepEqual(valueRange([]), { min: 0, max: 0 });
+});
+
+test('mesh edges: every edge once, the outline on one triangle only', () => {
+  const mesh = parseVtu(twoTriangles);
+  const { all, outline } = meshEdges(mesh);
+  assert.equal(all.length / 2, 5);  // the square's four sides and its diagonal
+  assert.equal(outline.length / 2, 4);
+  const pairs = [];
+  for (let e = 0; e < outline.length; e += 2) pairs.push([outline[e], outline[e + 1]].sort().join('-'));
+  assert.deepEqual(pairs.sort(), ['0-1', '0-3', '1-2', '2-3']);
+});
+
+test('the fit puts the mesh in the middle of the canvas, y up, and points are located', () => {
+  const mesh = parseVtu(twoTriangles);
+  const t = fitTransform(bounds(mesh.points), 200, 100, 10);
+  assert.equal(t.a, 80);  // the height limits: (100 − 20) / 1
+  assert.deepEqual([t.bx + t.a * 0.5, t.by - t.a * 0.5], [100, 50]);
+  assert.ok(t.by - t.a * 1 < t.by - t.a * 0, 'y = 1 is above y = 0');
+  const hit = locatePoint(mesh, mesh.points, 0.25, 0.75);  // above the diagonal: triangle 1
+  assert.equal(hit.cell, 1);
+  assert.ok(Math.abs(hit.weights.reduce((a, b) => a + b) - 1) < 1e-15);
+  assert.equal(locatePoint(mesh, mesh.points, 0.75, 0.25).cell, 0);
+  assert.equal(locatePoint(mesh, mesh.points, 1.5, 0.5), null);
+  // Deformed by 100 × u, the point (1.05, 0.5) lies inside (x moved right by 0.1 at x = 1).
+  const moved = deformedPoints(mesh, 100);
+  assert.deepEqual([moved[2], moved[5]], [1.1, 1 - 0.2]);
+  assert.equal(locatePoint(mesh, moved, 1.05, 0.5)?.cell, 0);
+});
+
+test('a probe adds σ of the triangle and u interpolated at the point', () => {
+  const mesh = parseVtu(twoTriangles);
+  // Triangle 1 = points 0, 2, 3; its centroid: u = mean of (0, 0), (0.001, −0.002), (0, −0.002).
+  const r = probeSummary(mesh, { cell: 1, weights: [1 / 3, 1 / 3, 1 / 3] }, String);
+  assert.ok(Math.abs(r.u[0] - 0.001 / 3) < 1e-18 && Math.abs(r.u[1] + 0.004 / 3) < 1e-18, `${r.u}`);
+  assert.match(r.text, /^σ = \[2, -3; 4, 2\] · u = \(/);
+  // At a vertex the interpolation is the vertex's value.
+  assert.deepEqual(probeSummary(mesh, { cell: 1, weights: [0, 1, 0] }, String).u, [0.001, -0.002]);
+});
+
+test('CSV of the contact boundary and of a sweep', () => {
+  const contact = { x: [-0.1, 0.1], y: [0, 0], s: [0.9, 1.1], length: [0.2, 0.2], pressure: [0.5, 0], gap: [0, 0.01], active: [true, false] };
+  assert.equal(contactCsv(contact), 'x,y,s,length,pressure,gap,active\n-0.1,0,0.9,0.2,0.5,0,1\n0.1,0,1.1,0.2,0,0.01,0\n');
+  assert.equal(contactCsv({ x: [] }), 'x,y,s,length,pressure,gap,active\n');
+  const sweep = { pointer: '/a/b', points: [{ value: 1, force: [0, 2.5], peak_pressure: 3, contact_length: 0.4, converged: false, stop_reason: 'max_iterations', iterations: 200 }] };
+  assert.equal(sweepCsv(sweep), '/a/b,force_x,force_y,peak_pressure,contact_length,converged,stop_reason,iterations\n1,0,2.5,3,0.4,0,"max_iterations",200\n');
 });

@@ -27,6 +27,8 @@ const screenshots = resolve(
 const serveBinary = process.env.FOSLS_SERVE;
 const chromiumPath = process.env.CHROMIUM ?? '/usr/bin/chromium';
 const hertzText = readFileSync(join(repo, 'solver', 'examples', 'hertz.json'), 'utf8');
+const { parseVtu } = await import(join(repo, 'web', 'app', 'vtu.js'));
+const { MESH_FIELDS } = await import(join(repo, 'web', 'app', 'mesh_fields.js'));
 
 // playwright-core lives in web/node_modules (installed by web/build.sh), not beside this file.
 const requireFromWeb = createRequire(join(webRoot, 'package.json'));
@@ -222,6 +224,150 @@ test('submitting the hertz case shows pressure with the Hertz curve, residuals a
   await page.screenshot({ path: join(screenshots, 'job-view.png'), fullPage: true });
 });
 
+/** The job's VTU, parsed by the page's own reader. */
+async function solutionOf(jobId) {
+  return parseVtu(await (await fetch(`${server.url}/v1/jobs/${jobId}/solution.vtu`)).text());
+}
+
+const shownJobId = () => page.evaluate(() => Number(/^#job-(\d+)$/.exec(location.hash)?.[1]));
+
+test('the mesh is coloured by each stress component, with its range and unit on the colour bar', async () => {
+  const mesh = await solutionOf(await shownJobId());
+  for (const [id, component] of [['sigma_xx', 0], ['sigma_xy', 1], ['sigma_yx', 2], ['sigma_yy', 3]]) {
+    await page.locator('#mesh-field').selectOption(id);
+    await page.waitForFunction((f) => document.querySelector('#mesh-canvas').dataset.field === f, id);
+    const sigma = mesh.cellData.sigma;
+    const values = [];
+    for (let c = component; c < sigma.values.length; c += 4) values.push(sigma.values[c]);
+    const canvas = page.locator('#mesh-canvas');
+    assert.equal(Number(await canvas.getAttribute('data-min')), Math.min(...values), `${id} minimum`);
+    assert.equal(Number(await canvas.getAttribute('data-max')), Math.max(...values), `${id} maximum`);
+    assert.equal(await page.locator('#legend-label').innerText(), `σ_${id.slice(-2)}, in the stress unit of the case (that of μ or E); here μ = 1`);
+  }
+  // The four components have four different minima here, so a component mix-up would fail above.
+  const minima = ['sigma_xx', 'sigma_xy', 'sigma_yx', 'sigma_yy'].map((id) => Math.min(...MESH_FIELDS[id].compute(mesh)));
+  assert.equal(new Set(minima).size, 4, `minima ${minima}`);
+  await page.locator('#mesh-field').selectOption('displacement');
+  await page.locator('#legend-label', { hasText: 'displacement |u|, in the length unit of the mesh' }).waitFor();
+  await page.locator('#mesh-field').selectOption('von_mises');
+});
+
+test('pressure and gap are plotted along the contact boundary', async () => {
+  const result = await (await fetch(`${server.url}/v1/jobs/${await shownJobId()}/result`)).json();
+  const plot = page.locator('#pressure-plot');
+  assert.equal(await plot.getAttribute('data-series'), 'pressure|gap|Hertz pressure (plane strain)');
+  assert.equal(await plot.getAttribute('data-points'), String(result.contact.gap.length));
+  await expectPixels('#pressure-plot', '#2e8b57', 100, 'gap line');
+  // The CSV link holds the same numbers, one row per contact edge.
+  const csv = await page.locator('#download-contact-csv').evaluate(async (a) => (await fetch(a.href)).text());
+  const rows = csv.trim().split('\n').map((line) => line.split(','));
+  assert.deepEqual(rows[0], ['x', 'y', 's', 'length', 'pressure', 'gap', 'active']);
+  assert.equal(rows.length - 1, result.contact.x.length);
+  assert.deepEqual(rows.slice(1).map((r) => Number(r[4])), result.contact.pressure);
+  assert.deepEqual(rows.slice(1).map((r) => Number(r[5])), result.contact.gap);
+  assert.equal(await page.locator('#sweep-csv-item').isVisible(), false, 'no sweep, no sweep CSV');
+  // The gap (an edge mean) nearly closes where the edge carries pressure, and opens at the ends.
+  const gap = result.contact.gap;
+  const gmax = Math.max(...gap);
+  assert.ok(gap.every((g, i) => !result.contact.active[i] || Math.abs(g) < 1e-2 * gmax) && gap[0] > 0.5 * gmax);
+});
+
+test('the mesh view zooms about the pointer, pans, shows edges and probes values', async () => {
+  const jobId = await shownJobId();
+  const mesh = await solutionOf(jobId);
+  const canvas = page.locator('#mesh-canvas');
+  // Without magnification the view is an affine map of the mesh, so distances compare exactly.
+  await page.locator('#mesh-magnification').fill('0');
+  await canvas.scrollIntoViewIfNeeded();
+  const box = await canvas.boundingBox();
+  const at = [Math.round(box.x + box.width / 2), Math.round(box.y + box.height * 0.55)];  // wheel events carry whole pixels
+  const probeAt = async (x, y) => {
+    await page.locator('#mesh-probe').evaluate((e) => delete e.dataset.cell);
+    await page.mouse.move(x, y);
+    await page.waitForFunction(() => document.querySelector('#mesh-probe').dataset.cell !== undefined);
+    const d = await page.locator('#mesh-probe').evaluate((e) => ({ ...e.dataset }));
+    return { cell: Number(d.cell), value: Number(d.value), x: Number(d.x), y: Number(d.y), u: [Number(d.ux), Number(d.uy)] };
+  };
+  const p0 = await probeAt(...at);
+  const p1 = await probeAt(at[0] + 100, at[1]);
+  const perPixel = (p1.x - p0.x) / 100;
+  assert.ok(perPixel > 0 && Math.abs(p1.y - p0.y) < 1e-12, 'x to the right, y unchanged');
+
+  // The probe reports the drawn triangle's value and a point inside that triangle.
+  assert.equal(p0.value, mesh.cellData.von_mises.values[p0.cell]);
+  const tri = [0, 1, 2].map((k) => mesh.triangles[3 * p0.cell + k]);
+  const [[ax, ay], [bx, by], [cx, cy]] = tri.map((v) => [mesh.points[2 * v], mesh.points[2 * v + 1]]);
+  const cross = (ux, uy, vx, vy) => ux * vy - uy * vx;
+  const signs = [cross(bx - ax, by - ay, p0.x - ax, p0.y - ay), cross(cx - bx, cy - by, p0.x - bx, p0.y - by), cross(ax - cx, ay - cy, p0.x - cx, p0.y - cy)];
+  assert.ok(signs.every((v) => v >= -1e-15) || signs.every((v) => v <= 1e-15), `point in triangle ${p0.cell}`);
+  assert.match(await page.locator('#mesh-probe').innerText(), /^Probe: x = .*von Mises stress = .*σ = \[.*u = \(/);
+  // u at the probed point: the linear interpolation of the triangle's vertex values.
+  const twiceArea = cross(bx - ax, by - ay, cx - ax, cy - ay);
+  const weights = [signs[1] / twiceArea, signs[2] / twiceArea, signs[0] / twiceArea];
+  const uAt = (d) => weights.reduce((sum, w, k) => sum + w * mesh.pointData.u.values[tri[k] * mesh.pointData.u.components + d], 0);
+  const probed = p0.u;
+  const umax = Math.max(...mesh.pointData.u.values.map(Math.abs));
+  assert.ok(Math.abs(probed[0] - uAt(0)) < 1e-9 * umax && Math.abs(probed[1] - uAt(1)) < 1e-9 * umax, `u ${probed} against ${uAt(0)}, ${uAt(1)}`);
+
+  // Zoom about the pointer: the point under it stays, 100 px span 1/zoom of the length.
+  await page.mouse.move(...at);
+  await page.mouse.wheel(0, -600);
+  await page.waitForFunction(() => Number(document.querySelector('#mesh-canvas').dataset.zoom) > 2);
+  const zoom = Number(await canvas.getAttribute('data-zoom'));
+  const q0 = await probeAt(...at);
+  const q1 = await probeAt(at[0] + 100, at[1]);
+  assert.ok(Math.abs(q0.x - p0.x) < 1e-12 && Math.abs(q0.y - p0.y) < 1e-12, `fixed point of the zoom: ${JSON.stringify([p0, q0, zoom])}`);
+  assert.ok(Math.abs((q1.x - q0.x) / 100 / (perPixel / zoom) - 1) < 1e-3, `zoom ${zoom}: ${(q1.x - q0.x) / 100} per pixel`);
+
+  // Drag to pan by 50 px: the mesh moves with the pointer.
+  await page.mouse.move(...at);
+  await page.mouse.down();
+  await page.mouse.move(at[0] + 25, at[1], { steps: 2 });
+  await page.mouse.move(at[0] + 50, at[1], { steps: 2 });
+  await page.mouse.up();
+  const r0 = await probeAt(at[0] + 50, at[1]);
+  assert.ok(Math.abs(r0.x - q0.x) < 1e-12 && Math.abs(r0.y - q0.y) < 1e-12, `panned: ${r0.x} against ${q0.x}`);
+
+  // A click pins the probe and marks it; the keyboard's 0 resets the view.
+  await page.mouse.click(...at);
+  assert.match(await page.locator('#mesh-probe').innerText(), /^Pinned: /);
+  await canvas.focus();
+  await page.keyboard.press('0');
+  await page.waitForFunction(() => document.querySelector('#mesh-canvas').dataset.zoom === '1');
+  await page.keyboard.press('+');
+  await page.waitForFunction(() => document.querySelector('#mesh-canvas').dataset.zoom === '1.25');
+  await page.getByRole('button', { name: 'Reset view' }).click();
+  await page.waitForFunction(() => document.querySelector('#mesh-canvas').dataset.zoom === '1');
+
+  // Mesh edges: dark lines over the colours, so many pixels get darker than without them.
+  const darkened = (compare) => page.evaluate((compare) => {
+    const canvas = document.querySelector('#mesh-canvas');
+    const copy = Object.assign(document.createElement('canvas'), { width: canvas.width, height: canvas.height });
+    const ctx = copy.getContext('2d', { willReadFrequently: true });
+    ctx.drawImage(canvas, 0, 0);
+    const { data } = ctx.getImageData(0, 0, copy.width, copy.height);
+    if (!compare) {
+      window.meshSnapshot = data;
+      return 0;
+    }
+    let n = 0;
+    for (let i = 0; i < data.length; i += 4) {
+      const before = window.meshSnapshot[i] + window.meshSnapshot[i + 1] + window.meshSnapshot[i + 2];
+      if (before - (data[i] + data[i + 1] + data[i + 2]) > 60) n++;
+    }
+    return n;
+  }, compare);
+  await darkened(false);
+  await page.locator('#mesh-edges').check();
+  await page.waitForFunction(() => document.querySelector('#mesh-canvas').dataset.edges === 'on');
+  const area = await canvas.evaluate((c) => c.width * c.height);
+  const n = await darkened(true);
+  assert.ok(n > 0.02 * area, `${n} of ${area} pixels darker with the edges`);
+  await page.screenshot({ path: join(screenshots, 'mesh-probe.png'), clip: { x: box.x - 10, y: box.y - 80, width: box.width + 20, height: box.height + 160 } });
+  await page.locator('#mesh-edges').uncheck();
+  await page.getByRole('button', { name: 'Auto' }).click();
+});
+
 test('a solve stopped by max_iterations gets its own badge, not the success colour', async () => {
   const stopped = JSON.parse(hertzText);
   stopped.name = 'stopped_hertz';
@@ -253,6 +399,59 @@ test('a sweep shows the force of every point against the swept value', async () 
   assert.equal(await page.locator('#sweep-plot').getAttribute('data-unconverged'), '0');
   await expectPixels('#sweep-plot', '#1f5fbf', 50, 'sweep curve');
   assert.match(await page.locator('#sweep-note').innerText(), /^3 points of \/boundary\/top\/displacement\/1.*all converged/);
+  const csv = await page.locator('#download-sweep-csv').evaluate(async (a) => (await fetch(a.href)).text());
+  const lines = csv.trim().split('\n');
+  assert.equal(lines[0], '/boundary/top/displacement/1,force_x,force_y,peak_pressure,contact_length,converged,stop_reason,iterations');
+  const result = await (await fetch(`${server.url}/v1/jobs/${await row.getAttribute('data-job-id')}/result`)).json();
+  assert.deepEqual(lines.slice(1).map((l) => Number(l.split(',')[2])), result.sweep.points.map((p) => p.force[1]));
+});
+
+test('a second job is drawn over the first: pressure and gap, and the sweep curve', async () => {
+  // A stiffer body (μ = λ = 2) under the same sweep: about twice the force at each point.
+  const stiffer = JSON.parse(hertzText);
+  stiffer.name = 'swept_stiffer';
+  stiffer.mesh.refinements = 1;
+  stiffer.material = { mu: 2, lambda: 2 };
+  stiffer.boundary.top.displacement = [0, -0.004];
+  stiffer.sweep = { pointer: '/boundary/top/displacement/1', values: [-0.004, -0.008] };
+  await setEditorText(JSON.stringify(stiffer, null, 2));
+  const row = await submitAndWaitForRow('swept_stiffer');
+  await row.locator('.state-succeeded').waitFor();
+  await page.waitForFunction(() => document.querySelector('#sweep-plot')?.dataset.points === '2');
+
+  const other = await (await fetch(`${server.url}/v1/jobs?page_size=50`)).json();
+  const sweptId = other.jobs.find((j) => j.name === 'swept_hertz').id;
+  const otherResult = await (await fetch(`${server.url}/v1/jobs/${sweptId}/result`)).json();
+  await page.locator('#compare-job').selectOption(String(sweptId));
+  await page.waitForFunction(() => document.querySelector('#sweep-plot')?.dataset.comparePoints === '3');
+  const pressure = page.locator('#pressure-plot');
+  assert.equal(await pressure.getAttribute('data-series'), `pressure|gap|job ${sweptId} pressure|job ${sweptId} gap`);
+  assert.equal(await pressure.getAttribute('data-compare-points'), String(otherResult.contact.x.length));
+  await expectPixels('#pressure-plot', '#e67e22', 50, 'the compared pressure');
+  await expectPixels('#sweep-plot', '#e67e22', 50, 'the compared sweep curve');
+  assert.match(await page.locator('#sweep-note').innerText(), new RegExp(`Dashed: job ${sweptId} \\(3 points`));
+  await page.screenshot({ path: join(screenshots, 'compare.png'), fullPage: true });
+
+  // The shown job is not offered; "none" removes the overlay.
+  const offered = await page.locator('#compare-job option').evaluateAll((os) => os.map((o) => o.value));
+  assert.ok(!offered.includes(await row.getAttribute('data-job-id')) && offered.includes(''), `${offered}`);
+  await page.locator('#compare-job').selectOption('');
+  await page.waitForFunction(() => document.querySelector('#pressure-plot')?.dataset.comparePoints === '0');
+  assert.equal(await pressure.getAttribute('data-series'), 'pressure|gap');
+});
+
+test("a job's case reopens in the editor exactly as it was submitted", async () => {
+  const list = await (await fetch(`${server.url}/v1/jobs?page_size=50`)).json();
+  const stopped = list.jobs.find((j) => j.name === 'stopped_hertz');
+  const submitted = await (await fetch(`${server.url}/v1/jobs/${stopped.id}/case`)).text();
+  await setEditorText('{}');
+  await page.locator(`#job-table [data-action="view"][data-job-id="${stopped.id}"]`).click();
+  await page.locator('#job-heading', { hasText: 'stopped_hertz' }).waitFor();
+  await page.getByRole('button', { name: 'Open case in editor' }).click();
+  await page.locator('#submit-status', { hasText: `Job ${stopped.id}'s case is in the editor.` }).waitFor();
+  assert.equal(await page.locator('#case-text').inputValue(), submitted);
+  assert.equal(JSON.parse(submitted).solver.max_iterations, 2);
+  assert.equal(await page.evaluate(() => document.activeElement.id), 'case-text');
 });
 
 test('an invalid case shows each error next to its field', async () => {
@@ -349,8 +548,9 @@ test('the controls are reachable with the keyboard and show focus', async () => 
   // Enter on a focused job name opens that job.
   const view = page.locator('#job-table tbody [data-action="view"]').first();
   await view.focus();
+  const name = await view.innerText();
   await page.keyboard.press('Enter');
-  await page.locator('#job-heading', { hasText: 'hertz' }).waitFor();
+  await page.locator('#job-heading', { hasText: `· ${name}` }).waitFor();
 });
 
 test('the page logged no console errors or warnings', async () => {

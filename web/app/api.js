@@ -35,6 +35,8 @@ export const getJob = (id) => call('GET', `/v1/jobs/${id}`);
 export const getResult = (id) => call('GET', resultUrl(id));
 /** GET /v1/jobs/{id}/solution.vtu as text. */
 export const getSolution = (id) => call('GET', solutionUrl(id), { accept: 'text' });
+/** GET /v1/jobs/{id}/case: the case as submitted (options.accept 'text' keeps its text). */
+export const getCase = (id, options = {}) => call('GET', `/v1/jobs/${id}/case`, options);
 /** POST /v1/jobs/{id}/cancel. */
 export const cancelJob = (id) => call('POST', `/v1/jobs/${id}/cancel`);
 /** DELETE /v1/jobs/{id}. */

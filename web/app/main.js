@@ -3,7 +3,13 @@ import * as api from './api.js';
 import { CaseEditor } from './case_editor.js';
 import { caseFromResult, hertzForCase } from './hertz.js';
 import { parseVtu } from './vtu.js';
-import { MESH_FIELDS, autoMagnification, colourGradientCss, drawMesh } from './mesh_view.js';
+import { fmt, setStatus } from './format.js';
+import { MESH_FIELDS } from './mesh_fields.js';
+import { colourGradientCss } from './mesh_view.js';
+import { MeshViewer } from './mesh_viewer.js';
+import { drawCharts, drawMeshView, renderSummary } from './job_result.js';
+import { CompareSelect } from './compare_select.js';
+import { isActive, renderJobTable } from './job_table.js';
 
 const $ = (id) => document.getElementById(id);
 
@@ -20,8 +26,6 @@ const plotsReady = import('./plots.js')
 
 const POLL_ACTIVE_MS = 1000;   // while a job is queued or running
 const POLL_IDLE_MS = 5000;     // to notice jobs submitted elsewhere (curl, another tab)
-const CASE_KEY_PREFIX = 'fosls-case:';
-const MAX_STORED_CASES = 100;
 
 const state = {
   jobs: [],
@@ -39,62 +43,6 @@ const editor = new CaseEditor({
   errorList: $('case-error-list'),
   errorBox: $('case-errors'),
 });
-
-// ---- small helpers ----------------------------------------------------------------------
-
-function fmt(v, digits = 4) {
-  if (typeof v !== 'number' || !Number.isFinite(v)) return '—';
-  if (v === 0) return '0';
-  const a = Math.abs(v);
-  return a >= 1e-3 && a < 1e5 ? String(Number(v.toPrecision(digits))) : v.toExponential(digits - 1);
-}
-
-function seconds(v) {
-  return typeof v === 'number' ? `${v < 10 ? v.toFixed(2) : v.toFixed(1)} s` : '—';
-}
-
-function setStatus(element, text, kind = '') {
-  element.textContent = text;
-  element.classList.toggle('ok', kind === 'ok');
-  element.classList.toggle('error', kind === 'error');
-}
-
-// The service keeps the case but does not return it with the job, so the browser remembers
-// the cases it submitted (keyed by id and creation time: ids restart with a new database).
-function caseKey(job) {
-  return `${CASE_KEY_PREFIX}${job.id}:${job.created_at}`;
-}
-
-function rememberCase(job, text) {
-  try {
-    localStorage.setItem(caseKey(job), text);
-    const keys = Object.keys(localStorage).filter((k) => k.startsWith(CASE_KEY_PREFIX));
-    if (keys.length > MAX_STORED_CASES) {
-      const id = (k) => Number(k.slice(CASE_KEY_PREFIX.length).split(':')[0]);
-      keys.sort((a, b) => id(a) - id(b));
-      for (const k of keys.slice(0, keys.length - MAX_STORED_CASES)) localStorage.removeItem(k);
-    }
-  } catch {
-    // Storage full or disabled: only the Hertz overlay needs the case.
-  }
-}
-
-function recalledCase(job) {
-  try {
-    const text = localStorage.getItem(caseKey(job));
-    return text ? JSON.parse(text) : null;
-  } catch {
-    return null;
-  }
-}
-
-function forgetCase(job) {
-  try {
-    localStorage.removeItem(caseKey(job));
-  } catch {
-    // nothing stored
-  }
-}
 
 // ---- case editor ------------------------------------------------------------------------
 
@@ -139,7 +87,6 @@ async function submitCase() {
     if (response.status === 202 || response.status === 200) {
       const job = response.body;
       editor.clearProblems();
-      rememberCase(job, text);
       setStatus(status, `Job ${job.id} queued.`, 'ok');
       await refreshJobs();
       selectJob(job.id, { focus: false });
@@ -166,74 +113,11 @@ async function submitCase() {
 
 // ---- job list ---------------------------------------------------------------------------
 
-const isActive = (job) => job.state === 'queued' || job.state === 'running';
-
-function progressText(job) {
-  if (!job.progress) return job.state === 'queued' ? 'waiting' : '';
-  return `it ${job.progress.iteration}, KKT ${fmt(job.progress.kkt_residual, 2)}`;
-}
-
-// A solve stopped by max_iterations "succeeded" but its answer is the last iterate, not a
-// converged solution: its badge must not look like a success (docs/web.md).
-function stateBadge(job) {
-  const badge = document.createElement('span');
-  const unconverged = job.converged === false && job.state === 'succeeded';
-  badge.className = `state state-${unconverged ? 'not-converged' : job.state}`;
-  badge.textContent = job.cancel_requested && isActive(job) ? 'cancelling' : unconverged ? 'not converged' : job.state;
-  if (job.converged === false) badge.title = `the solve stopped without converging (${job.stop_reason ?? 'reason unknown'})`;
-  return badge;
-}
-
-function actionButton(label, action, job, describedBy) {
-  const b = document.createElement('button');
-  b.type = 'button';
-  b.textContent = label;
-  b.dataset.action = action;
-  b.dataset.jobId = String(job.id);
-  b.setAttribute('aria-label', `${label} job ${job.id} (${job.name})`);
-  if (describedBy) b.setAttribute('aria-describedby', describedBy);
-  return b;
-}
-
 function renderJobs() {
-  const tbody = document.querySelector('#job-table tbody');
-  // Rebuilding rows would drop keyboard focus: remember which control had it.
-  const active = document.activeElement;
-  const focusKey = active?.dataset?.action ? { action: active.dataset.action, id: active.dataset.jobId } : null;
-
-  tbody.innerHTML = '';
-  for (const job of state.jobs) {
-    const tr = document.createElement('tr');
-    tr.dataset.jobId = String(job.id);
-    tr.dataset.state = job.state;
-    if (job.id === state.selectedId) tr.className = 'selected';
-    const idCell = document.createElement('td');
-    idCell.textContent = String(job.id);
-    const nameCell = document.createElement('td');
-    const view = actionButton(job.name, 'view', job);
-    view.className = 'link';
-    view.setAttribute('aria-label', `Show job ${job.id} (${job.name})`);
-    if (job.id === state.selectedId) view.setAttribute('aria-current', 'true');
-    nameCell.append(view);
-    const stateCell = document.createElement('td');
-    stateCell.append(stateBadge(job));
-    const progressCell = document.createElement('td');
-    progressCell.className = 'progress';
-    progressCell.textContent = progressText(job);
-    const actions = document.createElement('td');
-    actions.className = 'actions';
-    if (isActive(job)) actions.append(actionButton('Cancel', 'cancel', job));
-    else actions.append(actionButton('Delete', 'delete', job));
-    tr.append(idCell, nameCell, stateCell, progressCell, actions);
-    tbody.append(tr);
-  }
+  renderJobTable(document.querySelector('#job-table tbody'), state.jobs, state.selectedId);
   $('jobs-empty').hidden = state.jobs.length > 0;
-
-  if (focusKey) {
-    const same = tbody.querySelector(`[data-action="${focusKey.action}"][data-job-id="${focusKey.id}"]`);
-    const fallback = tbody.querySelector(`[data-action="view"][data-job-id="${focusKey.id}"]`);
-    (same ?? fallback)?.focus();
-  }
+  // The job compared with was deleted: draw without it.
+  if (compareSelect.update(state.jobs, state.selectedId) && state.view?.compare) compareWith(null);
 }
 
 // One poll at a time: a refresh asked for while one is in flight runs once after it (its
@@ -287,7 +171,6 @@ async function onJobAction(event) {
   const button = event.target.closest('button[data-action]');
   if (!button) return;
   const id = Number(button.dataset.jobId);
-  const job = state.jobs.find((j) => j.id === id);
   if (button.dataset.action === 'view') {
     selectJob(id, { focus: true });
     return;
@@ -298,7 +181,6 @@ async function onJobAction(event) {
     if (!response.ok) {
       setStatus($('service-status'), `Job ${id}: ${api.problemMessage(response)}`, 'error');
     } else if (button.dataset.action === 'delete') {
-      if (job) forgetCase(job);
       if (state.selectedId === id) selectJob(null);
       // Keep the keyboard in the list: focus the next row's name (or the previous one).
       const row = button.closest('tr');
@@ -332,6 +214,7 @@ function clearView() {
   $('job-summary').textContent = 'Submit a case, or choose a job in the list.';
   $('job-error').hidden = true;
   $('job-result').hidden = true;
+  $('open-case').hidden = true;
 }
 
 function destroyCharts() {
@@ -373,6 +256,9 @@ function showJob(job) {
     destroyCharts();
     state.view = { id: job.id, createdAt: job.created_at, state: job.state, charts: [] };
     $('job-result').hidden = true;
+    $('open-case').hidden = false;
+    compareSelect.update(state.jobs, job.id);
+    compareSelect.clear();
   }
   state.view.state = job.state;
   if (job.state !== 'running') destroyLiveChart();
@@ -413,7 +299,8 @@ function showJob(job) {
 async function loadResult(job) {
   const view = state.view;
   try {
-    const [resultResponse, vtuResponse] = await Promise.all([api.getResult(job.id), api.getSolution(job.id), plotsReady]);
+    const [resultResponse, vtuResponse, caseResponse] =
+      await Promise.all([api.getResult(job.id), api.getSolution(job.id), api.getCase(job.id), plotsReady]);
     if (state.view !== view) return;  // another job was chosen meanwhile
     if (!resultResponse.ok) {
       $('job-summary').textContent = `The result cannot be loaded: ${api.problemMessage(resultResponse)}`;
@@ -421,7 +308,8 @@ async function loadResult(job) {
       return;
     }
     view.result = resultResponse.body;
-    view.caseJson = recalledCase(job);
+    // The case gives the Hertz comparison its radius and material; the result echoes them too.
+    view.hertz = hertzForCase(caseResponse.ok ? caseResponse.body : caseFromResult(view.result), view.result);
     view.mesh = null;
     view.meshError = null;
     if (vtuResponse.ok) {
@@ -433,170 +321,52 @@ async function loadResult(job) {
     } else {
       view.meshError = `No solution file: ${api.problemMessage(vtuResponse)}`;
     }
-    renderResult(job, view);
+    renderSummary(job, view);
+    $('job-result').hidden = false;  // charts measure their container: show it first
+    drawCharts(view, plots);
+    if (view.mesh) viewer.setMesh(view.mesh);
+    drawMeshView(view, viewer, { resetMagnification: true });
   } catch {
     $('job-summary').textContent = 'Cannot reach the service to load the result.';
   }
 }
 
-function contactWidth(contact) {
-  const xs = (contact?.x ?? []).filter((_, i) => contact.active?.[i]);
-  return xs.length ? Math.max(...xs) - Math.min(...xs) : 0;
-}
-
-function addNumber(dl, term, value, title) {
-  const dt = document.createElement('dt');
-  dt.textContent = term;
-  const dd = document.createElement('dd');
-  dd.textContent = value;
-  const group = document.createElement('div');  // HTML allows a div around each dt/dd pair
-  if (title) group.title = title;
-  group.append(dt, dd);
-  dl.append(group);
-}
-
-function renderResult(job, view) {
-  const r = view.result;
-  const contact = r.contact ?? { x: [], s: [], pressure: [], active: [], force: [0, 0] };
-  view.hertz = hertzForCase(view.caseJson ?? caseFromResult(r), r);
-
-  const summary = $('job-summary');
-  summary.className = r.converged ? 'ok' : 'error';
-  summary.textContent = r.converged
-    ? `Converged in ${r.iterations} iterations (${r.method ?? 'solver'}).`
-    : `Did not converge: ${(r.message ?? `stopped after ${r.iterations} iterations`).replace(/\.$/, '')}.`;
-
-  const dl = $('key-numbers');
-  dl.innerHTML = '';
-  const force = contact.force ?? [NaN, NaN];
-  addNumber(dl, 'Contact force (Fx, Fy)', `${fmt(force[0])}, ${fmt(force[1])}`, 'per unit thickness');
-  const hasContact = (contact.x?.length ?? 0) > 0;
-  const width = contactWidth(contact);
-  addNumber(
-    dl,
-    'Contact width',
-    !hasContact ? '— (no contact boundary)' : view.hertz ? `${fmt(width)} (Hertz 2a = ${fmt(2 * view.hertz.a)})` : fmt(width),
-    'x extent of the midpoints of the active contact edges',
-  );
-  const pmax = hasContact ? Math.max(...contact.pressure) : NaN;
-  addNumber(dl, 'Peak pressure', view.hertz ? `${fmt(pmax)} (Hertz p0 = ${fmt(view.hertz.p0)})` : fmt(pmax));
-  addNumber(dl, 'Iterations', `${r.iterations}${r.converged ? '' : ' (not converged)'}`);
-  addNumber(dl, 'Final KKT residual', fmt(r.final_kkt_residual, 3));
-  addNumber(dl, 'Levels', String(r.levels));
-  addNumber(dl, 'DOFs', String(r.dofs), r.dofs_total ? `${r.dofs_total} including constrained` : undefined);
-  addNumber(dl, 'Active contact edges', `${contact.active?.filter(Boolean).length ?? 0} of ${contact.active?.length ?? 0}`);
-  addNumber(dl, 'Time', `${seconds(r.timing?.total_s)} (solve ${seconds(r.timing?.solve_s)})`,
-    `mesh ${seconds(r.timing?.mesh_s)}, assembly ${seconds(r.timing?.assembly_s)}`);
-
-  const warnings = $('job-warnings');
-  warnings.innerHTML = '';
-  for (const w of r.warnings ?? []) {
-    const li = document.createElement('li');
-    li.textContent = w;
-    warnings.append(li);
+// A second job's result over the shown one's curves (docs/web.md, "Comparing two jobs").
+async function compareWith(job) {
+  const view = state.view;
+  if (!view?.result) return;
+  view.compare = null;
+  if (job) {
+    const response = await api.getResult(job.id);
+    if (state.view !== view) return;
+    if (response.ok) view.compare = { label: `job ${job.id}`, result: response.body };
+    else setStatus($('service-status'), `Job ${job.id}: ${api.problemMessage(response)}`, 'error');
   }
-
-  $('download-result').href = api.resultUrl(job.id);
-  $('download-result').download = `job-${job.id}-result.json`;
-  $('download-vtu').href = api.solutionUrl(job.id);
-  $('download-vtu').download = `job-${job.id}.vtu`;
-
-  $('job-result').hidden = false;  // charts measure their container: show it first
-  drawCharts(view);
-  drawMeshView(view, { resetMagnification: true });
+  drawCharts(view, plots);
 }
 
-function drawCharts(view) {
-  destroyCharts();
-  const contact = view.result.contact ?? { x: [], s: [], pressure: [] };
-  const abscissa = $('pressure-abscissa').value;
-  const pressureBox = $('pressure-plot');
-  const residualBox = $('residual-plot');
-  pressureBox.innerHTML = '';
-  residualBox.innerHTML = '';
-  const note = $('hertz-note');
-  if (!plots) {
-    pressureBox.textContent = residualBox.textContent = 'No plots: the plotting library is missing.';
+// The case as the service stored it, byte for byte, back in the editor to change and resubmit.
+async function openCase() {
+  const id = state.view?.id;
+  if (id === undefined) return;
+  const response = await api.getCase(id, { accept: 'text' });
+  if (!response.ok) {
+    setStatus($('submit-status'), `Job ${id}'s case: ${api.problemMessage(response)}`, 'error');
     return;
   }
-  if (!contact.x?.length) {
-    pressureBox.textContent = 'This case has no contact boundary.';
-    pressureBox.dataset.points = '0';
-    note.textContent = '';
-  } else {
-    view.charts.push(plots.pressurePlot(pressureBox, contact, view.hertz, abscissa));
-    const name = String(view.result.name ?? '');
-    if (view.hertz) {
-      note.textContent = `Dashed: plane-strain Hertz pressure for F = |Fy| = ${fmt(view.hertz.F)}, ` +
-        `R = ${fmt(view.hertz.R)}, E* = ${fmt(view.hertz.Estar)}: a = ${fmt(view.hertz.a)}, p0 = ${fmt(view.hertz.p0)}` +
-        (abscissa === 'x' ? '.' : ' (shown against x only).');
-    } else if (name.toLowerCase().includes('hertz') && !view.caseJson) {
-      note.textContent = 'The Hertz curve needs the case (material, radius); this browser did not submit it.';
-    } else {
-      note.textContent = '';
-    }
-  }
-  drawSweep(view);
-  const history = view.result.history ?? [];
-  if (history.length) view.charts.push(plots.residualPlot(residualBox, history));
-  else {
-    residualBox.textContent = 'No iterations were recorded.';
-    residualBox.dataset.points = '0';
-  }
-}
-
-// A case with a sweep: the force of every point against the swept value (docs/web.md).
-function drawSweep(view) {
-  const sweep = view.result.sweep;
-  $('sweep-figure').hidden = !sweep;
-  const box = $('sweep-plot');
-  box.innerHTML = '';
-  if (!sweep) return;
-  view.charts.push(plots.sweepPlot(box, sweep));
-  const bad = sweep.points.filter((p) => !p.converged).length;
-  $('sweep-note').textContent = `${sweep.points.length} points of ${sweep.pointer}, each started from the previous solution` +
-    (bad ? `; ${bad} did not converge (red).` : '; all converged.');
-}
-
-function drawMeshView(view, { resetMagnification = false } = {}) {
-  const canvas = $('mesh-canvas');
-  const caption = $('mesh-caption');
-  const input = $('mesh-magnification');
-  if (!view.mesh) {
-    canvas.hidden = true;
-    caption.textContent = view.meshError ?? 'No solution file.';
-    return;
-  }
-  canvas.hidden = false;
-  if (resetMagnification) input.value = String(autoMagnification(view.mesh));
-  const magnification = Math.max(0, Number(input.value) || 0);
-  const fieldId = $('mesh-field').value;
-  const field = MESH_FIELDS[fieldId];
-  const values = field.compute(view.mesh);
-  if (!values) {
-    caption.textContent = `The solution file has no ${field.label}.`;
-    return;
-  }
-  const { min, max } = drawMesh(canvas, view.mesh, values, magnification);
-  $('legend-min').textContent = fmt(min, 3);
-  $('legend-max').textContent = fmt(max, 3);
-  const nTriangles = view.mesh.triangles.length / 3;
-  canvas.dataset.triangles = String(nTriangles);
-  canvas.setAttribute('aria-label',
-    `Deformed mesh of ${nTriangles} triangles coloured by ${field.label} from ${fmt(min, 3)} to ${fmt(max, 3)}, displacement magnified ${magnification} times`);
-  caption.textContent = `${nTriangles} triangles, coloured by ${field.label} (per triangle). ` +
-    `Displacement magnified ×${magnification}; dashed: the undeformed outline.`;
+  editor.text = response.body;
+  editor.clearProblems();
+  setStatus($('submit-status'), `Job ${id}'s case is in the editor.`, 'ok');
+  $('case-text').focus();
 }
 
 // ---- start ------------------------------------------------------------------------------
 
+const viewer = new MeshViewer({ canvas: $('mesh-canvas'), probe: $('mesh-probe'), format: (v) => fmt(v, 5) });
+const compareSelect = new CompareSelect($('compare-job'), compareWith);
+
 function init() {
-  for (const [id, field] of Object.entries(MESH_FIELDS)) {
-    const option = document.createElement('option');
-    option.value = id;
-    option.textContent = field.label;
-    $('mesh-field').append(option);
-  }
+  for (const [id, field] of Object.entries(MESH_FIELDS)) $('mesh-field').append(new Option(field.label, id));
   $('legend-bar').style.background = colourGradientCss();
   $('submit-case').addEventListener('click', submitCase);
   $('case-text').addEventListener('keydown', (e) => {
@@ -606,15 +376,15 @@ function init() {
     }
   });
   document.querySelector('#job-table tbody').addEventListener('click', onJobAction);
-  $('pressure-abscissa').addEventListener('change', () => state.view?.result && drawCharts(state.view));
-  $('mesh-field').addEventListener('change', () => state.view?.mesh && drawMeshView(state.view));
-  $('mesh-magnification').addEventListener('input', () => state.view?.mesh && drawMeshView(state.view));
-  $('mesh-auto').addEventListener('click', () => state.view?.mesh && drawMeshView(state.view, { resetMagnification: true }));
-  let resizeFrame = 0;
-  new ResizeObserver(() => {
-    cancelAnimationFrame(resizeFrame);
-    resizeFrame = requestAnimationFrame(() => state.view?.mesh && drawMeshView(state.view));
-  }).observe($('mesh-canvas'));
+  $('open-case').addEventListener('click', openCase);
+  const redrawMesh = (options) => state.view?.mesh && drawMeshView(state.view, viewer, options);
+  $('pressure-abscissa').addEventListener('change', () => state.view?.result && drawCharts(state.view, plots));
+  $('mesh-field').addEventListener('change', () => redrawMesh());
+  $('mesh-magnification').addEventListener('input', () => redrawMesh());
+  $('mesh-auto').addEventListener('click', () => redrawMesh({ resetMagnification: true }));
+  $('mesh-edges').addEventListener('change', (e) => viewer.setEdges(e.target.checked));
+  $('mesh-reset').addEventListener('click', () => viewer.resetView());
+  new ResizeObserver(() => viewer.redraw()).observe($('mesh-canvas'));
 
   const fromHash = /^#job-(\d+)$/.exec(location.hash);
   if (fromHash) state.selectedId = Number(fromHash[1]);

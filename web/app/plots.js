@@ -1,10 +1,14 @@
-// The two uPlot charts of a job: contact pressure along the contact boundary (with the
-// Hertz curve when it applies) and the KKT residual per iteration on a log axis.
+// The uPlot charts of a job: contact pressure and gap along the contact boundary (with the
+// Hertz curve when it applies, and a second job's curves to compare), the KKT residual per
+// iteration on a log axis, and a sweep's force against the swept value.
 import uPlot from '../dist/uPlot.esm.js';
 import { hertzPressure } from './hertz.js';
 
 export const COLOURS = {
   pressure: '#1f5fbf',
+  gap: '#2e8b57',
+  comparePressure: '#e67e22',
+  compareGap: '#b8860b',
   sweep: '#1f5fbf',
   unconverged: '#c0392b',
   hertz: '#c0392b',
@@ -49,20 +53,27 @@ function decadeSplits(u, axisIndex, min, max) {
   return out;
 }
 
-/**
- * Contact pressure against x (or arc length s) of the contact edge midpoints, sorted along
- * the abscissa. With `hertz` ({a, p0}) the analytic curve is drawn over [−1.2a, 1.2a]
- * clipped to the data range.
- */
-export function pressurePlot(container, contact, hertz, abscissa = 'x') {
+/** x and y of `contact` sorted along the abscissa, for uPlot (which needs ascending x). */
+function sortedAlong(contact, abscissa, field) {
   const xs = contact[abscissa] ?? [];
   const order = xs.map((_, i) => i).sort((i, j) => xs[i] - xs[j]);
-  const x = order.map((i) => xs[i]);
-  const p = order.map((i) => contact.pressure[i]);
-  const tables = [[x, p]];
+  return [order.map((i) => xs[i]), order.map((i) => contact[field]?.[i] ?? null)];
+}
+
+/**
+ * Contact pressure (left axis) and remaining gap (right axis) against x (or arc length s) of
+ * the contact edge midpoints. With `hertz` ({a, p0}) the analytic pressure is drawn over
+ * [−1.2a, 1.2a] clipped to the data range; with `compare` ({label, contact}) a second job's
+ * pressure and gap are drawn dashed over the first.
+ */
+export function boundaryPlot(container, contact, { hertz = null, abscissa = 'x', compare = null } = {}) {
+  const [x, p] = sortedAlong(contact, abscissa, 'pressure');
+  const tables = [[x, p, sortedAlong(contact, abscissa, 'gap')[1]]];
+  const value = (u, v) => sci(v);
   const series = [
-    { label: abscissa === 'x' ? 'x' : 's', value: (u, v) => sci(v) },
-    { label: 'FOSLS pressure', stroke: COLOURS.pressure, width: 2, value: (u, v) => sci(v), points: { show: x.length < 120, size: 4 } },
+    { label: abscissa === 'x' ? 'x' : 's', value },
+    { label: 'pressure', stroke: COLOURS.pressure, width: 2, value, points: { show: x.length < 120, size: 4 } },
+    { label: 'gap', scale: 'gap', stroke: COLOURS.gap, width: 1.5, value, points: { show: false } },
   ];
   if (hertz && abscissa === 'x' && x.length > 0) {
     const lo = Math.max(x[0], -1.2 * hertz.a);
@@ -74,9 +85,17 @@ export function pressurePlot(container, contact, hertz, abscissa = 'x') {
     for (const edge of [-hertz.a, hertz.a]) if (edge > lo && edge < hi) hx.push(edge);
     hx.sort((a, b) => a - b);
     tables.push([hx, hx.map((v) => hertzPressure(v, hertz))]);
-    series.push({ label: 'Hertz (plane strain)', stroke: COLOURS.hertz, width: 1.5, dash: [6, 4], value: (u, v) => sci(v), points: { show: false } });
+    series.push({ label: 'Hertz pressure (plane strain)', stroke: COLOURS.hertz, width: 1.5, dash: [6, 4], value, points: { show: false } });
   }
-  const data = tables.length > 1 ? uPlot.join(tables) : [x, p];
+  if (compare) {
+    const [cx, cp] = sortedAlong(compare.contact, abscissa, 'pressure');
+    tables.push([cx, cp, sortedAlong(compare.contact, abscissa, 'gap')[1]]);
+    series.push(
+      { label: `${compare.label} pressure`, stroke: COLOURS.comparePressure, width: 2, dash: [8, 4], value, points: { show: false } },
+      { label: `${compare.label} gap`, scale: 'gap', stroke: COLOURS.compareGap, width: 1.5, dash: [3, 3], value, points: { show: false } },
+    );
+  }
+  const data = tables.length > 1 ? uPlot.join(tables) : tables[0];
   const opts = {
     width: fitWidth(container),
     height: plotHeight,
@@ -85,11 +104,16 @@ export function pressurePlot(container, contact, hertz, abscissa = 'x') {
     axes: [
       { label: abscissa === 'x' ? 'x (contact edge midpoints)' : 'arc length s', size: 46 },
       { label: 'contact pressure', size: 64, values: (u, vals) => vals.map(sci) },
+      { label: 'gap', scale: 'gap', side: 1, size: 64, grid: { show: false }, values: (u, vals) => vals.map(sci) },
     ],
     legend: { live: false },
   };
   const chart = responsive(new uPlot(opts, data, container), container);
-  container.dataset.points = String(x.length);
+  Object.assign(container.dataset, {
+    points: String(x.length),
+    series: series.slice(1).map((s) => s.label).join('|'),
+    comparePoints: String(compare ? compare.contact.x?.length ?? 0 : 0),
+  });
   return chart;
 }
 
@@ -121,32 +145,48 @@ export function residualPlot(container, history, { correction: showCorrection = 
   return chart;
 }
 
-/**
- * A sweep's curve: the contact force F_y of each point against the swept value, in order;
- * points that did not converge are marked in red on a series of their own.
- */
-export function sweepPlot(container, sweep) {
-  const points = sweep.points ?? [];
-  const value = points.map((p) => p.value);
+/** [values, F_y, F_y of the points that did not converge] of a sweep, by ascending value. */
+function sweepTable(sweep) {
+  const points = [...(sweep.points ?? [])].sort((a, b) => a.value - b.value);
   const force = points.map((p) => p.force?.[1] ?? null);
-  const unconverged = points.map((p, i) => (p.converged ? null : force[i]));
+  return [points.map((p) => p.value), force, points.map((p, i) => (p.converged ? null : force[i]))];
+}
+
+/**
+ * A sweep's curve: the contact force F_y of each point against the swept value; points that
+ * did not converge are marked in red on a series of their own. With `compare` ({label,
+ * sweep}) a second job's sweep is drawn dashed over it.
+ */
+export function sweepPlot(container, sweep, compare = null) {
+  const table = sweepTable(sweep);
+  const value = (u, v) => sci(v);
+  const series = [
+    { label: sweep.pointer },
+    { label: 'F_y (per unit thickness)', stroke: COLOURS.sweep, width: 2, value, points: { show: true, size: 6 } },
+    { label: 'not converged', stroke: COLOURS.unconverged, width: 0, value, points: { show: true, size: 9, fill: COLOURS.unconverged } },
+  ];
+  let data = table;
+  if (compare) {
+    const other = sweepTable(compare.sweep);
+    data = uPlot.join([table, other.slice(0, 2)]);
+    series.push({ label: `${compare.label} F_y`, stroke: COLOURS.comparePressure, width: 2, dash: [8, 4], value, points: { show: true, size: 5 } });
+  }
   const opts = {
     width: fitWidth(container),
     height: plotHeight,
     scales: { x: { time: false } },
     legend: { live: false },
-    series: [
-      { label: sweep.pointer },
-      { label: 'F_y (per unit thickness)', stroke: COLOURS.sweep, width: 2, value: (u, v) => sci(v), points: { show: true, size: 6 } },
-      { label: 'not converged', stroke: COLOURS.unconverged, width: 0, value: (u, v) => sci(v), points: { show: true, size: 9, fill: COLOURS.unconverged } },
-    ],
+    series: series.map((s, i) => (i === 0 ? s : { ...s, spanGaps: i !== 2 })),
     axes: [
       { label: sweep.pointer, size: 46, values: (u, vals) => vals.map(sci) },
       { label: 'contact force F_y', size: 64, values: (u, vals) => vals.map(sci) },
     ],
   };
-  const chart = responsive(new uPlot(opts, [value, force, unconverged], container), container);
-  container.dataset.points = String(points.length);
-  container.dataset.unconverged = String(unconverged.filter((v) => v !== null).length);
+  const chart = responsive(new uPlot(opts, data, container), container);
+  Object.assign(container.dataset, {
+    points: String(table[0].length),
+    unconverged: String(table[2].filter((v) => v !== null).length),
+    comparePoints: String(compare ? compare.sweep.points?.length ?? 0 : 0),
+  });
   return chart;
 }

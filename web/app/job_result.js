@@ -1,0 +1,178 @@
+// The job view of a finished job: key numbers, warnings, downloads, the charts (pressure and
+// gap along the contact boundary, residuals, sweep), and the coloured mesh with its colour
+// bar. `view` is the page's record of the job shown: {result, mesh, meshError, hertz,
+// compare, charts}; `plots` the chart module (null when uPlot is missing).
+import * as api from './api.js';
+import { contactCsv, sweepCsv } from './csv_export.js';
+import { fmt, seconds } from './format.js';
+import { MESH_FIELDS, UNITS } from './mesh_fields.js';
+import { autoMagnification } from './mesh_view.js';
+import { valueRange } from './mesh_drawing.js';
+
+const $ = (id) => document.getElementById(id);
+
+function contactWidth(contact) {
+  const xs = (contact?.x ?? []).filter((_, i) => contact.active?.[i]);
+  return xs.length ? Math.max(...xs) - Math.min(...xs) : 0;
+}
+
+function addNumber(dl, term, value, title) {
+  const dt = document.createElement('dt');
+  dt.textContent = term;
+  const dd = document.createElement('dd');
+  dd.textContent = value;
+  const group = document.createElement('div');  // HTML allows a div around each dt/dd pair
+  if (title) group.title = title;
+  group.append(dt, dd);
+  dl.append(group);
+}
+
+/** Summary line, key numbers, warnings and download links of a result. */
+export function renderSummary(job, view) {
+  const r = view.result;
+  const contact = r.contact ?? { x: [], s: [], pressure: [], active: [], force: [0, 0] };
+  const summary = $('job-summary');
+  summary.className = r.converged ? 'ok' : 'error';
+  summary.textContent = r.converged
+    ? `Converged in ${r.iterations} iterations (${r.method ?? 'solver'}).`
+    : `Did not converge: ${(r.message ?? `stopped after ${r.iterations} iterations`).replace(/\.$/, '')}.`;
+
+  const dl = $('key-numbers');
+  dl.innerHTML = '';
+  const force = contact.force ?? [NaN, NaN];
+  addNumber(dl, 'Contact force (Fx, Fy)', `${fmt(force[0])}, ${fmt(force[1])}`, 'per unit thickness');
+  const hasContact = (contact.x?.length ?? 0) > 0;
+  const width = contactWidth(contact);
+  addNumber(
+    dl,
+    'Contact width',
+    !hasContact ? '— (no contact boundary)' : view.hertz ? `${fmt(width)} (Hertz 2a = ${fmt(2 * view.hertz.a)})` : fmt(width),
+    'x extent of the midpoints of the active contact edges',
+  );
+  const pmax = hasContact ? Math.max(...contact.pressure) : NaN;
+  addNumber(dl, 'Peak pressure', view.hertz ? `${fmt(pmax)} (Hertz p0 = ${fmt(view.hertz.p0)})` : fmt(pmax));
+  addNumber(dl, 'Iterations', `${r.iterations}${r.converged ? '' : ' (not converged)'}`);
+  addNumber(dl, 'Final KKT residual', fmt(r.final_kkt_residual, 3));
+  addNumber(dl, 'Levels', String(r.levels));
+  addNumber(dl, 'DOFs', String(r.dofs), r.dofs_total ? `${r.dofs_total} including constrained` : undefined);
+  addNumber(dl, 'Active contact edges', `${contact.active?.filter(Boolean).length ?? 0} of ${contact.active?.length ?? 0}`);
+  addNumber(dl, 'Time', `${seconds(r.timing?.total_s)} (solve ${seconds(r.timing?.solve_s)})`,
+    `mesh ${seconds(r.timing?.mesh_s)}, assembly ${seconds(r.timing?.assembly_s)}`);
+
+  const warnings = $('job-warnings');
+  warnings.innerHTML = '';
+  for (const w of r.warnings ?? []) {
+    const li = document.createElement('li');
+    li.textContent = w;
+    warnings.append(li);
+  }
+
+  $('download-result').href = api.resultUrl(job.id);
+  $('download-result').download = `job-${job.id}-result.json`;
+  $('download-vtu').href = api.solutionUrl(job.id);
+  $('download-vtu').download = `job-${job.id}.vtu`;
+  setCsvLink($('download-contact-csv'), contactCsv(r.contact), `job-${job.id}-contact.csv`);
+  $('sweep-csv-item').hidden = !r.sweep;
+  if (r.sweep) setCsvLink($('download-sweep-csv'), sweepCsv(r.sweep), `job-${job.id}-sweep.csv`);
+}
+
+/** Points `link` at a CSV made in the browser (the previous one's memory is released). */
+function setCsvLink(link, text, filename) {
+  if (link.href.startsWith('blob:')) URL.revokeObjectURL(link.href);
+  link.href = URL.createObjectURL(new Blob([text], { type: 'text/csv' }));
+  link.download = filename;
+}
+
+/** The charts of the view (and of the job compared with, when one is chosen). */
+export function drawCharts(view, plots) {
+  for (const chart of view.charts) chart.destroy();
+  view.charts = [];
+  const contact = view.result.contact ?? { x: [], s: [], pressure: [], gap: [] };
+  const abscissa = $('pressure-abscissa').value;
+  const pressureBox = $('pressure-plot');
+  const residualBox = $('residual-plot');
+  pressureBox.innerHTML = '';
+  residualBox.innerHTML = '';
+  const note = $('hertz-note');
+  if (!plots) {
+    pressureBox.textContent = residualBox.textContent = 'No plots: the plotting library is missing.';
+    return;
+  }
+  const compare = view.compare?.result.contact?.x?.length ? { label: view.compare.label, contact: view.compare.result.contact } : null;
+  if (!contact.x?.length) {
+    pressureBox.textContent = 'This case has no contact boundary.';
+    pressureBox.dataset.points = '0';
+    note.textContent = '';
+  } else {
+    view.charts.push(plots.boundaryPlot(pressureBox, contact, { hertz: view.hertz, abscissa, compare }));
+    note.textContent = view.hertz
+      ? `Dashed red: plane-strain Hertz pressure for F = |Fy| = ${fmt(view.hertz.F)}, ` +
+        `R = ${fmt(view.hertz.R)}, E* = ${fmt(view.hertz.Estar)}: a = ${fmt(view.hertz.a)}, p0 = ${fmt(view.hertz.p0)}` +
+        (abscissa === 'x' ? '.' : ' (shown against x only).')
+      : '';
+  }
+  drawSweep(view, plots);
+  const history = view.result.history ?? [];
+  if (history.length) view.charts.push(plots.residualPlot(residualBox, history));
+  else {
+    residualBox.textContent = 'No iterations were recorded.';
+    residualBox.dataset.points = '0';
+  }
+}
+
+// A case with a sweep: the force of every point against the swept value (docs/web.md).
+function drawSweep(view, plots) {
+  const sweep = view.result.sweep;
+  $('sweep-figure').hidden = !sweep;
+  const box = $('sweep-plot');
+  box.innerHTML = '';
+  if (!sweep) return;
+  const other = view.compare?.result.sweep;
+  view.charts.push(plots.sweepPlot(box, sweep, other ? { label: view.compare.label, sweep: other } : null));
+  const bad = sweep.points.filter((p) => !p.converged).length;
+  $('sweep-note').textContent = `${sweep.points.length} points of ${sweep.pointer}, each started from the previous solution` +
+    (bad ? `; ${bad} did not converge (red).` : '; all converged.') +
+    (other ? ` Dashed: ${view.compare.label} (${other.points.length} points of ${other.pointer}).` : '');
+}
+
+/** The colour bar's words for a unit id, with the case's μ when the unit is a stress. */
+function unitText(unit, result) {
+  const mu = result.material?.mu;
+  return unit === 'S' && typeof mu === 'number' ? `${UNITS.S}; here μ = ${fmt(mu)}` : UNITS[unit];
+}
+
+/** Colours the mesh viewer by the chosen field and writes the colour bar and caption. */
+export function drawMeshView(view, viewer, { resetMagnification = false } = {}) {
+  const canvas = $('mesh-canvas');
+  const caption = $('mesh-caption');
+  const input = $('mesh-magnification');
+  if (!view.mesh) {
+    canvas.hidden = true;
+    caption.textContent = view.meshError ?? 'No solution file.';
+    return;
+  }
+  canvas.hidden = false;
+  if (resetMagnification) input.value = String(autoMagnification(view.mesh));
+  const magnification = Math.max(0, Number(input.value) || 0);
+  const field = MESH_FIELDS[$('mesh-field').value];
+  const values = field.compute(view.mesh);
+  if (!values) {
+    caption.textContent = `The solution file has no ${field.label}.`;
+    return;
+  }
+  const range = valueRange(values);
+  const units = unitText(field.unit, view.result);
+  viewer.setMagnification(magnification);
+  viewer.setField({ label: field.label, unitText: units, values, range });
+  $('legend-min').textContent = fmt(range.min, 3);
+  $('legend-max').textContent = fmt(range.max, 3);
+  $('legend-label').textContent = `${field.label}, in ${units}`;
+  const nTriangles = view.mesh.triangles.length / 3;
+  canvas.dataset.triangles = String(nTriangles);
+  Object.assign(canvas.dataset, { field: $('mesh-field').value, min: String(range.min), max: String(range.max) });
+  canvas.setAttribute('aria-label',
+    `Deformed mesh of ${nTriangles} triangles coloured by ${field.label} from ${fmt(range.min, 3)} to ${fmt(range.max, 3)}, displacement magnified ${magnification} times`);
+  caption.textContent = `${nTriangles} triangles, coloured by ${field.label} (per triangle). ` +
+    `Displacement magnified ×${magnification}; dashed: the undeformed outline. ` +
+    'Wheel or + / − zooms, drag or the arrow keys pan, 0 resets.';
+}
