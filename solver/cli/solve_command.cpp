@@ -144,6 +144,14 @@ void print_sweep(const nlohmann::json& sweep) {
   }
 }
 
+/// What the summary line adds when the discretisation rule stopped the solve.
+std::string stopped_by(const nlohmann::json& r) {
+  if (!r.contains("stopping") || r["stopping"]["converged_by"] != "algebraic_error") return "";
+  return "; stopped at the discretisation error: algebraic error " +
+         g(r["stopping"]["algebraic_error"], 2) + " <= " + g(r["stopping"]["fraction"], 2) +
+         " x J^1/2, J^1/2 = " + g(r["stopping"]["estimator"], 2);
+}
+
 /// Reports the outcome and picks the exit code: 0 when converged, 3 when not. Warnings are
 /// printed even with --quiet.
 int report(const nlohmann::json& r, const SolveOptions& o) {
@@ -155,7 +163,7 @@ int report(const nlohmann::json& r, const SolveOptions& o) {
               << " levels, " << r["dofs"].get<long long>() << " unknowns, "
               << g(r["timing"]["total_s"], 3) << " s; relative KKT residual "
               << g(r["relative_kkt_residual"], 2) << ", tolerance " << g(r["tolerance"], 2)
-              << ")\n";
+              << stopped_by(r) << ")\n";
     print_summary(r);
     if (r.contains("sweep")) print_sweep(r["sweep"]);
   }

@@ -12,7 +12,7 @@ target_include_directories(validation_manufactured_errors PRIVATE ${PROJECT_SOUR
 find_package(Python3 COMPONENTS Interpreter)
 if(Python3_Interpreter_FOUND)
   foreach(check ShippedBenchmarks HertzCompressible HertzIncompressible FiniteBody
-                SolverIterations ErrorEstimator SignoriniSquare)
+                SolverIterations ErrorEstimator SignoriniSquare CornerSingularity)
     add_test(NAME validation_${check}
              COMMAND ${Python3_EXECUTABLE} ${VALIDATION_DIR}/test_validation.py
                      --bin $<TARGET_FILE:fosls-contact>

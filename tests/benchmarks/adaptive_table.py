@@ -1,0 +1,110 @@
+#!/usr/bin/env python3
+"""Uniform refinement against the adaptive loop on Hertz, λ = 1 and λ = ∞, in one run.
+
+For each material: the shipped `hertz` case at mesh.refinements 2..5 (uniform), then the
+shipped `hertz_adaptive` case (refinements 1, θ = 0.5) with more steps, every solve stopped at
+the discretisation error (solver.tolerance "discretisation", docs/method.md §5.1) unless
+--tolerance gives a number. Prints one Markdown table per material: unknowns, iterations, wall
+time, the contact force's error against the reference, and J^½. The adaptive rows' time is the
+run's until the end of that step (meshing plus every step so far), as a user waiting for that
+accuracy would see it.
+
+References: λ = 1, F = 0.0125226 from an independent displacement FEM (docs/validation.md);
+λ = ∞ has none, so the finest uniform solve's force is the reference (its own error then reads 0).
+
+    tests/benchmarks/adaptive_table.py build/bin/fosls-contact [--steps 16] [--max-dofs 250000]
+"""
+import argparse
+import json
+import os
+import subprocess
+import sys
+import tempfile
+
+REFERENCE_FORCE_LAMBDA_1 = 0.0125226
+
+
+def example(program, name):
+    return json.loads(subprocess.run([program, "example", name], check=True,
+                                     capture_output=True, text=True).stdout)
+
+
+def solve(program, case, workdir):
+    path = os.path.join(workdir, "case.json")
+    out = os.path.join(workdir, "result.json")
+    with open(path, "w") as f:
+        json.dump(case, f)
+    run = subprocess.run([program, "solve", path, "--out", out], capture_output=True, text=True)
+    if run.returncode not in (0, 3):
+        sys.exit(f"{case['name']}: fosls-contact exited {run.returncode}: {run.stderr}")
+    with open(out) as f:
+        return json.load(f)
+
+
+def force(result_or_step):
+    f = result_or_step["force"] if "force" in result_or_step else result_or_step["contact"]["force"]
+    return f[1]
+
+
+def rows_for(program, lam, args, workdir):
+    tolerance = args.tolerance
+    rows = []
+    base = example(program, "hertz")
+    base["material"]["lambda"] = lam
+    base["solver"]["tolerance"] = tolerance
+    for r in range(args.uniform_from, args.uniform_to + 1):
+        base["mesh"]["refinements"] = r
+        res = solve(program, base, workdir)
+        rows.append({"run": f"uniform r{r}", "dofs": res["dofs"], "iterations": res["iterations"],
+                     "time_s": res["timing"]["total_s"], "force": force(res),
+                     "estimator": res["functional"]["estimator"]})
+    adaptive = example(program, "hertz_adaptive")
+    adaptive["material"]["lambda"] = lam
+    adaptive["solver"]["tolerance"] = tolerance
+    adaptive["adaptivity"]["steps"] = args.steps
+    adaptive["adaptivity"]["max_dofs"] = args.max_dofs
+    res = solve(program, adaptive, workdir)
+    elapsed = res["timing"]["mesh_s"]
+    for s in res["adaptivity"]["steps"]:
+        elapsed += s["time_s"]
+        rows.append({"run": f"adaptive step {s['step']}", "dofs": s["dofs"],
+                     "iterations": s["iterations"], "time_s": elapsed, "force": force(s),
+                     "estimator": s["estimator"]})
+    return rows
+
+
+def print_table(title, rows, reference, reference_note):
+    print(f"\n{title} (reference F = {reference:.7g}, {reference_note})\n")
+    print("| run | unknowns | iterations | wall (s) | F | F error | J^½ |")
+    print("|---|---:|---:|---:|---:|---:|---:|")
+    for r in rows:
+        error = 100 * (r["force"] / reference - 1)
+        print(f"| {r['run']} | {r['dofs']:,} | {r['iterations']} | {r['time_s']:.2f} | "
+              f"{r['force']:.7f} | {error:+.3f} % | {r['estimator']:.3e} |".replace(",", " "))
+
+
+def main():
+    ap = argparse.ArgumentParser()
+    ap.add_argument("program")
+    ap.add_argument("--uniform-from", type=int, default=2)
+    ap.add_argument("--uniform-to", type=int, default=5)
+    ap.add_argument("--steps", type=int, default=16)
+    ap.add_argument("--max-dofs", type=int, default=250000, help="adaptivity.max_dofs")
+    ap.add_argument("--tolerance", default="discretisation",
+                    help='solver.tolerance: "discretisation" or a number')
+    args = ap.parse_args()
+    if args.tolerance != "discretisation":
+        args.tolerance = float(args.tolerance)
+    env_note = f"solver.tolerance {args.tolerance}"
+    with tempfile.TemporaryDirectory() as workdir:
+        rows = rows_for(args.program, 1, args, workdir)
+        print_table(f"Hertz λ = 1, {env_note}", rows, REFERENCE_FORCE_LAMBDA_1,
+                    "displacement FEM, docs/validation.md")
+        rows = rows_for(args.program, "inf", args, workdir)
+        finest = [r for r in rows if r["run"] == f"uniform r{args.uniform_to}"][0]
+        print_table(f"Hertz λ = ∞, {env_note}", rows, finest["force"],
+                    f"the finest uniform solve, r{args.uniform_to}")
+
+
+if __name__ == "__main__":
+    main()
