@@ -11,7 +11,7 @@ import { dirname, join } from 'node:path';
 import { locateJson, rangeForPointer, lineOfOffset, splitPointer } from '../../web/app/json_locations.js';
 import { contactModulus, hertzContact, hertzForCase, hertzPressure, lameParameters } from '../../web/app/hertz.js';
 import { parseVtu } from '../../web/app/vtu.js';
-import { autoMagnification, colourAt, maxDisplacement } from '../../web/app/mesh_view.js';
+import { autoMagnification, colourAt, colourScale, maxDisplacement } from '../../web/app/mesh_view.js';
 import { MESH_FIELDS, probeSummary } from '../../web/app/mesh_fields.js';
 import { contactCsv, sweepCsv } from '../../web/app/csv_export.js';
 import { bounds, deformedPoints, fitTransform, locatePoint, meshEdges, valueRange } from '../../web/app/mesh_drawing.js';
@@ -180,6 +180,17 @@ test('the colour map runs from dark purple to yellow and clamps', () => {
   assert.deepEqual(colourAt(1), [253, 231, 37]);
   assert.deepEqual(colourAt(-3), colourAt(0));
   assert.deepEqual(colourAt(NaN), colourAt(0));
+  // The diverging map: blue, grey-white at the middle (0 on a symmetric range), red.
+  assert.deepEqual(colourAt(0, 'coolwarm'), [59, 76, 192]);
+  assert.deepEqual(colourAt(0.5, 'coolwarm'), [221, 221, 221]);
+  assert.deepEqual(colourAt(1, 'coolwarm'), [180, 4, 38]);
+});
+
+test('signed fields with both signs get the diverging map, symmetric about 0', () => {
+  assert.deepEqual(colourScale({ min: -0.1, max: 0.02 }, true), { map: 'coolwarm', min: -0.1, max: 0.1 });
+  assert.deepEqual(colourScale({ min: -0.01, max: 0.3 }, true), { map: 'coolwarm', min: -0.3, max: 0.3 });
+  assert.deepEqual(colourScale({ min: 0.01, max: 0.3 }, true), { map: 'viridis', min: 0.01, max: 0.3 });
+  assert.deepEqual(colourScale({ min: -0.1, max: 0.02 }, false), { map: 'viridis', min: -0.1, max: 0.02 });
 });
 
 test('the Hertz comparison can be rebuilt from a result alone', async () => {

@@ -233,6 +233,7 @@ const shownJobId = () => page.evaluate(() => Number(/^#job-(\d+)$/.exec(location
 
 test('the mesh is coloured by each stress component, with its range and unit on the colour bar', async () => {
   const mesh = await solutionOf(await shownJobId());
+  const signs = [];
   for (const [id, component] of [['sigma_xx', 0], ['sigma_xy', 1], ['sigma_yx', 2], ['sigma_yy', 3]]) {
     await page.locator('#mesh-field').selectOption(id);
     await page.waitForFunction((f) => document.querySelector('#mesh-canvas').dataset.field === f, id);
@@ -242,14 +243,25 @@ test('the mesh is coloured by each stress component, with its range and unit on 
     const canvas = page.locator('#mesh-canvas');
     assert.equal(Number(await canvas.getAttribute('data-min')), Math.min(...values), `${id} minimum`);
     assert.equal(Number(await canvas.getAttribute('data-max')), Math.max(...values), `${id} maximum`);
-    assert.equal(await page.locator('#legend-label').innerText(), `σ_${id.slice(-2)}, in the stress unit of the case (that of μ or E); here μ = 1`);
+    const label = await page.locator('#legend-label').innerText();
+    assert.ok(label.startsWith(`σ_${id.slice(-2)}, in the stress unit of the case (that of μ or E); here μ = 1`), label);
+    // A component with both signs: the diverging map on a range symmetric about 0.
+    const bothSigns = Math.min(...values) < 0 && Math.max(...values) > 0;
+    assert.equal(await canvas.getAttribute('data-colour-map'), bothSigns ? 'coolwarm' : 'viridis', id);
+    if (bothSigns) {
+      assert.equal(await page.locator('#legend-min').innerText(), `-${await page.locator('#legend-max').innerText()}`);
+      assert.match(label, /blue < 0 < red/);
+    }
+    signs.push(bothSigns);
   }
+  assert.ok(signs.some(Boolean), 'some component of the Hertz stress takes both signs');
   // The four components have four different minima here, so a component mix-up would fail above.
   const minima = ['sigma_xx', 'sigma_xy', 'sigma_yx', 'sigma_yy'].map((id) => Math.min(...MESH_FIELDS[id].compute(mesh)));
   assert.equal(new Set(minima).size, 4, `minima ${minima}`);
   await page.locator('#mesh-field').selectOption('displacement');
   await page.locator('#legend-label', { hasText: 'displacement |u|, in the length unit of the mesh' }).waitFor();
   await page.locator('#mesh-field').selectOption('von_mises');
+  await page.waitForFunction(() => document.querySelector('#mesh-canvas').dataset.colourMap === 'viridis');
 });
 
 test('pressure and gap are plotted along the contact boundary', async () => {

@@ -6,7 +6,7 @@ import * as api from './api.js';
 import { contactCsv, sweepCsv } from './csv_export.js';
 import { fmt, seconds } from './format.js';
 import { MESH_FIELDS, UNITS } from './mesh_fields.js';
-import { autoMagnification } from './mesh_view.js';
+import { autoMagnification, colourGradientCss, colourScale } from './mesh_view.js';
 import { valueRange } from './mesh_drawing.js';
 
 const $ = (id) => document.getElementById(id);
@@ -161,15 +161,18 @@ export function drawMeshView(view, viewer, { resetMagnification = false } = {}) 
     return;
   }
   const range = valueRange(values);
+  const scale = colourScale(range, field.signed);
   const units = unitText(field.unit, view.result);
   viewer.setMagnification(magnification);
-  viewer.setField({ label: field.label, unitText: units, values, range });
-  $('legend-min').textContent = fmt(range.min, 3);
-  $('legend-max').textContent = fmt(range.max, 3);
-  $('legend-label').textContent = `${field.label}, in ${units}`;
+  viewer.setField({ label: field.label, unitText: units, values, scale });
+  $('legend-min').textContent = fmt(scale.min, 3);
+  $('legend-max').textContent = fmt(scale.max, 3);
+  $('legend-bar').style.background = colourGradientCss(scale.map);
+  $('legend-label').textContent = `${field.label}, in ${units}` +
+    (scale.map === 'coolwarm' ? `; blue < 0 < red, symmetric about 0 (values from ${fmt(range.min, 3)} to ${fmt(range.max, 3)})` : '');
   const nTriangles = view.mesh.triangles.length / 3;
   canvas.dataset.triangles = String(nTriangles);
-  Object.assign(canvas.dataset, { field: $('mesh-field').value, min: String(range.min), max: String(range.max) });
+  Object.assign(canvas.dataset, { field: $('mesh-field').value, min: String(range.min), max: String(range.max), colourMap: scale.map });
   canvas.setAttribute('aria-label',
     `Deformed mesh of ${nTriangles} triangles coloured by ${field.label} from ${fmt(range.min, 3)} to ${fmt(range.max, 3)}, displacement magnified ${magnification} times`);
   caption.textContent = `${nTriangles} triangles, coloured by ${field.label} (per triangle). ` +

@@ -5,7 +5,6 @@ import { caseFromResult, hertzForCase } from './hertz.js';
 import { parseVtu } from './vtu.js';
 import { fmt, setStatus } from './format.js';
 import { MESH_FIELDS } from './mesh_fields.js';
-import { colourGradientCss } from './mesh_view.js';
 import { MeshViewer } from './mesh_viewer.js';
 import { drawCharts, drawMeshView, renderSummary } from './job_result.js';
 import { CompareSelect } from './compare_select.js';
@@ -367,7 +366,6 @@ const compareSelect = new CompareSelect($('compare-job'), compareWith);
 
 function init() {
   for (const [id, field] of Object.entries(MESH_FIELDS)) $('mesh-field').append(new Option(field.label, id));
-  $('legend-bar').style.background = colourGradientCss();
   $('submit-case').addEventListener('click', submitCase);
   $('case-text').addEventListener('keydown', (e) => {
     if (e.key === 'Enter' && (e.ctrlKey || e.metaKey)) {

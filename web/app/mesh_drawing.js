@@ -104,15 +104,16 @@ function strokeEdges(ctx, pairs, pts, t) {
   ctx.stroke();
 }
 
-/** The colour map at BINS levels as 32-bit RGBA pixels (byte order of the canvas). */
-const PALETTE = (() => {
-  const bytes = new Uint8ClampedArray(4 * BINS);
-  for (let b = 0; b < BINS; b++) {
-    const [r, g, bl] = colourAt((b + 0.5) / BINS);
-    bytes.set([r, g, bl, 255], 4 * b);
+/** A colour map at BINS levels as 32-bit RGBA pixels (byte order of the canvas), by name. */
+const PALETTES = new Map();
+function palette(map) {
+  if (!PALETTES.has(map)) {
+    const bytes = new Uint8ClampedArray(4 * BINS);
+    for (let b = 0; b < BINS; b++) bytes.set([...colourAt((b + 0.5) / BINS, map), 255], 4 * b);
+    PALETTES.set(map, new Uint32Array(bytes.buffer));
   }
-  return new Uint32Array(bytes.buffer);
-})();
+  return PALETTES.get(map);
+}
 
 /**
  * Fills the triangles into `pixels` (a Uint32Array over width × height RGBA pixels) with the
@@ -120,9 +121,9 @@ const PALETTE = (() => {
  * by hand rather than by canvas paths: 108k triangles take tens of milliseconds instead of
  * hundreds, and neighbouring triangles leave no anti-aliased seams between them.
  */
-function rasterise(pixels, width, height, mesh, pts, values, range, t) {
+function rasterise(pixels, width, height, mesh, pts, values, scale, colours, t) {
   const tri = mesh.triangles;
-  const span = range.max > range.min ? range.max - range.min : 1;
+  const span = scale.max > scale.min ? scale.max - scale.min : 1;
   const X = (v) => t.bx + t.a * pts[2 * v];
   const Y = (v) => t.by - t.a * pts[2 * v + 1];
   for (let c = 0; c < tri.length / 3; c++) {
@@ -141,8 +142,8 @@ function rasterise(pixels, width, height, mesh, pts, values, range, t) {
       [y0, y1] = [y1, y0];
       area = -area;
     }
-    const x = (values[c] - range.min) / span;
-    const colour = PALETTE[Number.isFinite(x) ? Math.min(BINS - 1, Math.max(0, Math.floor(x * BINS))) : 0];
+    const x = (values[c] - scale.min) / span;
+    const colour = colours[Number.isFinite(x) ? Math.min(BINS - 1, Math.max(0, Math.floor(x * BINS))) : 0];
     // Edge functions at the centre of pixel (xmin, ymin), and their steps per pixel.
     const px = xmin + 0.5, py = ymin + 0.5;
     let r0 = (x2 - x1) * (py - y1) - (y2 - y1) * (px - x1);
@@ -168,15 +169,16 @@ function rasterise(pixels, width, height, mesh, pts, values, range, t) {
 
 /**
  * Draws the triangles at `deformed` coordinates through transform `t` (CSS pixels; `ratio`
- * device pixels per CSS pixel), coloured by `values` (one per triangle) over `range`; with
+ * device pixels per CSS pixel), coloured by `values` (one per triangle) over `scale` ({map,
+ * min, max}, see colourScale in mesh_view.js); with
  * `edges`, every triangle edge in a thin dark line; with `outline` (the undeformed points),
  * the undeformed boundary dashed.
  */
-export function drawMesh(ctx, ratio, mesh, deformed, values, range, t, { edges = false, outline = null } = {}) {
+export function drawMesh(ctx, ratio, mesh, deformed, values, scale, t, { edges = false, outline = null } = {}) {
   const { width, height } = ctx.canvas;
   const image = ctx.createImageData(width, height);
   const device = { a: t.a * ratio, bx: t.bx * ratio, by: t.by * ratio };
-  rasterise(new Uint32Array(image.data.buffer), width, height, mesh, deformed, values, range, device);
+  rasterise(new Uint32Array(image.data.buffer), width, height, mesh, deformed, values, scale, palette(scale.map), device);
   ctx.putImageData(image, 0, 0);
   const { all, outline: boundary } = meshEdges(mesh);
   ctx.lineJoin = 'round';

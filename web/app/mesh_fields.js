@@ -39,16 +39,19 @@ const displacementPerCell = (f) => (mesh) => {
   return out;
 };
 
-/** Fields the mesh can be coloured by: id → {label, unit, compute(mesh) → per-cell values}. */
+/**
+ * Fields the mesh can be coloured by: id → {label, unit, signed (a component whose sign
+ * matters: a diverging colour map when it takes both signs), compute(mesh) → per-cell values}.
+ */
 export const MESH_FIELDS = {
   von_mises: { label: 'von Mises stress', unit: 'S', compute: cellArray('von_mises') },
-  sigma_xx: { label: 'σ_xx', unit: 'S', compute: cellComponent('sigma', 0) },
-  sigma_xy: { label: 'σ_xy', unit: 'S', compute: cellComponent('sigma', 1) },
-  sigma_yx: { label: 'σ_yx', unit: 'S', compute: cellComponent('sigma', 2) },
-  sigma_yy: { label: 'σ_yy', unit: 'S', compute: cellComponent('sigma', 3) },
+  sigma_xx: { label: 'σ_xx', unit: 'S', signed: true, compute: cellComponent('sigma', 0) },
+  sigma_xy: { label: 'σ_xy', unit: 'S', signed: true, compute: cellComponent('sigma', 1) },
+  sigma_yx: { label: 'σ_yx', unit: 'S', signed: true, compute: cellComponent('sigma', 2) },
+  sigma_yy: { label: 'σ_yy', unit: 'S', signed: true, compute: cellComponent('sigma', 3) },
   displacement: { label: 'displacement |u|', unit: 'L', compute: displacementPerCell(Math.hypot) },
-  u_x: { label: 'displacement u_x', unit: 'L', compute: displacementPerCell((x) => x) },
-  u_y: { label: 'displacement u_y', unit: 'L', compute: displacementPerCell((x, y) => y) },
+  u_x: { label: 'displacement u_x', unit: 'L', signed: true, compute: displacementPerCell((x) => x) },
+  u_y: { label: 'displacement u_y', unit: 'L', signed: true, compute: displacementPerCell((x, y) => y) },
   functional: { label: 'FOSLS functional (error indicator)', unit: 'scaled', compute: cellArray('functional') },
 };
 

@@ -1,24 +1,47 @@
-// The mesh view's colour map (viridis) and its displacement magnification rule. The drawing
+// The mesh view's colour maps and its displacement magnification rule. The drawing
 // is in mesh_drawing.js, the interaction (zoom, pan, probe) in mesh_viewer.js.
 
-// Viridis at nine evenly spaced points: perceptually uniform and readable in grey scale.
-const VIRIDIS = [
-  [68, 1, 84], [71, 44, 122], [59, 81, 139], [44, 113, 142], [33, 144, 141],
-  [39, 173, 129], [92, 200, 99], [170, 220, 50], [253, 231, 37],
-];
+// Two colour maps at nine evenly spaced points. Viridis (sequential: perceptually uniform and
+// readable in grey scale) for magnitudes; Moreland's cool-warm (diverging: blue, grey-white at
+// the middle, red) for signed fields on a range symmetric about 0, so that the sign of a stress
+// component shows at a glance.
+const MAPS = {
+  viridis: [
+    [68, 1, 84], [71, 44, 122], [59, 81, 139], [44, 113, 142], [33, 144, 141],
+    [39, 173, 129], [92, 200, 99], [170, 220, 50], [253, 231, 37],
+  ],
+  coolwarm: [
+    [59, 76, 192], [98, 130, 234], [141, 176, 254], [184, 208, 249], [221, 221, 221],
+    [245, 196, 173], [244, 154, 123], [222, 96, 77], [180, 4, 38],
+  ],
+};
 
-/** The colour (as [r, g, b]) of t in [0, 1] on the colour map. */
-export function colourAt(t) {
-  const x = Math.min(1, Math.max(0, Number.isFinite(t) ? t : 0)) * (VIRIDIS.length - 1);
-  const i = Math.min(VIRIDIS.length - 2, Math.floor(x));
+/** The colour (as [r, g, b]) of t in [0, 1] on colour map `map` (viridis or coolwarm). */
+export function colourAt(t, map = 'viridis') {
+  const stops = MAPS[map];
+  const x = Math.min(1, Math.max(0, Number.isFinite(t) ? t : 0)) * (stops.length - 1);
+  const i = Math.min(stops.length - 2, Math.floor(x));
   const f = x - i;
-  return VIRIDIS[i].map((c, k) => Math.round(c + f * (VIRIDIS[i + 1][k] - c)));
+  return stops[i].map((c, k) => Math.round(c + f * (stops[i + 1][k] - c)));
 }
 
-/** CSS gradient of the colour map, left = minimum, for the legend. */
-export function colourGradientCss() {
-  const stops = VIRIDIS.map((c, i) => `rgb(${c.join(',')}) ${(100 * i) / (VIRIDIS.length - 1)}%`);
-  return `linear-gradient(to right, ${stops.join(', ')})`;
+/** CSS gradient of a colour map, left = minimum, for the legend. */
+export function colourGradientCss(map = 'viridis') {
+  const stops = MAPS[map];
+  const css = stops.map((c, i) => `rgb(${c.join(',')}) ${(100 * i) / (stops.length - 1)}%`);
+  return `linear-gradient(to right, ${css.join(', ')})`;
+}
+
+/**
+ * How a field is coloured: a signed field whose values have both signs on the diverging map
+ * over [−m, m], m the largest |value|; anything else on viridis over its range.
+ */
+export function colourScale(range, signed) {
+  if (signed && range.min < 0 && range.max > 0) {
+    const m = Math.max(-range.min, range.max);
+    return { map: 'coolwarm', min: -m, max: m };
+  }
+  return { map: 'viridis', min: range.min, max: range.max };
 }
 
 /** Largest displacement length of the mesh (0 without a u field). */

@@ -18,7 +18,7 @@ export class MeshViewer {
     this.probe_ = probe;
     this.format_ = format;
     this.mesh_ = null;
-    this.field_ = null;  // {label, unitText, values, range}
+    this.field_ = null;  // {label, unitText, values, scale}
     this.magnification_ = 1;
     this.edges_ = false;
     this.camera_ = { zoom: 1, tx: 0, ty: 0 };  // screen-space zoom and shift over the fit
@@ -36,7 +36,7 @@ export class MeshViewer {
     this.resetView();
   }
 
-  /** The colouring: {label, unitText, values (one per triangle), range {min, max}}. */
+  /** The colouring: {label, unitText, values (one per triangle), scale {map, min, max}}. */
   setField(field) {
     this.field_ = field;
     this.showProbe_(this.pinned_);
@@ -118,7 +118,7 @@ export class MeshViewer {
     ctx.clearRect(0, 0, canvas.clientWidth, canvas.clientHeight);
     const t = this.transform_();
     const started = performance.now();
-    drawMesh(ctx, ratio, this.mesh_, this.deformed_, this.field_.values, this.field_.range, t, {
+    drawMesh(ctx, ratio, this.mesh_, this.deformed_, this.field_.values, this.field_.scale, t, {
       edges: this.edges_,
       outline: this.magnification_ !== 0 ? this.mesh_.points : null,
     });
