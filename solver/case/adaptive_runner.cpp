@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cmath>
 
 #include "assembly/definiteness.hpp"
 #include "assembly/error_indicators.hpp"
@@ -101,6 +102,7 @@ CaseSolution solve_case_levels(MeshHierarchy meshes, const ProblemData& data, co
     record.force = {solution.contact.force_x, solution.contact.force_y};
     record.iterations = solution.report.iterations;
     record.converged = solution.report.converged;
+    record.algebraic_error = solution.report.algebraic_error;
     if (step == 0) first_estimator = record.estimator;
     solution.steps.push_back(record);
     auto finish_step = [&] { solution.steps.back().time_s = seconds(t0, Clock::now()); };
@@ -135,17 +137,20 @@ CaseSolution solve_case_levels(MeshHierarchy meshes, const ProblemData& data, co
 nlohmann::json adaptivity_json(const CaseSolution& solution, const AdaptivitySpec& spec) {
   nlohmann::json steps = nlohmann::json::array();
   for (const AdaptiveStepRecord& s : solution.steps)
-    steps.push_back({{"step", s.step},
-                     {"levels", s.levels},
-                     {"dofs", s.dofs},
-                     {"dofs_total", s.dofs_total},
-                     {"triangles", s.triangles},
-                     {"estimator", s.estimator},
-                     {"force", s.force},
-                     {"iterations", s.iterations},
-                     {"converged", s.converged},
-                     {"marked", s.marked},
-                     {"time_s", s.time_s}});
+    steps.push_back(
+        {{"step", s.step},
+         {"levels", s.levels},
+         {"dofs", s.dofs},
+         {"dofs_total", s.dofs_total},
+         {"triangles", s.triangles},
+         {"estimator", s.estimator},
+         {"force", s.force},
+         {"iterations", s.iterations},
+         {"converged", s.converged},
+         {"algebraic_error",
+          std::isfinite(s.algebraic_error) ? nlohmann::json(s.algebraic_error) : nlohmann::json()},
+         {"marked", s.marked},
+         {"time_s", s.time_s}});
   return {{"theta", spec.theta},
           {"max_dofs", spec.max_dofs},
           {"target", spec.target},

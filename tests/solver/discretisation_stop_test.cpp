@@ -100,6 +100,7 @@ TEST(DiscretisationStop, EveryAdaptiveStepStopsEarly) {
   // Measured 3 to 5 iterations per step (15 to 26 at tolerance 1e-8).
   for (const auto& s : r["adaptivity"]["steps"]) {
     EXPECT_TRUE(s["converged"].get<bool>());
+    EXPECT_LE(s["algebraic_error"].get<double>(), 0.1 * s["estimator"].get<double>());
     EXPECT_LE(s["iterations"].get<int>(), 8) << s["step"];
   }
 }
