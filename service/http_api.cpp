@@ -8,6 +8,7 @@
 #include <optional>
 #include <sstream>
 
+#include "api_routes.hpp"
 #include "json_duplicates.hpp"
 #include "large_body.hpp"
 #include "openapi.hpp"
@@ -29,40 +30,6 @@ thread_local std::optional<Clock::time_point> request_start;
 
 std::string dump(const nlohmann::json& j) {
   return j.dump(-1, ' ', false, nlohmann::json::error_handler_t::replace);
-}
-
-/// Splits "/v1/jobs/<id>[/<leaf>]"; nothing for other paths.
-struct JobPath {
-  std::string id;
-  std::string leaf;  ///< "", "result", "solution.vtu", "cancel" or anything else
-};
-
-std::optional<JobPath> split_job_path(const std::string& path) {
-  static const std::string prefix = "/v1/jobs/";
-  if (path.compare(0, prefix.size(), prefix) != 0) return std::nullopt;
-  const std::string rest = path.substr(prefix.size());
-  if (rest.empty()) return std::nullopt;
-  const auto slash = rest.find('/');
-  if (slash == std::string::npos) return JobPath{rest, ""};
-  return JobPath{rest.substr(0, slash), rest.substr(slash + 1)};
-}
-
-/// The OpenAPI document and the JSON Schemas it references (openapi.hpp).
-bool is_contract_path(const std::string& path) {
-  return path == "/v1/openapi.json" || path == "/v1/schemas/case.json" ||
-         path == "/v1/schemas/result.json";
-}
-
-/// Methods a path supports, for 405 responses ("" when the path is not an API route).
-std::string allowed_methods(const std::string& path) {
-  if (path == "/v1/jobs") return "GET, POST";
-  if (path == "/healthz" || path == "/metrics" || is_contract_path(path)) return "GET";
-  if (auto jp = split_job_path(path)) {
-    if (jp->leaf.empty()) return "GET, DELETE";
-    if (jp->leaf == "result" || jp->leaf == "solution.vtu" || jp->leaf == "case") return "GET";
-    if (jp->leaf == "cancel") return "POST";
-  }
-  return "";
 }
 
 /// Succeeded jobs have a result; so have failed ones whose solve did not converge under
@@ -118,18 +85,51 @@ HttpApi::HttpApi(JobStore& store, WorkerPool& workers, CaseValidator validator, 
       options_(std::move(options)) {}
 
 std::string HttpApi::route_template(const std::string& path) {
-  if (path == "/v1/jobs" || path == "/healthz" || path == "/metrics" || is_contract_path(path))
-    return path;
-  if (auto jp = split_job_path(path)) {
-    if (jp->leaf.empty()) return "/v1/jobs/{id}";
-    if (jp->leaf == "result" || jp->leaf == "solution.vtu" || jp->leaf == "cancel" ||
-        jp->leaf == "case") {
-      return "/v1/jobs/{id}/" + jp->leaf;
-    }
-    return "unknown";
-  }
+  if (std::string route = matching_template(path); !route.empty()) return route;
   if (path.compare(0, 4, "/v1/") == 0) return "unknown";
   return "static";
+}
+
+std::function<void(const httplib::Request&, httplib::Response&)> HttpApi::handler(
+    const ApiRoute& route) {
+  using JobHandler = void (HttpApi::*)(const Request&, Response&, std::int64_t);
+  using PlainHandler = void (HttpApi::*)(const Request&, Response&);
+  using Key = std::pair<std::string_view, std::string_view>;
+  static const std::map<Key, PlainHandler> plain = {
+      {{"POST", "/v1/jobs"}, &HttpApi::post_job},
+      {{"GET", "/v1/jobs"}, &HttpApi::list_jobs},
+      {{"GET", "/v1/openapi.json"}, &HttpApi::get_contract},
+      {{"GET", "/v1/schemas/case.json"}, &HttpApi::get_contract},
+      {{"GET", "/v1/schemas/result.json"}, &HttpApi::get_contract},
+      {{"GET", "/healthz"}, &HttpApi::healthz},
+      {{"GET", "/metrics"}, &HttpApi::metrics},
+  };
+  static const std::map<Key, JobHandler> with_id = {
+      {{"GET", "/v1/jobs/{id}"}, &HttpApi::get_job},
+      {{"DELETE", "/v1/jobs/{id}"}, &HttpApi::delete_job},
+      {{"GET", "/v1/jobs/{id}/result"}, &HttpApi::get_result},
+      {{"GET", "/v1/jobs/{id}/solution.vtu"}, &HttpApi::get_solution},
+      {{"GET", "/v1/jobs/{id}/case"}, &HttpApi::get_case},
+      {{"POST", "/v1/jobs/{id}/cancel"}, &HttpApi::cancel_job},
+  };
+  const Key key{route.method, route.path};
+  if (auto it = plain.find(key); it != plain.end())
+    return [this, h = it->second](const Request& req, Response& res) { (this->*h)(req, res); };
+  if (auto it = with_id.find(key); it != with_id.end())
+    return [this, h = it->second, pattern = route.path](const Request& req, Response& res) {
+      const std::string text = id_segment(pattern, req.path);
+      if (auto id = parse_job_id(text)) {
+        (this->*h)(req, res, *id);
+      } else {
+        send_problem(
+            req, res,
+            problems::not_found("there is no job '" + text + "' (job ids are positive integers)"));
+      }
+    };
+  // A route in the table without a handler is a programming error, found by every test that
+  // starts a server.
+  throw std::logic_error("no handler for " + std::string(route.method) + " " +
+                         std::string(route.path));
 }
 
 void HttpApi::install(httplib::Server& server) {
@@ -148,39 +148,22 @@ void HttpApi::install(httplib::Server& server) {
   });
   server.set_logger([this](const Request& req, const Response& res) { on_logged(req, res); });
 
-  auto with_id = [this](void (HttpApi::*handler)(const Request&, Response&, std::int64_t)) {
-    return [this, handler](const Request& req, Response& res) {
-      const std::string text = req.matches[1];
-      if (auto id = parse_job_id(text)) {
-        (this->*handler)(req, res, *id);
-      } else {
-        send_problem(
-            req, res,
-            problems::not_found("there is no job '" + text + "' (job ids are positive integers)"));
-      }
-    };
-  };
-  server.Post("/v1/jobs", [this](const Request& req, Response& res) { post_job(req, res); });
-  server.Get("/v1/jobs", [this](const Request& req, Response& res) { list_jobs(req, res); });
-  server.Get("/v1/jobs/([^/]+)", with_id(&HttpApi::get_job));
-  server.Get("/v1/jobs/([^/]+)/result", with_id(&HttpApi::get_result));
-  server.Get("/v1/jobs/([^/]+)/solution\\.vtu", with_id(&HttpApi::get_solution));
-  server.Get("/v1/jobs/([^/]+)/case", with_id(&HttpApi::get_case));
-  server.Post("/v1/jobs/([^/]+)/cancel", with_id(&HttpApi::cancel_job));
-  server.Delete("/v1/jobs/([^/]+)", with_id(&HttpApi::delete_job));
   // Built once: they depend only on the program (the rules tables), not on the request.
-  std::map<std::string, std::string> contract = {{"/v1/openapi.json", dump(openapi_document())}};
+  contract_ = {{"/v1/openapi.json", dump(openapi_document())}};
   for (const char* name : {"case.json", "result.json"})
-    contract["/v1/schemas/" + std::string(name)] = dump(*published_schema(name));
-  for (const auto& [path, text] : contract) {
-    std::string pattern;  // cpp-httplib patterns are regular expressions
-    for (char ch : path) pattern += ch == '.' ? std::string("\\.") : std::string(1, ch);
-    server.Get(pattern, [text = text](const Request&, Response& res) {
-      res.set_content(text, "application/json");
-    });
+    contract_["/v1/schemas/" + std::string(name)] = dump(*published_schema(name));
+  for (const ApiRoute& route : api_routes()) {
+    const std::string pattern = route_pattern(route.path);
+    auto h = handler(route);
+    if (route.method == "GET")
+      server.Get(pattern, std::move(h));
+    else if (route.method == "POST")
+      server.Post(pattern, std::move(h));
+    else if (route.method == "DELETE")
+      server.Delete(pattern, std::move(h));
+    else
+      throw std::logic_error("unsupported method in the route table: " + std::string(route.method));
   }
-  server.Get("/healthz", [this](const Request& req, Response& res) { healthz(req, res); });
-  server.Get("/metrics", [this](const Request& req, Response& res) { metrics(req, res); });
   // Last, so API routes win: everything else under / comes from --web-root.
   server.Get("/.*", [this](const Request& req, Response& res) { static_file(req, res); });
 }
@@ -210,17 +193,12 @@ HandlerResponse HttpApi::pre_route(const Request& req, Response& res) {
 
   // Without Content-Length cpp-httplib would read the body until the client closes the
   // connection. Routes that take no body are served here without reading anything.
-  if (auto jp = split_job_path(req.path)) {
-    if (auto id = parse_job_id(jp->id)) {
-      if (req.method == "POST" && jp->leaf == "cancel") {
-        cancel_job(req, res, *id);
-        return HandlerResponse::Handled;
-      }
-      if (req.method == "DELETE" && jp->leaf.empty()) {
-        delete_job(req, res, *id);
-        return HandlerResponse::Handled;
-      }
-    }
+  const std::string route = matching_template(req.path);
+  for (const ApiRoute& r : api_routes()) {
+    // Only POST /v1/jobs takes a body; the others (cancel, delete) need none.
+    if (r.path != route || r.method != req.method || route == "/v1/jobs") continue;
+    handler(r)(req, res);
+    return HandlerResponse::Handled;
   }
   if (req.path == "/v1/jobs" && req.method == "POST") {
     send_problem(req, res, problems::length_required("send the case with a Content-Length header"));
@@ -518,6 +496,10 @@ void HttpApi::delete_job(const Request& req, Response& res, std::int64_t id) {
     case DeleteOutcome::kNotFinished:
       return send_problem(req, res, problems::job_not_finished(id));
   }
+}
+
+void HttpApi::get_contract(const Request& req, Response& res) {
+  res.set_content(contract_.at(req.path), "application/json");
 }
 
 void HttpApi::healthz(const Request& req, Response& res) {

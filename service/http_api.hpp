@@ -8,10 +8,12 @@
 #include <exception>
 #include <filesystem>
 #include <functional>
+#include <map>
 #include <nlohmann/json.hpp>
 #include <string>
 #include <vector>
 
+#include "api_routes.hpp"
 #include "case/case_error.hpp"
 #include "event_log.hpp"
 #include "job_store.hpp"
@@ -57,6 +59,7 @@ class HttpApi {
   void get_case(const Request& req, Response& res, std::int64_t id);
   void cancel_job(const Request& req, Response& res, std::int64_t id);
   void delete_job(const Request& req, Response& res, std::int64_t id);
+  void get_contract(const Request& req, Response& res);
   void healthz(const Request& req, Response& res);
   void metrics(const Request& req, Response& res);
   void static_file(const Request& req, Response& res);
@@ -66,6 +69,9 @@ class HttpApi {
   httplib::Server::HandlerResponse on_error(const Request& req, Response& res);
   void on_exception(const Request& req, Response& res, std::exception_ptr error);
   void on_logged(const Request& req, const Response& res);
+
+  /// The handler of a route of api_routes(); throws std::logic_error for a route without one.
+  std::function<void(const Request&, Response&)> handler(const ApiRoute& route);
 
   /// 404 problem for an unknown job id.
   void not_found(const Request& req, Response& res, std::int64_t id);
@@ -78,6 +84,8 @@ class HttpApi {
   Metrics& metrics_;
   EventLog& log_;
   HttpApiOptions options_;
+  /// The OpenAPI document and the JSON Schemas, by path (built in install()).
+  std::map<std::string, std::string> contract_;
 };
 
 }  // namespace fosls::service

@@ -9,13 +9,13 @@ double bytes_per_unknown(SolverMethod method) {
   // tests/benchmarks/memory_calibration.py, fitted on relative error; see docs/case-format.md.
   switch (method) {
     case SolverMethod::kMmg:
-      return 1585;
+      return 1209;
     case SolverMethod::kTnnmg:
-      return 1592;
+      return 1215;
     case SolverMethod::kPdas:
       return 2095;
     case SolverMethod::kPgs:
-      return 1042;
+      return 610;
   }
   return 2095;
 }

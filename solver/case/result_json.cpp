@@ -39,6 +39,7 @@ json statistics_json(const SolverReport& report) {
   const CycleStatistics& c = report.cycle;
   return {{"nested_iterations", report.nested_iterations},
           {"nested_s", report.nested_s},
+          {"accelerated_steps", report.accelerated_steps},
           {"galerkin_rebuilds", c.galerkin_rebuilds},
           {"safeguard_reductions", c.safeguard_reductions},
           {"galerkin_s", c.galerkin_s},

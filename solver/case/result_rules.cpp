@@ -44,6 +44,9 @@ ObjectRulePtr statistics_rule() {
                     "iterations of the nested iteration on each coarser level, coarsest first "
                     "(mmg and tnnmg)"),
        output_field("nested_s", number(), "s", "time of the nested iteration (in setup_s)"),
+       output_field("accelerated_steps", count(), "1",
+                    "iterations whose step the subspace acceleration improved (mmg and tnnmg "
+                    "with \"acceleration\": \"subspace\")"),
        output_field("galerkin_rebuilds", count(), "1",
                     "coarse matrices rebuilt for new active sets (truncation)"),
        output_field("safeguard_reductions", count(), "1",

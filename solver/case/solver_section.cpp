@@ -96,6 +96,11 @@ ObjectRulePtr solver_rule() {
                      coarse_obstacle_info(s.multilevel.projection).name,
                      "how the obstacle of the normal displacement is carried to a coarse "
                      "contact edge"),
+      optional_field("acceleration", choice_value({"subspace", "none"}),
+                     s.accelerate ? "subspace" : "none",
+                     "mmg and tnnmg: \"subspace\" minimises J over the last two steps after "
+                     "each iteration, still feasible and monotone (docs/method.md §4.5); "
+                     "\"none\" runs the plain method"),
   };
   r->hook = check_smoothing;
   r->notes = "mmg needs pre_smoothing + post_smoothing ≥ 1";
@@ -117,6 +122,7 @@ SolverOptions read_solver_section(const json& j) {
   s.multilevel.post_smoothing = j.value("post_smoothing", s.multilevel.post_smoothing);
   if (j.contains("coarse_obstacle"))
     s.multilevel.projection = find_coarse_obstacle(j["coarse_obstacle"])->projection;
+  if (j.contains("acceleration")) s.accelerate = j["acceleration"] == "subspace";
   return s;
 }
 

@@ -12,6 +12,7 @@
 #include "core/indefinite_system.hpp"
 #include "core/peak_memory.hpp"
 #include "solvers/algebraic_error.hpp"
+#include "solvers/subspace_acceleration.hpp"
 
 namespace fosls {
 
@@ -338,6 +339,8 @@ SolverReport solve_with_chain(const BoxQp& qp, const LevelHierarchy& hierarchy,
     if (observer.on_iteration) observer.on_iteration(rec);
     return rec;
   };
+  SubspaceAcceleration acceleration(qp);
+  const bool accelerate = multilevel && options.accelerate;
   report.initial_kkt = record(0, 0.0, 0).kkt_residual;
   report.final_kkt = report.initial_kkt;
   report.converged = report.initial_kkt == 0.0;
@@ -354,10 +357,12 @@ SolverReport solve_with_chain(const BoxQp& qp, const LevelHierarchy& hierarchy,
     }
     const Vector x_old = x, r_old = r;
     step->iterate(x, r);
+    if (accelerate && acceleration.accelerate(x_old, r_old, x, r) > 0.0) ++report.accelerated_steps;
     // Recompute the residual so that rounding in the incremental updates cannot accumulate.
     symmetric_multiply(qp.A, x, r);
     r = qp.b - r;
     const Vector dx = x - x_old;
+    if (accelerate) acceleration.remember(x_old, r_old, x, r);
     FOSLS_ASSERT(qp.feasible(x), "every step keeps lower <= x <= upper");
     // J(x) − J(x_old) = −½ dx·(r_old + r); mmg, tnnmg and pgs never increase J (up to rounding
     // in the residuals, relative to the size of the step's terms).

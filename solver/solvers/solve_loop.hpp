@@ -50,6 +50,10 @@ struct SolverOptions {
   bool nested = true;
   double nested_tolerance = 1e-3;
   int nested_max_iterations = 100;
+  /// mmg and tnnmg: after each step, minimise J exactly over the plane of this step and the
+  /// previous one, as far as the bounds allow (SubspaceAcceleration; docs/method.md §4.5).
+  /// Still monotone and feasible; false runs the plain method.
+  bool accelerate = true;
 };
 
 struct SolverReport {
@@ -74,6 +78,8 @@ struct SolverReport {
   double nested_s = 0.0;
   /// Iterations spent on each coarser level by the nested iteration (coarsest first).
   std::vector<int> nested_iterations;
+  /// Iterations whose step the subspace acceleration changed (options.accelerate).
+  int accelerated_steps = 0;
   double solve_s = 0.0;
   /// Peak resident set (MiB) after the Galerkin chain and after the whole set-up (0 where the
   /// method has no such stage).

@@ -9,6 +9,12 @@ by least squares on relative error and prints the table for docs/case-format.md 
 coefficients for solver/case/resource_estimate.cpp.
 
     tests/benchmarks/memory_calibration.py build/bin/fosls-contact [--levels 4,5,6,7] [--hertz]
+        [--adaptive]
+
+With --adaptive it also runs the shipped hertz_adaptive example to 6, 8 and 10 steps with mmg
+and tnnmg (solved to the end: the adaptive mesh depends on the solutions) and prints the factor
+by which its peak exceeds the uniform estimate for the same finest size: the
+kAdaptiveHierarchyFactor of solver/case/resource_estimate.hpp.
 
 Only two iterations are run: the peak is reached while setting up (hierarchy, factorisation)
 and in the first cycles; later iterations allocate nothing new.
@@ -71,6 +77,7 @@ def main():
     ap.add_argument("cli")
     ap.add_argument("--levels", default="4,5,6,7")
     ap.add_argument("--hertz", action="store_true", help="also the Hertz example (graded gmsh mesh)")
+    ap.add_argument("--adaptive", action="store_true", help="also the adaptive hierarchy factor")
     args = ap.parse_args()
     base_case = json.loads(subprocess.check_output([args.cli, "example", "signorini_square"]))
     rows = []
@@ -111,6 +118,35 @@ def main():
         est = base + slopes[method] * dofs
         print(f"| {name} | {level} | {method} | {dofs} | {peak / 2**20:.0f} | {est / 2**20:.0f} | "
               f"{100 * (est - peak) / peak:+.0f} % |")
+    if args.adaptive:
+        adaptive_factor(args.cli, base, slopes)
+
+
+def adaptive_factor(cli, base, slopes):
+    """Peak of adaptive runs against the uniform estimate base + slope · unknowns."""
+    case = json.loads(subprocess.check_output([cli, "example", "hertz_adaptive"]))
+    print("\n| adaptive steps | method | finest unknowns | levels | peak (MiB) | "
+          "uniform estimate (MiB) | factor |")
+    print("|---|---|---|---|---|---|---|")
+    factors = []
+    with tempfile.TemporaryDirectory() as tmp:
+        for steps in (6, 8, 10):
+            for method in ("mmg", "tnnmg"):
+                c = json.loads(json.dumps(case))
+                c["adaptivity"] = dict(c["adaptivity"], steps=steps, max_dofs=1000000)
+                c["solver"] = dict(c.get("solver", {}), method=method)
+                path = f"{tmp}/case.json"
+                with open(path, "w") as f:
+                    json.dump(c, f)
+                peak, _, out = peak_of([cli, "solve", path, "--quiet", "--vtu", f"{tmp}/s.vtu"])
+                result = json.loads(out)
+                dofs = result["dofs_total"]
+                uniform = base + slopes[method] * dofs
+                factor = (peak - base) / (slopes[method] * dofs)
+                factors.append(factor)
+                print(f"| {steps} | {method} | {dofs} | {result['levels']} | {peak / 2**20:.0f} | "
+                      f"{uniform / 2**20:.0f} | {factor:.2f} |", flush=True)
+    print(f"largest factor {max(factors):.2f}")
 
 
 if __name__ == "__main__":

@@ -5,15 +5,19 @@
 
 #include <gtest/gtest.h>
 
+#include <cctype>
 #include <chrono>
 #include <fstream>
 #include <map>
 #include <memory>
+#include <set>
 #include <sstream>
 #include <thread>
 
+#include "api_routes.hpp"
 #include "fake_job_runner.hpp"
 #include "http_client.hpp"
+#include "openapi.hpp"
 #include "sqlite_job_store.hpp"
 #include "temp_dir.hpp"
 
@@ -474,6 +478,28 @@ TEST(HttpApi, RouteTemplatesKeepMetricLabelsBounded) {
   EXPECT_EQ(HttpApi::route_template("/v1/jobs/17/solution.vtu"), "/v1/jobs/{id}/solution.vtu");
   EXPECT_EQ(HttpApi::route_template("/v1/jobs/17/x"), "unknown");
   EXPECT_EQ(HttpApi::route_template("/index.html"), "static");
+  EXPECT_EQ(HttpApi::route_template("/v1/jobs/17/cancel/x"), "unknown");
+}
+
+TEST(HttpApi, OneRouteTableForServerAllowHeadersAndOpenApi) {
+  // The OpenAPI document lists exactly the routes of the table, method by method.
+  std::set<std::pair<std::string, std::string>> table, documented;
+  for (const ApiRoute& r : api_routes()) table.emplace(r.method, r.path);
+  const nlohmann::json document = openapi_document();
+  for (const auto& [path, operations] : document["paths"].items())
+    for (const auto& [method, operation] : operations.items()) {
+      std::string upper = method;
+      for (char& c : upper) c = static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
+      documented.emplace(upper, path);
+    }
+  EXPECT_EQ(table, documented);
+  EXPECT_EQ(allowed_methods("/v1/jobs/3"), "GET, DELETE");
+  EXPECT_EQ(allowed_methods("/v1/jobs"), "GET, POST");
+  EXPECT_EQ(allowed_methods("/v1/jobs/3/cancel"), "POST");
+  EXPECT_EQ(allowed_methods("/v1/jobs//cancel"), "");
+  EXPECT_EQ(allowed_methods("/nowhere"), "");
+  EXPECT_EQ(id_segment("/v1/jobs/{id}/result", "/v1/jobs/42/result"), "42");
+  EXPECT_EQ(route_pattern("/v1/jobs/{id}/solution.vtu"), "/v1/jobs/([^/]+)/solution\\.vtu");
 }
 
 }  // namespace

@@ -150,7 +150,7 @@ TEST(ServiceIsolation, AMesherAbortFailsItsJobAtTheMeshAndTheServerStaysUp) {
 TEST(ServiceIsolation, ACaseEstimatedAboveTheBudgetIsRefusedWithTheEstimate) {
   Service svc(1, {"--max-job-memory", "100M"});
   json big = example("signorini_square");
-  big["mesh"]["refinements"] = 6;  // 526 338 unknowns, about 800 MiB with mmg
+  big["mesh"]["refinements"] = 6;  // 526 338 unknowns, about 620 MiB with mmg
   auto res = svc.post(big);
   expect_problem(res, 422);
   const json p = json::parse(res->body);

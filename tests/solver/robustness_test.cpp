@@ -1,7 +1,9 @@
 // Robustness of mmg, asserted on deterministic iteration counts:
 // to a 1e-8 KKT reduction, the square pressed onto a flat obstacle (the linear square:
 // the whole bottom in contact) needs iteration counts that vary by at most 3 over 4 to 8
-// levels, and λ = ∞ needs at most 1.25× the iterations of λ = 1 at the same level.
+// levels, and λ = ∞ needs at most 1.25× the iterations of λ = 1 at the same level. With the
+// default subspace acceleration (docs/method.md §4.5) the counts are 13–15 (λ = 1) and 12–13
+// (λ = ∞) for 4–8 levels, against 33–30 and 28–26 for the plain cycle: at most 20 is asserted.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -40,6 +42,8 @@ TEST(Robustness, FlatSquareIterationsIndependentOfLevelsAndLambda) {
   }
   EXPECT_LE(*std::max_element(one.begin(), one.end()) - *std::min_element(one.begin(), one.end()),
             3);
+  EXPECT_LE(*std::max_element(one.begin(), one.end()), 20);
+  EXPECT_LE(*std::max_element(inf.begin(), inf.end()), 20);
   EXPECT_LE(*std::max_element(inf.begin(), inf.end()) - *std::min_element(inf.begin(), inf.end()),
             3);
 }
@@ -47,7 +51,7 @@ TEST(Robustness, FlatSquareIterationsIndependentOfLevelsAndLambda) {
 TEST(Robustness, CurvedGapSquareNoGrowthWithLevels) {
   // Contact zone a proper sub-interval: the search for the active set (the non-linear phase)
   // is mostly done by the nested iteration on coarse levels, so refining does not add
-  // iterations (measured 65, 35, 30 at 4, 5, 6 levels).
+  // iterations (measured 14, 14, 14 at 4, 5, 6 levels with the default acceleration).
   const Mesh coarse = make_square({.size = 0.25});
   int previous = 1000;
   for (int levels = 4; levels <= 6; ++levels) {

@@ -1,0 +1,17 @@
+#pragma once
+// A rough guide to how long a solve takes, from its unknowns and method (docs/case-format.md,
+// "Resources"): fitted on the curved-gap square on two cores of the development machine. It is
+// printed, never used to refuse a case — the same run varies 2–3× with the machine's load.
+
+#include <optional>
+
+#include "solvers/solve_loop.hpp"
+
+namespace fosls {
+
+/// Seconds for mesh, assembly, set-up and solve to the default tolerance; nothing for pgs,
+/// whose iteration count grows with the mesh (it is a baseline, not expected to converge on
+/// fine meshes).
+std::optional<double> estimated_seconds(long long unknowns, SolverMethod method);
+
+}  // namespace fosls

@@ -1,0 +1,50 @@
+#include "solvers/subspace_acceleration.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+namespace fosls {
+
+double SubspaceAcceleration::accelerate(const Vector& x_old, const Vector& r_old, Vector& x,
+                                        Vector& r) {
+  if (p_.size() != x.size()) return 0.0;
+  // d = x − x_old and A d = r_old − r stay expressions: no vector of the problem's size is
+  // allocated here (at 2M unknowns each is 16 MiB).
+  const auto d = x - x_old;
+  const auto ad = r_old - r;
+  // J(x_old + a d + b p) is quadratic in (a, b) with Hessian H and gradient −g at (0, 0).
+  const double hdd = d.dot(ad), hdp = d.dot(ap_), hpp = p_.dot(ap_);
+  const double gd = d.dot(r_old), gp = p_.dot(r_old);
+  const double det = hdd * hpp - hdp * hdp;
+  // Nearly parallel directions: the 2×2 system carries no information beyond the step itself.
+  if (!(hdd > 0 && hpp > 0) || det <= 1e-10 * hdd * hpp) return 0.0;
+  const double a = (gd * hpp - gp * hdp) / det, b = (hdd * gp - hdp * gd) / det;
+  // The move from x to the minimiser y: (a − 1) d + b p. J(y) ≤ J(x) since x is the point
+  // (1, 0) of the same plane; along the segment from x to y, J stays ≤ J(x) (convexity), so
+  // the largest feasible part of the segment is taken.
+  const auto move = (a - 1.0) * d + b * p_;
+  double t = 1.0;
+  for (int i = 0; i < x.size(); ++i) {
+    const double m = move[i];
+    if (m > 0 && x[i] + m > qp_.upper[i]) t = std::min(t, (qp_.upper[i] - x[i]) / m);
+    if (m < 0 && x[i] + m < qp_.lower[i]) t = std::min(t, (qp_.lower[i] - x[i]) / m);
+  }
+  t = std::max(t, 0.0);
+  if (t == 0.0) return 0.0;
+  for (int i = 0; i < x.size(); ++i) {
+    // Both read d_i = x_i − x_old,i and (A d)_i = r_old,i − r_i before x_i and r_i change.
+    const double moved = t * ((a - 1.0) * (x[i] - x_old[i]) + b * p_[i]);
+    const double image = t * ((a - 1.0) * (r_old[i] - r[i]) + b * ap_[i]);
+    x[i] = std::clamp(x[i] + moved, qp_.lower[i], qp_.upper[i]);
+    r[i] -= image;
+  }
+  return t;
+}
+
+void SubspaceAcceleration::remember(const Vector& x_old, const Vector& r_old, const Vector& x,
+                                    const Vector& r) {
+  p_ = x - x_old;
+  ap_ = r_old - r;
+}
+
+}  // namespace fosls

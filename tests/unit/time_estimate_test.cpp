@@ -1,0 +1,38 @@
+// The rough time guide of `fosls-contact estimate` (docs/case-format.md, "Resources") against
+// the solver table it was fitted on (README, two threads): within a factor 1.5 of every
+// measured total up to 525k unknowns, O(N) for the multilevel methods, faster than N for pdas.
+#include <gtest/gtest.h>
+
+#include "case/time_estimate.hpp"
+
+namespace fosls {
+namespace {
+
+TEST(TimeEstimate, FollowsTheMeasuredSolverTable) {
+  struct Row {
+    long long unknowns;
+    SolverMethod method;
+    double seconds;
+  };
+  const Row measured[] = {
+      {32832, SolverMethod::kMmg, 0.9},   {131200, SolverMethod::kMmg, 2.9},
+      {524544, SolverMethod::kMmg, 11.8}, {32832, SolverMethod::kPdas, 1.1},
+      {131200, SolverMethod::kPdas, 9.6}, {524544, SolverMethod::kPdas, 51.7},
+  };
+  for (const Row& r : measured) {
+    const auto s = estimated_seconds(r.unknowns, r.method);
+    ASSERT_TRUE(s);
+    EXPECT_LT(*s, 1.5 * r.seconds) << r.unknowns << " " << method_name(r.method);
+    EXPECT_GT(*s, r.seconds / 1.5) << r.unknowns << " " << method_name(r.method);
+  }
+  const double mmg = *estimated_seconds(4000000, SolverMethod::kMmg) /
+                     *estimated_seconds(1000000, SolverMethod::kMmg);
+  EXPECT_NEAR(mmg, 4.0, 0.1);
+  const double pdas = *estimated_seconds(4000000, SolverMethod::kPdas) /
+                      *estimated_seconds(1000000, SolverMethod::kPdas);
+  EXPECT_GT(pdas, 5.0);
+  EXPECT_FALSE(estimated_seconds(100000, SolverMethod::kPgs));
+}
+
+}  // namespace
+}  // namespace fosls
