@@ -367,7 +367,10 @@ SolverReport solve_with_chain(const BoxQp& qp, const LevelHierarchy& hierarchy,
     r = qp.b - r;
     const Vector dx = x - x_old;
     if (accelerate) acceleration.remember(x_old, r_old, x, r);
-    FOSLS_ASSERT(qp.feasible(x), "every step keeps lower <= x <= upper");
+    // pdas (semismooth Newton) is not a feasible-path method: its iterates may leave the bounds
+    // on the inactive set until the active set is right; every other method keeps them.
+    FOSLS_ASSERT(options.method == SolverMethod::kPdas || qp.feasible(x),
+                 "every step keeps lower <= x <= upper");
     // J(x) − J(x_old) = −½ dx·(r_old + r); mmg, tnnmg and pgs never increase J (up to rounding
     // in the residuals, relative to the size of the step's terms).
     FOSLS_ASSERT(

@@ -12,6 +12,8 @@ no refusal, every method converges, the contact force of mmg and tnnmg equals pd
     robustness.py ... --plain ...   the same with "acceleration": "none" (the plain method; the
                                     bounds are then not checked)
     robustness.py ... --repeat 3 ...   wall times: the shortest of 3 runs each
+    robustness.py ... --refinements=-1,0,1 ...   each case also at refinements one below and
+                                    one above its own (a row per case and level)
 """
 import argparse
 import json
@@ -66,10 +68,13 @@ def solve_once(binary, case, method, workdir, plain):
     return result
 
 
-def check_case(binary, path, table_rows, plain, repeat=1):
+def check_case(binary, path, table_rows, plain, repeat=1, offset=0):
     name = os.path.splitext(os.path.basename(path))[0]
     with open(path) as f:
         case = json.load(f)
+    if offset:
+        case["mesh"]["refinements"] = case["mesh"].get("refinements", 0) + offset
+        name += f" (refinements {case['mesh']['refinements']})"
     failures = []
     results = {}
     with tempfile.TemporaryDirectory() as workdir:
@@ -112,19 +117,23 @@ def main():
     parser.add_argument("--bin", required=True)
     parser.add_argument("--table", action="store_true")
     parser.add_argument("--plain", action="store_true")
+    parser.add_argument("--refinements", default="0",
+                        help="offsets added to each case's mesh.refinements, e.g. -1,0,1")
     parser.add_argument("--repeat", type=int, default=1,
                         help="run each solve this many times and report the shortest wall time")
     parser.add_argument("cases", nargs="+")
     args = parser.parse_args()
     rows = []
     failed = False
+    offsets = [int(o) for o in args.refinements.split(",")]
     for path in args.cases:
-        name, failures = check_case(args.bin, path, rows, args.plain, args.repeat)
-        for f in failures:
-            print(f"FAIL {name}: {f}")
-        failed |= bool(failures)
-        if not failures:
-            print(f"ok {name}")
+        for offset in offsets:
+            name, failures = check_case(args.bin, path, rows, args.plain, args.repeat, offset)
+            for f in failures:
+                print(f"FAIL {name}: {f}")
+            failed |= bool(failures)
+            if not failures:
+                print(f"ok {name}")
     if args.table:
         print()
         print("| case | unknowns | levels | c3 (limit) | mmg | tnnmg | pdas | mmg rate |")
