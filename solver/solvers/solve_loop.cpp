@@ -243,8 +243,12 @@ bool nested_initial_guess(const BoxQp& qp, const LevelHierarchy& h, const Solver
       for (int i = 0; i < xc.size(); ++i)
         xc[i] = std::clamp(xc[i], problems[j].lower[i], problems[j].upper[i]);
     }
-    // The coarsest level is solved exactly by the multilevel cycle's coarse solver.
-    if (j == 0) inner.method = SolverMethod::kMmg;
+    // The coarsest level is solved by pdas on CHOLMOD: a handful of factorisations. (The cycle's
+    // exact coarse solver, a primal active-set method, refactorises once per bound it meets:
+    // from x = 0 on a coarsest level of 15 000 unknowns with ~100 contact bounds — the rounded
+    // punch, whose coarse levels are dropped by the normal-turn rule — it took 6.5 s of a
+    // 9.6 s solve.) The initial guess needs no monotone path: it is clipped to the bounds.
+    if (j == 0) inner.method = SolverMethod::kPdas;
     const SolverReport r = solve_with_chain(problems[j], sub, inner, {}, xc, sub_chain);
     inner.method = options.method;
     report.nested_iterations.push_back(r.iterations);

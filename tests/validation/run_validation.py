@@ -703,8 +703,18 @@ loss of accuracy would exceed:
        else "%d" % pgs[("1", 1)]["iterations"],
        outlier_text))
 
+    # Sections 8 on (robustness, force–indentation, adaptivity) are written by hand from their
+    # own scripts (tests/robustness, tests/benchmarks, tests/validation/force_indentation.py):
+    # kept as they are, so that regenerating sections 1–7 cannot drop them.
+    kept = ""
+    if os.path.exists(path):
+        with open(path) as f:
+            old = f.read()
+        start = old.find("\n## 8. ")
+        if start >= 0:
+            kept = old[start:]
     with open(path, "w") as f:
-        f.write("\n".join(doc))
+        f.write("\n".join(doc).rstrip("\n") + "\n" + kept)
 
 
 # --- main ------------------------------------------------------------------------------------
