@@ -518,6 +518,12 @@ void HttpApi::metrics(const Request& req, Response& res) {
 }
 
 void HttpApi::static_file(const Request& req, Response& res) {
+  // A GET (or HEAD) that reaches here on an API route's path is a method that route lacks
+  // (GET /v1/jobs/1/cancel): 405 with Allow, as every other method gets in on_error.
+  if (const std::string allowed = allowed_methods(req.path); !allowed.empty()) {
+    res.set_header("Allow", allowed);
+    return send_problem(req, res, problems::method_not_allowed(req.method, req.path, allowed));
+  }
   std::optional<std::filesystem::path> file;
   if (!options_.web_root.empty()) file = resolve_static_file(options_.web_root, req.path);
   std::string content;

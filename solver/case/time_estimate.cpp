@@ -1,6 +1,7 @@
 #include "case/time_estimate.hpp"
 
 #include <cmath>
+#include <cstdio>
 
 namespace fosls {
 
@@ -20,6 +21,18 @@ std::optional<double> estimated_seconds(long long unknowns, SolverMethod method)
       return std::nullopt;
   }
   return std::nullopt;
+}
+
+std::string describe_seconds(double seconds) {
+  char text[48];
+  if (seconds < 99.5)
+    std::snprintf(text, sizeof text, "about %.2g s", seconds);
+  else if (seconds < 99.5 * 60)
+    std::snprintf(text, sizeof text, "about %.2g min", seconds / 60);
+  else
+    std::snprintf(text, sizeof text, seconds < 99.5 * 3600 ? "about %.2g h" : "about %.0f h",
+                  seconds / 3600);
+  return text;
 }
 
 }  // namespace fosls

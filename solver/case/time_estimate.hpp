@@ -4,6 +4,7 @@
 // printed, never used to refuse a case — the same run varies 2–3× with the machine's load.
 
 #include <optional>
+#include <string>
 
 #include "solvers/solve_loop.hpp"
 
@@ -13,5 +14,9 @@ namespace fosls {
 /// whose iteration count grows with the mesh (it is a baseline, not expected to converge on
 /// fine meshes).
 std::optional<double> estimated_seconds(long long unknowns, SolverMethod method);
+
+/// "about 0.81 s", "about 53 s", "about 6 min", "about 2.5 h": two significant digits in a
+/// unit a reader takes in at a glance (not "3.5e+02 s").
+std::string describe_seconds(double seconds);
 
 }  // namespace fosls

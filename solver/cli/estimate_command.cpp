@@ -34,12 +34,21 @@ int run_estimate(const std::string& path) {
   std::cout << "memory:   " << describe(*admission.estimate, method) << '\n';
   std::cout << "time:     a rough guide, on two cores like the development machine's "
                "(docs/case-format.md, \"Resources\")\n";
+  // An adaptive case is admitted at adaptivity.max_dofs with the hierarchy factor of
+  // mmg/tnnmg (docs/case-format.md, "Resources"): every row must use the same rule as the line
+  // above, or the mmg row contradicts it.
+  const bool adaptive = admission.estimate->limited_by == "/adaptivity/max_dofs";
+  if (adaptive)
+    std::cout << "          (the time of one solve at max_dofs; an adaptive run solves every one "
+                 "of its up to "
+              << admission.spec->adaptivity->steps + 1 << " steps)\n";
+  const long long unknowns = admission.estimate->unknowns;
   for (const MethodInfo& m : solver_methods()) {
-    const auto e = estimate_resources(admission.estimate->unknowns, true, m.method);
-    const auto seconds = estimated_seconds(admission.estimate->unknowns, m.method);
-    char time[48] = "  time not estimated";
-    if (seconds) std::snprintf(time, sizeof time, "  about %.2g s", *seconds);
-    std::printf("  %-6s %8.0f MiB%s\n", m.name, e.memory_bytes / (1 << 20), time);
+    const auto e = adaptive ? estimate_adaptive_resources(unknowns, m.method)
+                            : estimate_resources(unknowns, true, m.method);
+    const auto seconds = estimated_seconds(unknowns, m.method);
+    const std::string time = seconds ? describe_seconds(*seconds) : "time not estimated";
+    std::printf("  %-6s %8.0f MiB  %s\n", m.name, e.memory_bytes / (1 << 20), time.c_str());
   }
   return kExitOk;
 }

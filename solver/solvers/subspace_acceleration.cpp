@@ -17,25 +17,33 @@ double SubspaceAcceleration::accelerate(const Vector& x_old, const Vector& r_old
   const double gd = d.dot(r_old), gp = p_.dot(r_old);
   const double det = hdd * hpp - hdp * hdp;
   // Nearly parallel directions: the 2×2 system carries no information beyond the step itself.
-  if (!(hdd > 0 && hpp > 0) || det <= 1e-10 * hdd * hpp) return 0.0;
+  // Written so that NaN (overflowing products, inf − inf) also leaves the step alone.
+  if (!(hdd > 0 && hpp > 0) || !(det > 1e-10 * hdd * hpp)) return 0.0;
   const double a = (gd * hpp - gp * hdp) / det, b = (hdd * gp - hdp * gd) / det;
+  if (!std::isfinite(a) || !std::isfinite(b)) return 0.0;
   // The move from x to the minimiser y: (a − 1) d + b p. J(y) ≤ J(x) since x is the point
   // (1, 0) of the same plane; along the segment from x to y, J stays ≤ J(x) (convexity), so
   // the largest feasible part of the segment is taken.
-  const auto move = (a - 1.0) * d + b * p_;
+  // Both loops read d_i = x_i − x_old,i and (A d)_i = r_old,i − r_i before x_i and r_i change,
+  // and compute the move and each DOF's limit the same way, so that the DOFs that set t are
+  // recognised below and put exactly on their bound (x + t·m may miss it by an ulp, and a DOF
+  // just inside its bound is not active for the next cycle's truncation).
+  auto move = [&](int i) { return (a - 1.0) * (x[i] - x_old[i]) + b * p_[i]; };
+  auto limit = [&](int i, double m) {
+    if (m > 0 && x[i] + m > qp_.upper[i]) return (qp_.upper[i] - x[i]) / m;
+    if (m < 0 && x[i] + m < qp_.lower[i]) return (qp_.lower[i] - x[i]) / m;
+    return 1.0;
+  };
   double t = 1.0;
-  for (int i = 0; i < x.size(); ++i) {
-    const double m = move[i];
-    if (m > 0 && x[i] + m > qp_.upper[i]) t = std::min(t, (qp_.upper[i] - x[i]) / m);
-    if (m < 0 && x[i] + m < qp_.lower[i]) t = std::min(t, (qp_.lower[i] - x[i]) / m);
-  }
+  for (int i = 0; i < x.size(); ++i) t = std::min(t, limit(i, move(i)));
   t = std::max(t, 0.0);
   if (t == 0.0) return 0.0;
   for (int i = 0; i < x.size(); ++i) {
-    // Both read d_i = x_i − x_old,i and (A d)_i = r_old,i − r_i before x_i and r_i change.
-    const double moved = t * ((a - 1.0) * (x[i] - x_old[i]) + b * p_[i]);
+    const double m = move(i);
     const double image = t * ((a - 1.0) * (r_old[i] - r[i]) + b * ap_[i]);
-    x[i] = std::clamp(x[i] + moved, qp_.lower[i], qp_.upper[i]);
+    const bool blocking = t < 1.0 && limit(i, m) <= t;
+    const double bound = m > 0 ? qp_.upper[i] : qp_.lower[i];
+    x[i] = blocking ? bound : std::clamp(x[i] + t * m, qp_.lower[i], qp_.upper[i]);
     r[i] -= image;
   }
   return t;

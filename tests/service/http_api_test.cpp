@@ -502,5 +502,48 @@ TEST(HttpApi, OneRouteTableForServerAllowHeadersAndOpenApi) {
   EXPECT_EQ(route_pattern("/v1/jobs/{id}/solution.vtu"), "/v1/jobs/([^/]+)/solution\\.vtu");
 }
 
+TEST(HttpApi, BodylessRequestsOnOddPathsAndGetOnAPostRoute) {
+  Service svc({}, false);
+  auto cli = svc.client();
+  const auto id = json::parse(post_json(cli, "/v1/jobs", R"({"n":1})")->body)["id"].get<int>();
+  const std::string job = "/v1/jobs/" + std::to_string(id);
+  // No Content-Length at all (curl -X POST/DELETE): pre_route dispatches these without
+  // reading a body, so a bad id, an extra segment or a trailing slash must be refused there.
+  auto bodyless = [&](const std::string& method, const std::string& path) {
+    return raw_http(svc.port(),
+                    method + " " + path + " HTTP/1.1\r\nHost: x\r\nConnection: close\r\n\r\n");
+  };
+  for (const std::string& path :
+       {std::string("/v1/jobs/abc/cancel"), std::string("/v1/jobs/0/cancel")}) {
+    auto r = bodyless("POST", path);
+    EXPECT_EQ(r.status, 404) << r.text;
+    EXPECT_NE(raw_body(r).find("job ids are positive integers"), std::string::npos) << r.text;
+  }
+  EXPECT_EQ(bodyless("DELETE", "/v1/jobs/abc").status, 404);
+  for (const std::string& path : {job + "/cancel/extra", job + "/cancel/", job + "/"}) {
+    EXPECT_EQ(bodyless("POST", path).status, 404) << path;
+    EXPECT_EQ(bodyless("DELETE", path).status, 404) << path;
+  }
+  auto post_job = bodyless("POST", job);
+  EXPECT_EQ(post_job.status, 405) << post_job.text;
+  EXPECT_NE(post_job.text.find("Allow: GET, DELETE"), std::string::npos) << post_job.text;
+  auto put_cancel = bodyless("PUT", job + "/cancel");
+  EXPECT_EQ(put_cancel.status, 405) << put_cancel.text;
+  EXPECT_NE(put_cancel.text.find("Allow: POST"), std::string::npos) << put_cancel.text;
+  // None of them touched the job.
+  EXPECT_EQ(json::parse(cli.Get(job.c_str())->body)["state"], "queued");
+  // GET on the cancel route is a method that route lacks, not a missing resource.
+  auto get_cancel = cli.Get((job + "/cancel").c_str());
+  expect_problem(get_cancel, 405);
+  EXPECT_EQ(get_cancel->get_header_value("Allow"), "POST");
+  // Metric labels: the route's template, or "unknown" under /v1/.
+  const std::string metrics = cli.Get("/metrics")->body;
+  for (const char* line :
+       {R"(fosls_http_requests_total{method="POST",route="/v1/jobs/{id}/cancel",status="404"} 2)",
+        R"(fosls_http_requests_total{method="GET",route="/v1/jobs/{id}/cancel",status="405"} 1)",
+        R"(fosls_http_requests_total{method="POST",route="unknown",status="404"} 3)"})
+    EXPECT_NE(metrics.find(line), std::string::npos) << line << "\n" << metrics;
+}
+
 }  // namespace
 }  // namespace fosls::service

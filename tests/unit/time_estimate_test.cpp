@@ -34,5 +34,14 @@ TEST(TimeEstimate, FollowsTheMeasuredSolverTable) {
   EXPECT_FALSE(estimated_seconds(100000, SolverMethod::kPgs));
 }
 
+TEST(TimeEstimate, DescribesSecondsInAUnitReadAtAGlance) {
+  EXPECT_EQ(describe_seconds(0.81), "about 0.81 s");
+  EXPECT_EQ(describe_seconds(53.0), "about 53 s");
+  EXPECT_EQ(describe_seconds(357.0), "about 6 min");
+  EXPECT_EQ(describe_seconds(1400.0), "about 23 min");
+  EXPECT_EQ(describe_seconds(9000.0), "about 2.5 h");
+  EXPECT_EQ(describe_seconds(1e6), "about 278 h");
+}
+
 }  // namespace
 }  // namespace fosls
