@@ -371,11 +371,13 @@ SolverReport solve_with_chain(const BoxQp& qp, const LevelHierarchy& hierarchy,
     // on the inactive set until the active set is right; every other method keeps them.
     FOSLS_ASSERT(options.method == SolverMethod::kPdas || qp.feasible(x),
                  "every step keeps lower <= x <= upper");
-    // J(x) − J(x_old) = −½ dx·(r_old + r); mmg, tnnmg and pgs never increase J (up to rounding
-    // in the residuals, relative to the size of the step's terms).
+    // J(x) − J(x_old) = −½ dx·(r_old + r); mmg, tnnmg and pgs never increase J, up to rounding:
+    // relative to the step's terms, and absolute, of the size of the rounding in r = b − A x
+    // (a few ulps of ‖b‖ per entry) times the step — near convergence dx·r is itself that small.
     FOSLS_ASSERT(
         options.method == SolverMethod::kPdas ||
-            -0.5 * dx.dot(r_old + r) <= 1e-10 * (std::abs(dx.dot(r_old)) + std::abs(dx.dot(r))),
+            -0.5 * dx.dot(r_old + r) <= 1e-10 * (std::abs(dx.dot(r_old)) + std::abs(dx.dot(r))) +
+                                            1e-12 * dx.norm() * (qp.b.norm() + r_old.norm()),
         "a monotone method increased J");
     const double correction = std::sqrt(std::max(0.0, dx.dot(r_old - r)));
     const std::vector<char> now = active_set(qp, x);
