@@ -131,7 +131,7 @@ std::vector<char*> pointers(std::vector<std::string>& strings) {
 }
 
 void apply_limits(pid_t pid, const ChildLimits& limits) {
-  if (limits.address_space_bytes > 0) {
+  if (kAddressSpaceLimitsApplied && limits.address_space_bytes > 0) {
     const rlimit r{limits.address_space_bytes, limits.address_space_bytes};
     ::prlimit(pid, RLIMIT_AS, &r, nullptr);
   }

@@ -15,6 +15,23 @@
 
 namespace fosls {
 
+#if defined(__SANITIZE_ADDRESS__)
+#define FOSLS_ADDRESS_SANITIZER 1
+#elif defined(__has_feature)
+#if __has_feature(address_sanitizer)
+#define FOSLS_ADDRESS_SANITIZER 1
+#endif
+#endif
+
+/// Whether ChildLimits::address_space_bytes is applied. Not in AddressSanitizer builds
+/// (`tests/run.sh --sanitize`): ASan reserves terabytes of address space for its shadow memory
+/// when a program starts, so a child under RLIMIT_AS aborts before main — every gmsh child did.
+#ifdef FOSLS_ADDRESS_SANITIZER
+inline constexpr bool kAddressSpaceLimitsApplied = false;
+#else
+inline constexpr bool kAddressSpaceLimitsApplied = true;
+#endif
+
 /// Limits applied to a child. Zero means "no limit".
 struct ChildLimits {
   /// Wall-clock time from start to exit; the child is killed (SIGKILL) when it passes.

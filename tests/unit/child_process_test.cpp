@@ -108,6 +108,7 @@ TEST(ChildProcess, OutputBeyondTheCapKillsTheChild) {
 }
 
 TEST(ChildProcess, TheChildRunsUnderTheLimits) {
+  if (!kAddressSpaceLimitsApplied) GTEST_SKIP() << "no address-space limit under ASan";
   ChildLimits limits;
   limits.address_space_bytes = std::size_t{512} << 20;
   limits.cpu_seconds = 7;

@@ -115,6 +115,7 @@ TEST(GmshIsolation, RunningOutOfMemoryIsSaid) {
 }
 
 TEST(GmshIsolation, TheRealMesherUnderATinyMemoryLimitFailsCleanly) {
+  if (!kAddressSpaceLimitsApplied) GTEST_SKIP() << "no address-space limit under ASan";
   MeshingControl control;
   control.limits.memory_bytes = std::size_t{160} << 20;  // gmsh alone maps ~115 MiB
   try {
