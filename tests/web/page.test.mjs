@@ -123,6 +123,17 @@ async function setEditorText(text) {
   await page.locator('#case-text').fill(text);
 }
 
+/// The shipped Hertz case under another name, at `refinements`, changed by `change`, submitted
+/// from the editor: its row in the job list.
+async function submitHertzVariant(name, refinements, change) {
+  const variant = JSON.parse(hertzText);
+  variant.name = name;
+  variant.mesh.refinements = refinements;
+  change(variant);
+  await setEditorText(JSON.stringify(variant, null, 2));
+  return submitAndWaitForRow(name);
+}
+
 async function submitAndWaitForRow(name) {
   const before = await page.locator('#job-table tbody tr').count();
   await page.getByRole('button', { name: 'Submit case' }).click();
@@ -381,12 +392,9 @@ test('the mesh view zooms about the pointer, pans, shows edges and probes values
 });
 
 test('a solve stopped by max_iterations gets its own badge, not the success colour', async () => {
-  const stopped = JSON.parse(hertzText);
-  stopped.name = 'stopped_hertz';
-  stopped.mesh.refinements = 1;
-  stopped.solver = { method: 'pgs', tolerance: 1e-12, max_iterations: 2 };
-  await setEditorText(JSON.stringify(stopped, null, 2));
-  const row = await submitAndWaitForRow('stopped_hertz');
+  const row = await submitHertzVariant('stopped_hertz', 1, (c) => {
+    c.solver = { method: 'pgs', tolerance: 1e-12, max_iterations: 2 };
+  });
   const badge = row.locator('.state-not-converged');
   await badge.waitFor();
   assert.equal(await badge.innerText(), 'not converged');
@@ -398,13 +406,10 @@ test('a solve stopped by max_iterations gets its own badge, not the success colo
 });
 
 test('a sweep shows the force of every point against the swept value', async () => {
-  const swept = JSON.parse(hertzText);
-  swept.name = 'swept_hertz';
-  swept.mesh.refinements = 1;
-  swept.boundary.top.displacement = [0, -0.004];
-  swept.sweep = { pointer: '/boundary/top/displacement/1', values: [-0.004, -0.008, -0.012] };
-  await setEditorText(JSON.stringify(swept, null, 2));
-  const row = await submitAndWaitForRow('swept_hertz');
+  const row = await submitHertzVariant('swept_hertz', 1, (c) => {
+    c.boundary.top.displacement = [0, -0.004];
+    c.sweep = { pointer: '/boundary/top/displacement/1', values: [-0.004, -0.008, -0.012] };
+  });
   await row.locator('.state-succeeded').waitFor();
   await page.waitForFunction(() => document.querySelector('#sweep-plot')?.dataset.points === '3');
   assert.equal(await page.locator('#sweep-figure').isVisible(), true);
@@ -420,14 +425,11 @@ test('a sweep shows the force of every point against the swept value', async () 
 
 test('a second job is drawn over the first: pressure and gap, and the sweep curve', async () => {
   // A stiffer body (μ = λ = 2) under the same sweep: about twice the force at each point.
-  const stiffer = JSON.parse(hertzText);
-  stiffer.name = 'swept_stiffer';
-  stiffer.mesh.refinements = 1;
-  stiffer.material = { mu: 2, lambda: 2 };
-  stiffer.boundary.top.displacement = [0, -0.004];
-  stiffer.sweep = { pointer: '/boundary/top/displacement/1', values: [-0.004, -0.008] };
-  await setEditorText(JSON.stringify(stiffer, null, 2));
-  const row = await submitAndWaitForRow('swept_stiffer');
+  const row = await submitHertzVariant('swept_stiffer', 1, (c) => {
+    c.material = { mu: 2, lambda: 2 };
+    c.boundary.top.displacement = [0, -0.004];
+    c.sweep = { pointer: '/boundary/top/displacement/1', values: [-0.004, -0.008] };
+  });
   await row.locator('.state-succeeded').waitFor();
   await page.waitForFunction(() => document.querySelector('#sweep-plot')?.dataset.points === '2');
 
@@ -515,12 +517,9 @@ test('an invalid case shows each error next to its field', async () => {
 
 test('a running job can be cancelled and then deleted from the list', async () => {
   // Projected Gauss–Seidel on a fine mesh with an unreachable tolerance runs for minutes.
-  const slow = JSON.parse(hertzText);
-  slow.name = 'slow_hertz';
-  slow.mesh.refinements = 5;
-  slow.solver = { method: 'pgs', tolerance: 1e-15, max_iterations: 100000 };
-  await setEditorText(JSON.stringify(slow, null, 2));
-  const row = await submitAndWaitForRow('slow_hertz');
+  const row = await submitHertzVariant('slow_hertz', 5, (c) => {
+    c.solver = { method: 'pgs', tolerance: 1e-15, max_iterations: 100000 };
+  });
   // While it runs, the view plots the residuals the polls have seen.
   await row.locator('.state-running').waitFor();
   await page.locator('#job-summary', { hasText: /^Running: iteration \d+, KKT residual/ }).waitFor();
