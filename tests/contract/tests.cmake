@@ -6,14 +6,10 @@ if(Python3_Interpreter_FOUND)
            COMMAND ${Python3_EXECUTABLE} ${CONTRACT_DIR}/case_schema_test.py
                    --bin $<TARGET_FILE:fosls-contact> --source ${PROJECT_SOURCE_DIR})
   set_tests_properties(contract_case_schema PROPERTIES LABELS unit TIMEOUT 120)
-endif()
-if(Python3_Interpreter_FOUND)
   add_test(NAME contract_msh_workflow
            COMMAND ${Python3_EXECUTABLE} ${CONTRACT_DIR}/msh_workflow_test.py
                    --bin $<TARGET_FILE:fosls-contact> --source ${PROJECT_SOURCE_DIR})
   set_tests_properties(contract_msh_workflow PROPERTIES LABELS unit TIMEOUT 300)
-endif()
-if(Python3_Interpreter_FOUND)
   add_test(NAME contract_service
            COMMAND ${Python3_EXECUTABLE} ${CONTRACT_DIR}/service_contract_test.py
                    --serve $<TARGET_FILE:fosls-serve> --source ${PROJECT_SOURCE_DIR})
