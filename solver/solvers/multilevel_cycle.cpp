@@ -7,6 +7,7 @@
 #include "core/fosls_assert.hpp"
 #include "core/indefinite_system.hpp"
 #include "solvers/galerkin_product.hpp"
+#include "solvers/sparse_sum.hpp"
 
 namespace fosls {
 
@@ -18,14 +19,16 @@ double seconds_since(std::chrono::steady_clock::time_point t0) {
 /// `column` of p with `extra_value` added at `extra_dof`: δ = −A_LL⁻¹ (A v)_L.
 Vector energy_minimising_correction(const SparseMatrix& a, const SparseMatrix& p, int column,
                                     const std::vector<int>& local, int extra_dof,
-                                    double extra_value) {
+                                    double extra_value, const std::vector<char>* dropped_rows) {
   const int m = static_cast<int>(local.size());
   std::vector<int> position(a.rows(), -1);
   for (int i = 0; i < m; ++i) position[local[i]] = i;
   Vector ap = Vector::Zero(m);
-  for (SparseMatrix::InnerIterator pc(p, column); pc; ++pc)
+  for (SparseMatrix::InnerIterator pc(p, column); pc; ++pc) {
+    if (dropped_rows && (*dropped_rows)[pc.row()]) continue;
     for (SparseMatrix::InnerIterator it(a, static_cast<int>(pc.row())); it; ++it)
       if (const int i = position[it.row()]; i >= 0) ap[i] += it.value() * pc.value();
+  }
   for (SparseMatrix::InnerIterator it(a, extra_dof); it; ++it)
     if (const int i = position[it.row()]; i >= 0) ap[i] += it.value() * extra_value;
   Eigen::MatrixXd all(m, m);
@@ -41,7 +44,10 @@ Vector energy_minimising_correction(const SparseMatrix& a, const SparseMatrix& p
 }  // namespace
 
 struct MultilevelCycle::LevelState {
-  SparseMatrix A;  ///< Galerkin matrix (coarse levels only)
+  /// The level's matrix (coarse levels only): the chain's untruncated Galerkin matrix, not
+  /// copied, while nothing is truncated, else `truncated`.
+  const SparseMatrix* A = nullptr;
+  SparseMatrix truncated;  ///< the truncated Galerkin matrix, when truncating
   std::unique_ptr<PatchSmoother> patch;
   std::unique_ptr<PointSmoother> point;
   std::unique_ptr<StripSmoother> strip;
@@ -93,7 +99,7 @@ MultilevelCycle::MultilevelCycle(const BoxQp& qp, const LevelHierarchy& hierarch
 MultilevelCycle::~MultilevelCycle() = default;
 
 const SparseMatrix& MultilevelCycle::matrix(int j) const {
-  return j == hierarchy_.num_levels() - 1 ? qp_.A : levels_[j]->A;
+  return j == hierarchy_.num_levels() - 1 ? qp_.A : *levels_[j]->A;
 }
 
 const SparseMatrix& MultilevelCycle::prolongation(int j) const {
@@ -124,14 +130,13 @@ void MultilevelCycle::truncate_level(int j) {
   const std::vector<char>& truncated = level_truncated_[j];
   const SparseMatrix& a = matrix(j);
   SparseMatrix& p = truncated_prolongations_[j];
-  p = level.prolongation;
   std::vector<char> coarse(hierarchy_.levels[j - 1].num_dofs, 0);
   std::vector<std::array<double, 2>>& weights = sn_weights_[j];
   weights.assign(level.links.size(), {0.0, 0.0});
   for (std::size_t l = 0; l < level.links.size(); ++l) weights[l] = level.links[l].sn_weight;
   const bool any = std::find(truncated.begin(), truncated.end(), 1) != truncated.end();
+  std::vector<Eigen::Triplet<double>> corrections;
   if (any) {
-    p.prune([&truncated](int row, int, double) { return truncated[row] == 0; });
     // Zeroing the flux of one half of a coarse contact edge leaves the edge's coarse S_n
     // function with a divergence of order 1/h² in that half's fine triangle: so stiff that the
     // coarse levels cannot represent a normal traction on coarse edges that straddle the end
@@ -139,7 +144,6 @@ void MultilevelCycle::truncate_level(int j) {
     // its flux instead: the truncated half's share goes to the free half, and the fine edges
     // between the halves carry it with the least energy, so the divergence stays bounded and
     // the truncated DOF is untouched.
-    std::vector<Eigen::Triplet<double>> corrections;
     for (std::size_t l = 0; l < level.links.size(); ++l) {
       const ContactLink& link = level.links[l];
       if (link.coarse_sn < 0 || link.fine_sn[0] < 0) continue;
@@ -160,45 +164,70 @@ void MultilevelCycle::truncate_level(int j) {
       const double moved = link.sn_weight[k] * factor;
       corrections.emplace_back(free_sn, link.coarse_sn, moved);
       weights[l][1 - k] += moved;
-      const Vector delta = energy_minimising_correction(a, p, link.coarse_sn, path, free_sn, moved);
+      // The truncated rows of the coarse S_n's column are zero, and the path and the free
+      // half are not truncated, so column coarse_sn of P stands for that of P̃ here.
+      const Vector delta = energy_minimising_correction(a, level.prolongation, link.coarse_sn, path,
+                                                        free_sn, moved, &truncated);
       for (std::size_t m = 0; m < path.size(); ++m)
         corrections.emplace_back(path[m], link.coarse_sn, delta[m]);
     }
-    if (!corrections.empty()) {
-      SparseMatrix m(p.rows(), p.cols());
-      m.setFromTriplets(corrections.begin(), corrections.end());
-      p += m;
-    }
   }
+  // P̃ = P without the truncated rows, plus the flux moves, in storage of its exact size.
+  SparseMatrix moves(level.prolongation.rows(), level.prolongation.cols());
+  moves.setFromTriplets(corrections.begin(), corrections.end());
+  moves.makeCompressed();
+  SparseMatrix truncated_p = sparse_sum(level.prolongation, moves, any ? &truncated : nullptr);
+  p.swap(truncated_p);
+  if (j == hierarchy_.num_levels() - 1) top_moves_.swap(moves);
   if (j > 1) level_truncated_[j - 1] = std::move(coarse);
 }
 
-SparseMatrix MultilevelCycle::truncated_galerkin() {
+void MultilevelCycle::truncated_galerkin(SparseMatrix& out) {
   // P̃ = P + F where F, the difference made by truncation, has few rows (the contact
   // boundary and the fine edges that carry moved flux), so
   //   P̃ᵀAP̃ = PᵀAP + FᵀAP + (FᵀAP)ᵀ + FᵀAF,
   // where PᵀAP and AP are computed once: the fine-level product is not redone for every new
-  // active set.
+  // active set. F is −P on the truncated rows plus the flux moves; only its rows, and the rows
+  // of P that A couples to them, are formed (not F or a row-major P of the fine size).
   const int top = hierarchy_.num_levels() - 1;
   const SparseMatrix& full = chain_->matrices[top - 1];
-  SparseMatrix f = truncated_prolongations_[top] - hierarchy_.levels[top].prolongation;
-  f.prune(0.0);
-  if (f.nonZeros() == 0) return full;
-  std::vector<int> local(f.rows(), -1), rows;
-  for (int col = 0; col < f.outerSize(); ++col)
-    for (SparseMatrix::InnerIterator it(f, col); it; ++it)
-      if (local[it.row()] < 0)
-        local[it.row()] = static_cast<int>(rows.size()), rows.push_back(it.row());
-  const int m = static_cast<int>(rows.size()), nc = static_cast<int>(f.cols());
-  std::vector<Eigen::Triplet<double>> tf, tap, taa;
-  for (int col = 0; col < f.outerSize(); ++col)
-    for (SparseMatrix::InnerIterator it(f, col); it; ++it)
-      tf.emplace_back(local[it.row()], col, it.value());
+  const SparseMatrix& p = hierarchy_.levels[top].prolongation;
+  const std::vector<char>& truncated = level_truncated_[top];
+  const int n = static_cast<int>(p.rows()), nc = static_cast<int>(p.cols());
+  std::vector<int> local(n, -1), rows;
+  std::vector<Eigen::Triplet<double>> tf;
+  auto add_f = [&](int row, int col, double value) {
+    if (local[row] < 0) local[row] = static_cast<int>(rows.size()), rows.push_back(row);
+    tf.emplace_back(local[row], col, value);
+  };
+  for (int col = 0; col < nc; ++col) {
+    for (SparseMatrix::InnerIterator it(p, col); it; ++it)
+      if (truncated[it.row()]) add_f(static_cast<int>(it.row()), col, -it.value());
+    for (SparseMatrix::InnerIterator it(top_moves_, col); it; ++it)
+      add_f(static_cast<int>(it.row()), col, it.value());
+  }
+  if (tf.empty()) {
+    out = full;
+    return;
+  }
+  const int m = static_cast<int>(rows.size());
+  // The rows of P that A couples to F's rows, in a small row-major matrix.
+  std::vector<int> coupled(n, -1);
+  int num_coupled = 0;
+  for (int k = 0; k < m; ++k)
+    for (SparseMatrix::InnerIterator it(qp_.A, rows[k]); it; ++it)
+      if (coupled[it.row()] < 0) coupled[it.row()] = num_coupled++;
+  std::vector<Eigen::Triplet<double>> tp;
+  for (int col = 0; col < nc; ++col)
+    for (SparseMatrix::InnerIterator it(p, col); it; ++it)
+      if (const int c = coupled[it.row()]; c >= 0) tp.emplace_back(c, col, it.value());
+  RowMajorMatrix p_rows(num_coupled, nc);
+  p_rows.setFromTriplets(tp.begin(), tp.end());
+  std::vector<Eigen::Triplet<double>> tap, taa;
   // Rows `rows` of A P: row k of A is its column k (A is symmetric), times the rows of P.
-  const RowMajorMatrix p_rows = hierarchy_.levels[top].prolongation;
   for (int k = 0; k < m; ++k) {
     for (SparseMatrix::InnerIterator it(qp_.A, rows[k]); it; ++it) {
-      for (RowMajorMatrix::InnerIterator pt(p_rows, static_cast<int>(it.row())); pt; ++pt)
+      for (RowMajorMatrix::InnerIterator pt(p_rows, coupled[it.row()]); pt; ++pt)
         tap.emplace_back(k, static_cast<int>(pt.col()), it.value() * pt.value());
       if (int l = local[it.row()]; l >= 0) taa.emplace_back(l, k, it.value());
     }
@@ -210,14 +239,57 @@ SparseMatrix MultilevelCycle::truncated_galerkin() {
   const SparseMatrix rft = rf.transpose();
   const SparseMatrix cross = rft * rap;  // FᵀAP
   const SparseMatrix inner = rft * (aff * rf);
-  SparseMatrix a = full + cross + SparseMatrix(cross.transpose()) + inner;
+  SparseMatrix correction = cross + SparseMatrix(cross.transpose()) + inner;
+  correction.makeCompressed();
+  // Into `out` by swapping: Eigen 3.4's sparse matrices have no move, and a returned local
+  // beside another return path is copied.
+  SparseMatrix a = sparse_sum(full, correction);
   a.prune(0.0);
-  return a;
+  out.swap(a);
 }
 
 namespace {
 constexpr double kCoarseShift = 1e-10;
 constexpr double kRetryCoarseShift = 1e-8;
+
+/// Makes a truncated coarse matrix definite, in place (no second copy of it is formed).
+void regularise_truncated(SparseMatrix& a, const SparseMatrix& truncated_prolongation) {
+  // A coarse DOF whose basis function was truncated away entirely (its column of the
+  // truncated prolongation is empty: under bisection, a U_n or S_n whose fine neighbourhood
+  // was not refined) has a zero row and column — up to the rounding of truncated_galerkin's
+  // update formula, which is cleared here; a unit diagonal keeps the level definite and its
+  // correction (with zero restricted residual) exactly zero.
+  std::vector<char> vanished(a.rows(), 1);
+  for (int col = 0; col < truncated_prolongation.outerSize(); ++col)
+    for (SparseMatrix::InnerIterator it(truncated_prolongation, col); it; ++it)
+      if (it.value() != 0.0) vanished[col] = 0;
+  // Under bisection, truncated coarse functions can also become linearly dependent (a function
+  // whose unrefined neighbourhood keeps only components that others share), and the level is
+  // then only semi-definite. A relative diagonal shift of kCoarseShift makes it definite; the
+  // correction then minimises a majorant of J along the level's functions, so it still never
+  // increases J. The untruncated chain is checked for definiteness (chain_is_definite), so
+  // this hides no indefinite weights.
+  std::vector<char> has_diagonal(a.rows(), 0);
+  for (int col = 0; col < a.outerSize(); ++col) {
+    for (SparseMatrix::InnerIterator it(a, col); it; ++it) {
+      const int row = static_cast<int>(it.row());
+      if (row == col) has_diagonal[col] = 1;
+      if (vanished[row] || vanished[col]) it.valueRef() = 0.0;
+      if (row == col)
+        it.valueRef() = it.value() == 0.0 ? 1.0 : it.value() + kCoarseShift * it.value();
+    }
+  }
+  // A vanished function's diagonal may be missing from the pattern: the rare insertion.
+  std::vector<Eigen::Triplet<double>> unit;
+  for (int i = 0; i < a.rows(); ++i)
+    if (!has_diagonal[i]) unit.emplace_back(i, i, 1.0);
+  if (!unit.empty()) {
+    SparseMatrix e(a.rows(), a.cols());
+    e.setFromTriplets(unit.begin(), unit.end());
+    SparseMatrix sum = sparse_sum(a, e);
+    a.swap(sum);
+  }
+}
 }  // namespace
 
 void MultilevelCycle::rebuild_coarse_levels() {
@@ -240,49 +312,24 @@ void MultilevelCycle::rebuild_coarse_levels() {
   if (!built_) make_smoother(top);
   const bool truncating = std::find(truncated_.begin(), truncated_.end(), 1) != truncated_.end();
   for (int j = top - 1; j >= 0; --j) {
-    SparseMatrix& a = levels_[j]->A;
+    LevelState& level = *levels_[j];
     if (!truncating) {
-      a = chain_->matrices[j];
-    } else if (j == top - 1) {
-      SparseMatrix truncated = truncated_galerkin();
-      a.swap(truncated);
+      level.A = &chain_->matrices[j];
+      SparseMatrix().swap(level.truncated);
     } else {
-      SparseMatrix coarse = galerkin_product(matrix(j + 1), prolongation(j + 1));
-      a.swap(coarse);
+      // The old matrix is released before the new one is formed: two of them at once were
+      // the peak of a solve.
+      SparseMatrix().swap(level.truncated);
+      if (j == top - 1) {
+        truncated_galerkin(level.truncated);
+      } else {
+        SparseMatrix coarse = galerkin_product(matrix(j + 1), prolongation(j + 1));
+        level.truncated.swap(coarse);
+      }
+      level.truncated.makeCompressed();
+      level.A = &level.truncated;
+      regularise_truncated(level.truncated, prolongation(j + 1));
     }
-    // A coarse DOF whose basis function was truncated away entirely (its column of the
-    // truncated prolongation is empty: under bisection, a U_n or S_n whose fine neighbourhood
-    // was not refined) has a zero row and column — up to the rounding of truncated_galerkin's
-    // update formula, which is cleared here; a unit diagonal keeps the level definite and its
-    // correction (with zero restricted residual) exactly zero.
-    std::vector<char> vanished(a.rows(), 1);
-    if (truncating) {
-      const SparseMatrix& p = prolongation(j + 1);
-      for (int col = 0; col < p.outerSize(); ++col)
-        for (SparseMatrix::InnerIterator it(p, col); it; ++it)
-          if (it.value() != 0.0) vanished[col] = 0;
-      a.prune([&vanished](int row, int col, double) { return !vanished[row] && !vanished[col]; });
-    }
-    Vector diag = a.diagonal();
-    std::vector<Eigen::Triplet<double>> unit;
-    for (int i = 0; i < a.rows(); ++i)
-      if (diag[i] == 0.0) unit.emplace_back(i, i, 1.0);
-    if (truncating) {
-      // Under bisection, truncated coarse functions can also become linearly dependent (a
-      // function whose unrefined neighbourhood keeps only components that others share), and
-      // the level is then only semi-definite. A relative diagonal shift of kCoarseShift makes
-      // it definite; the correction then minimises a majorant of J along the level's
-      // functions, so it still never increases J. The untruncated chain is checked for
-      // definiteness (chain_is_definite), so this hides no indefinite weights.
-      for (int i = 0; i < a.rows(); ++i)
-        if (diag[i] != 0.0) unit.emplace_back(i, i, kCoarseShift * diag[i]);
-    }
-    if (!unit.empty()) {
-      SparseMatrix e(a.rows(), a.cols());
-      e.setFromTriplets(unit.begin(), unit.end());
-      a += e;
-    }
-    a.makeCompressed();
     if (j > 0) {
       // The truncated prolongation into level j needs level j's (truncated) matrix.
       truncate_level(j);
@@ -296,6 +343,7 @@ void MultilevelCycle::rebuild_coarse_levels() {
         // that level, only when needed, keeps its correction minimising a majorant of J, so
         // the cycle stays monotone; raising kCoarseShift for every level slowed the robustness
         // cases (146 iterations on one).
+        SparseMatrix& a = level.truncated;
         const Vector d = a.diagonal();
         for (int i = 0; i < a.rows(); ++i) a.coeffRef(i, i) += kRetryCoarseShift * d[i];
         make_smoother(j);

@@ -104,7 +104,7 @@ class MultilevelCycle {
   void smooth_level(int j, Vector& c, Vector& r, const Vector& lo, const Vector& hi, bool forward);
   void project_obstacle(int j, const Vector& c, const Vector& hi, Vector& coarse_hi) const;
   const SparseMatrix& matrix(int j) const;
-  SparseMatrix truncated_galerkin();
+  void truncated_galerkin(SparseMatrix& out);
   const SparseMatrix& prolongation(int j) const;
 
   const BoxQp& qp_;
@@ -120,6 +120,8 @@ class MultilevelCycle {
   /// truncated prolongation P̃_j.
   std::vector<std::vector<char>> level_truncated_;
   std::vector<SparseMatrix> truncated_prolongations_;
+  /// The flux moves of the finest truncated prolongation (P̃ − P off the truncated rows).
+  SparseMatrix top_moves_;
   std::unique_ptr<SparseBoxQpSolver> coarse_solver_;
   std::shared_ptr<const GalerkinChain> chain_;
   /// Per level: the weights of the fine S_n of each link in the truncated prolongation.

@@ -194,11 +194,9 @@ class PdasStep : public Step {
 /// The Galerkin problem of level j−1 seen from the problem of level j at x = 0: A_{j−1} = PᵀAP
 /// (from the chain), b_{j−1} = Pᵀb and upper bounds by the coarse-obstacle projection of the
 /// level-j bounds.
-BoxQp coarser_problem(const BoxQp& fine, const Level& level, const SparseMatrix& coarse_matrix,
-                      CoarseProjection projection) {
+BoxQp coarser_problem(const BoxQp& fine, const Level& level, CoarseProjection projection) {
   const SparseMatrix& p = level.prolongation;
-  BoxQp c;
-  c.A = coarse_matrix;
+  BoxQp c;  // c.A is the chain's matrix, lent to the problem while it is solved
   c.b = p.transpose() * fine.b;
   const int n = static_cast<int>(p.cols());
   c.lower = Vector::Constant(n, -kNoBound);
@@ -214,19 +212,35 @@ BoxQp coarser_problem(const BoxQp& fine, const Level& level, const SparseMatrix&
 /// Returns false (x untouched) when x = 0 is not feasible, e.g. for a negative gap.
 SolverReport solve_with_chain(const BoxQp& qp, const LevelHierarchy& hierarchy,
                               const SolverOptions& options, const SolverObserver& observer,
-                              Vector& x, std::shared_ptr<const GalerkinChain> chain);
+                              Vector& x, std::shared_ptr<GalerkinChain> chain);
+
+/// Lends matrices to the nested solves by swapping them in, and takes them back however the
+/// solve ends: each coarse problem and sub-chain would otherwise hold a copy of the chain's
+/// matrices (at level 7 of the square the largest allocation of the nested iteration).
+class LentMatrices {
+ public:
+  void lend(SparseMatrix& owner, SparseMatrix& borrower) {
+    owner.swap(borrower);
+    loans_.emplace_back(&owner, &borrower);
+  }
+  ~LentMatrices() {
+    for (auto& [owner, borrower] : loans_) owner->swap(*borrower);
+  }
+
+ private:
+  std::vector<std::pair<SparseMatrix*, SparseMatrix*>> loans_;
+};
 
 bool nested_initial_guess(const BoxQp& qp, const LevelHierarchy& h, const SolverOptions& options,
-                          const std::shared_ptr<const GalerkinChain>& chain, Vector& x,
-                          SolverReport& report) {
+                          GalerkinChain& chain, Vector& x, SolverReport& report) {
   const int top = h.num_levels() - 1;
   if (top < 1) return false;
   for (int i = 0; i < qp.size(); ++i)
     if (qp.lower[i] > 0 || qp.upper[i] < 0) return false;
   std::vector<BoxQp> problems(top);
   for (int j = top; j >= 1; --j)
-    problems[j - 1] = coarser_problem(j == top ? qp : problems[j], h.levels[j],
-                                      chain->matrices[j - 1], options.multilevel.projection);
+    problems[j - 1] =
+        coarser_problem(j == top ? qp : problems[j], h.levels[j], options.multilevel.projection);
   SolverOptions inner = options;
   inner.nested = false;
   inner.stopping = StoppingRule::kKktResidual;
@@ -237,7 +251,10 @@ bool nested_initial_guess(const BoxQp& qp, const LevelHierarchy& h, const Solver
     LevelHierarchy sub;
     sub.levels.assign(h.levels.begin(), h.levels.begin() + j + 1);
     auto sub_chain = std::make_shared<GalerkinChain>();
-    sub_chain->matrices.assign(chain->matrices.begin(), chain->matrices.begin() + j);
+    sub_chain->matrices.resize(j);
+    LentMatrices lent;
+    lent.lend(chain.matrices[j], problems[j].A);
+    for (int k = 0; k < j; ++k) lent.lend(chain.matrices[k], sub_chain->matrices[k]);
     if (j > 0) {
       xc = h.levels[j].prolongation * xc;
       for (int i = 0; i < xc.size(); ++i)
@@ -265,9 +282,9 @@ SolverReport solve_box_qp(const BoxQp& qp, const LevelHierarchy& hierarchy,
   const bool multilevel =
       options.method == SolverMethod::kMmg || options.method == SolverMethod::kTnnmg;
   const auto t0 = Clock::now();
-  std::shared_ptr<const GalerkinChain> chain;
+  std::shared_ptr<GalerkinChain> chain;
   if (multilevel) {
-    chain = std::make_shared<const GalerkinChain>(galerkin_chain(qp.A, hierarchy));
+    chain = std::make_shared<GalerkinChain>(galerkin_chain(qp.A, hierarchy));
     if (!chain_is_definite(qp.A, *chain))
       throw IndefiniteSystemError("the FOSLS matrix is not positive definite");
   }
@@ -283,7 +300,7 @@ namespace {
 
 SolverReport solve_with_chain(const BoxQp& qp, const LevelHierarchy& hierarchy,
                               const SolverOptions& options, const SolverObserver& observer,
-                              Vector& x, std::shared_ptr<const GalerkinChain> chain) {
+                              Vector& x, std::shared_ptr<GalerkinChain> chain) {
   SolverReport report;
   const auto t_setup = Clock::now();
   const int n = qp.size();
@@ -293,10 +310,10 @@ SolverReport solve_with_chain(const BoxQp& qp, const LevelHierarchy& hierarchy,
   const bool multilevel =
       options.method == SolverMethod::kMmg || options.method == SolverMethod::kTnnmg;
   if (multilevel && !chain)
-    chain = std::make_shared<const GalerkinChain>(galerkin_chain(qp.A, hierarchy));
+    chain = std::make_shared<GalerkinChain>(galerkin_chain(qp.A, hierarchy));
   if (multilevel && options.nested) {
     const auto t_nested = Clock::now();
-    nested_initial_guess(qp, hierarchy, options, chain, x, report);
+    nested_initial_guess(qp, hierarchy, options, *chain, x, report);
     report.nested_s = std::chrono::duration<double>(Clock::now() - t_nested).count();
   }
   std::unique_ptr<Step> step;
