@@ -12,7 +12,10 @@ namespace fosls {
 
 struct CaseLimits {
   int max_refinements = 8;
-  long long max_dofs = 6'000'000;         ///< DOFs of the finest level
+  /// DOFs of the finest level. 10 million: level 9 of the square (8.4M) fits, and mmg needs
+  /// about 1 KB per unknown (docs/performance.md); whether a case fits the machine is the
+  /// memory estimate's question (the service refuses what exceeds a job's budget).
+  long long max_dofs = 10'000'000;
   std::size_t max_text_bytes = 4u << 20;  ///< msh text
   std::size_t max_expression_length = 1024;
   std::size_t max_geometry_entities = 10000;  ///< points, curves, groups, boundary conditions

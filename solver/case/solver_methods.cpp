@@ -17,14 +17,14 @@ const std::vector<MethodInfo>& method_table() {
        "obstacles, W-cycle, nested iteration",
        true,
        true,
-       {kSmoother, kPreSmoothing, kPostSmoothing, kCoarseObstacle}},
+       {kSmoother, kPreSmoothing, kPostSmoothing, kCoarseObstacle, kCycle}},
       {SolverMethod::kTnnmg,
        "tnnmg",
        "truncated non-smooth Newton multigrid: smoothing, a linear cycle on the inactive set, "
        "projection and line search",
        true,
        false,
-       {kSmoother, kPreSmoothing, kPostSmoothing, kCoarseObstacle}},
+       {kSmoother, kPreSmoothing, kPostSmoothing, kCoarseObstacle, kCycle}},
       {SolverMethod::kPdas,
        "pdas",
        "primal-dual active set method with a direct solver (CHOLMOD) on the finest level",
@@ -58,6 +58,15 @@ const std::vector<CoarseObstacleInfo>& coarse_obstacle_table() {
   return table;
 }
 
+const std::vector<CycleInfo>& cycle_table() {
+  static const std::vector<CycleInfo> table = {
+      {CycleShape::kW, "W", "each level visits the next coarser twice (the default)"},
+      {CycleShape::kV, "V", "each level visits the next coarser once"},
+      {CycleShape::kF, "F", "an F-cycle then a V-cycle on the next coarser level"},
+  };
+  return table;
+}
+
 template <class Table, class Key, class Member>
 const auto& entry_of(const Table& table, Key key, Member member) {
   for (const auto& e : table)
@@ -84,6 +93,7 @@ std::vector<std::string> names_of(const Table& table) {
 std::span<const MethodInfo> solver_methods() { return method_table(); }
 std::span<const SmootherInfo> smoothers() { return smoother_table(); }
 std::span<const CoarseObstacleInfo> coarse_obstacles() { return coarse_obstacle_table(); }
+std::span<const CycleInfo> cycles() { return cycle_table(); }
 
 const MethodInfo& method_info(SolverMethod method) {
   return entry_of(method_table(), method, &MethodInfo::method);
@@ -94,6 +104,9 @@ const SmootherInfo& smoother_info(SmootherType type) {
 const CoarseObstacleInfo& coarse_obstacle_info(CoarseProjection projection) {
   return entry_of(coarse_obstacle_table(), projection, &CoarseObstacleInfo::projection);
 }
+const CycleInfo& cycle_info(CycleShape shape) {
+  return entry_of(cycle_table(), shape, &CycleInfo::shape);
+}
 
 const MethodInfo* find_method(const std::string& name) { return entry_named(method_table(), name); }
 const SmootherInfo* find_smoother(const std::string& name) {
@@ -102,10 +115,12 @@ const SmootherInfo* find_smoother(const std::string& name) {
 const CoarseObstacleInfo* find_coarse_obstacle(const std::string& name) {
   return entry_named(coarse_obstacle_table(), name);
 }
+const CycleInfo* find_cycle(const std::string& name) { return entry_named(cycle_table(), name); }
 
 std::vector<std::string> method_names() { return names_of(method_table()); }
 std::vector<std::string> smoother_names() { return names_of(smoother_table()); }
 std::vector<std::string> coarse_obstacle_names() { return names_of(coarse_obstacle_table()); }
+std::vector<std::string> cycle_names() { return names_of(cycle_table()); }
 
 const char* option_field(SolverOption option) {
   switch (option) {
@@ -117,6 +132,8 @@ const char* option_field(SolverOption option) {
       return "post_smoothing";
     case kCoarseObstacle:
       return "coarse_obstacle";
+    case kCycle:
+      return "cycle";
   }
   return "?";
 }

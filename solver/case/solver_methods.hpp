@@ -12,7 +12,7 @@
 namespace fosls {
 
 /// The solver options of the case that a method may use.
-enum class SolverOption { kSmoother, kPreSmoothing, kPostSmoothing, kCoarseObstacle };
+enum class SolverOption { kSmoother, kPreSmoothing, kPostSmoothing, kCoarseObstacle, kCycle };
 
 struct MethodInfo {
   SolverMethod method;
@@ -37,22 +37,32 @@ struct CoarseObstacleInfo {
   const char* summary;
 };
 
+struct CycleInfo {
+  CycleShape shape;
+  const char* name;
+  const char* summary;
+};
+
 std::span<const MethodInfo> solver_methods();
 std::span<const SmootherInfo> smoothers();
 std::span<const CoarseObstacleInfo> coarse_obstacles();
+std::span<const CycleInfo> cycles();
 
 const MethodInfo& method_info(SolverMethod method);
 const SmootherInfo& smoother_info(SmootherType type);
 const CoarseObstacleInfo& coarse_obstacle_info(CoarseProjection projection);
+const CycleInfo& cycle_info(CycleShape shape);
 
 /// nullptr when no entry has that name.
 const MethodInfo* find_method(const std::string& name);
 const SmootherInfo* find_smoother(const std::string& name);
 const CoarseObstacleInfo* find_coarse_obstacle(const std::string& name);
+const CycleInfo* find_cycle(const std::string& name);
 
 std::vector<std::string> method_names();
 std::vector<std::string> smoother_names();
 std::vector<std::string> coarse_obstacle_names();
+std::vector<std::string> cycle_names();
 
 /// The case field of an option ("smoother", "pre_smoothing", ...).
 const char* option_field(SolverOption option);

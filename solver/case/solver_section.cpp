@@ -96,6 +96,10 @@ ObjectRulePtr solver_rule() {
                      coarse_obstacle_info(s.multilevel.projection).name,
                      "how the obstacle of the normal displacement is carried to a coarse "
                      "contact edge"),
+      optional_field("cycle", choice_value(cycle_names()), cycle_info(s.multilevel.cycle).name,
+                     "mmg and tnnmg: how often a level visits the next coarser one — \"W\" "
+                     "twice, \"V\" once, \"F\" an F-cycle then a V-cycle "
+                     "(docs/performance.md compares them)"),
       optional_field("acceleration", choice_value({"subspace", "none"}),
                      s.accelerate ? "subspace" : "none",
                      "mmg and tnnmg: \"subspace\" minimises J over the last two steps after "
@@ -122,6 +126,7 @@ SolverOptions read_solver_section(const json& j) {
   s.multilevel.post_smoothing = j.value("post_smoothing", s.multilevel.post_smoothing);
   if (j.contains("coarse_obstacle"))
     s.multilevel.projection = find_coarse_obstacle(j["coarse_obstacle"])->projection;
+  if (j.contains("cycle")) s.multilevel.cycle = find_cycle(j["cycle"])->shape;
   if (j.contains("acceleration")) s.accelerate = j["acceleration"] == "subspace";
   return s;
 }

@@ -29,6 +29,7 @@ struct BenchOptions {
   std::string methods = "mmg,pdas";
   std::string smoothers = "patch";
   std::string coarse_obstacles = "a";
+  std::string cycles = "W";
   double tolerance = 1e-8;
   int max_iterations = 500;
   std::string json_path;
@@ -42,6 +43,28 @@ std::vector<std::string> split(const std::string& s) {
   while (std::getline(in, item, ','))
     if (!item.empty()) out.push_back(item);
   return out;
+}
+
+/// One solver setting of a bench row; "-" where the method does not use the option.
+struct Configuration {
+  std::string method, smoother, obstacle, cycle;
+};
+
+/// Every combination of the listed settings, without the repeats of a method that ignores an
+/// option (pdas has one configuration however many smoothers are listed).
+std::vector<Configuration> configurations(const std::vector<std::string>& methods,
+                                          const std::vector<std::string>& smoothers,
+                                          const std::vector<std::string>& obstacles,
+                                          const std::vector<std::string>& cycles);
+
+/// The settings columns of the tables: method, smoother, coarse obstacle, cycle.
+std::string settings_columns(const nlohmann::json& row) {
+  char text[64];
+  std::snprintf(text, sizeof text, "%-6s %-6s %-3s %-3s", row["method"].get<std::string>().c_str(),
+                row["smoother"].get<std::string>().c_str(),
+                row["coarse_obstacle"].get<std::string>().c_str(),
+                row["cycle"].get<std::string>().c_str());
+  return text;
 }
 
 }  // namespace
@@ -135,6 +158,24 @@ std::string unknown_name(const std::vector<std::string>& names, Find find, const
   return out;
 }
 
+std::vector<Configuration> configurations(const std::vector<std::string>& methods,
+                                          const std::vector<std::string>& smoothers,
+                                          const std::vector<std::string>& obstacles,
+                                          const std::vector<std::string>& cycles) {
+  std::vector<Configuration> out;
+  for (const auto& method : methods) {
+    const MethodInfo& info = *find_method(method);
+    auto used = [&info](SolverOption option, const std::vector<std::string>& names) {
+      return uses_option(info, option) ? names : std::vector<std::string>{"-"};
+    };
+    for (const auto& smoother : used(SolverOption::kSmoother, smoothers))
+      for (const auto& obstacle : used(SolverOption::kCoarseObstacle, obstacles))
+        for (const auto& cycle : used(SolverOption::kCycle, cycles))
+          out.push_back({method, smoother, obstacle, cycle});
+  }
+  return out;
+}
+
 /// Adds to every row the ratios of its total time and peak memory to those of the pdas row
 /// with the same level and thread count, and prints them as a second table.
 void print_against_pdas(nlohmann::json& rows) {
@@ -150,13 +191,11 @@ void print_against_pdas(nlohmann::json& rows) {
       row["time_vs_pdas"] = row["total_s"].get<double>() / direct["total_s"].get<double>();
       row["memory_vs_pdas"] = row["peak_mib"].get<double>() / direct["peak_mib"].get<double>();
       if (!header)
-        std::printf("\n%-5s %-6s %-6s %-3s %3s %12s %12s\n", "level", "method", "smooth", "obs",
-                    "thr", "time/pdas", "memory/pdas");
+        std::printf("\n%-5s %-6s %-6s %-3s %-3s %3s %12s %12s\n", "level", "method", "smooth",
+                    "obs", "cyc", "thr", "time/pdas", "memory/pdas");
       header = true;
-      std::printf("%-5d %-6s %-6s %-3s %3d %12.3f %12.3f\n", row["level"].get<int>(),
-                  row["method"].get<std::string>().c_str(),
-                  row["smoother"].get<std::string>().c_str(),
-                  row["coarse_obstacle"].get<std::string>().c_str(), row["threads"].get<int>(),
+      std::printf("%-5d %s %3d %12.3f %12.3f\n", row["level"].get<int>(),
+                  settings_columns(row).c_str(), row["threads"].get<int>(),
                   row["time_vs_pdas"].get<double>(), row["memory_vs_pdas"].get<double>());
     }
   }
@@ -201,71 +240,63 @@ int run_bench(const BenchOptions& o) {
   }
   if (thread_counts.empty()) thread_counts.push_back(0);  // the process's default
   std::printf(
-      "%-5s %9s %-6s %-6s %-3s %3s %6s %5s %8s %9s %9s %9s %9s %9s %9s %11s %11s %10s %10s\n",
-      "level", "dofs", "method", "smooth", "obs", "thr", "iters", "conv", "rate", "setup_s",
+      "%-5s %9s %-6s %-6s %-3s %-3s %3s %6s %5s %8s %9s %9s %9s %9s %9s %9s %11s %11s %10s "
+      "%10s\n",
+      "level", "dofs", "method", "smooth", "obs", "cyc", "thr", "iters", "conv", "rate", "setup_s",
       "solve_s", "total_s", "asm_MiB", "chain_MiB", "peak_MiB", "|F|", "p_max", "width", "J^1/2");
   nlohmann::json rows = nlohmann::json::array();
   bool all_ok = true;
   const auto methods = split(o.methods), smoothers = split(o.smoothers),
-             obstacles = split(o.coarse_obstacles);
+             obstacles = split(o.coarse_obstacles), cycles = split(o.cycles);
   if (auto bad = unknown_name(methods, find_method, "--methods", method_names()) +
                  unknown_name(smoothers, find_smoother, "--smoothers", smoother_names()) +
                  unknown_name(obstacles, find_coarse_obstacle, "--coarse-obstacles",
-                              coarse_obstacle_names());
+                              coarse_obstacle_names()) +
+                 unknown_name(cycles, find_cycle, "--cycles", cycle_names());
       !bad.empty()) {
     std::cerr << bad;
     return kExitBadInput;
   }
+  const auto settings = configurations(methods, smoothers, obstacles, cycles);
   for (int level = first; level <= last; ++level)
     for (const int threads : thread_counts)
-      for (const auto& method : methods)
-        for (const auto& smoother : smoothers)
-          for (const auto& obstacle : obstacles) {
-            // Options a method does not use give no new row.
-            const MethodInfo& info = *find_method(method);
-            const bool uses_smoother = uses_option(info, SolverOption::kSmoother);
-            const bool uses_obstacle = uses_option(info, SolverOption::kCoarseObstacle);
-            if ((!uses_smoother && smoother != smoothers[0]) ||
-                (!uses_obstacle && obstacle != obstacles[0]))
-              continue;
-            nlohmann::json c = base;
-            c["mesh"]["refinements"] = level - 1;
-            c["solver"]["method"] = method;
-            c["solver"]["smoother"] = smoother;
-            c["solver"]["coarse_obstacle"] = obstacle;
-            c["solver"]["tolerance"] = o.tolerance;
-            c["solver"]["max_iterations"] = o.max_iterations;
-            nlohmann::json row = run_isolated(c, threads);
-            row["level"] = level;
-            row["method"] = method;
-            row["smoother"] = uses_smoother ? smoother : "-";
-            row["coarse_obstacle"] = uses_obstacle ? obstacle : "-";
-            if (row.contains("error")) {
-              all_ok = false;
-              std::printf("%-5d %9s %-6s %-6s %-3s error: %s\n", level, "-", method.c_str(),
-                          row["smoother"].get<std::string>().c_str(),
-                          row["coarse_obstacle"].get<std::string>().c_str(),
-                          row["error"].get<std::string>().c_str());
-            } else {
-              const double force =
-                  std::hypot(row["force"][0].get<double>(), row["force"][1].get<double>());
-              std::printf(
-                  "%-5d %9lld %-6s %-6s %-3s %3d %6d %5s %8.4f %9.3f %9.3f %9.3f %9.1f %9.1f %9.1f "
-                  "%11.5g %11.5g %10.4g %10.3g\n",
-                  level, row["dofs"].get<long long>(), method.c_str(),
-                  row["smoother"].get<std::string>().c_str(),
-                  row["coarse_obstacle"].get<std::string>().c_str(), row["threads"].get<int>(),
-                  row["iterations"].get<int>(), row["converged"].get<bool>() ? "yes" : "no",
-                  row["rate"].get<double>(), row["setup_s"].get<double>(),
-                  row["solve_s"].get<double>(), row["total_s"].get<double>(),
-                  row["memory"]["assembly_mib"].get<double>(),
-                  row["memory"]["chain_mib"].get<double>(), row["peak_mib"].get<double>(), force,
-                  row["peak_pressure"].get<double>(), row["contact_width"].get<double>(),
-                  row["estimator"].get<double>());
-            }
-            std::fflush(stdout);
-            rows.push_back(row);
-          }
+      for (const Configuration& setting : settings) {
+        nlohmann::json c = base;
+        c["mesh"]["refinements"] = level - 1;
+        c["solver"]["method"] = setting.method;
+        if (setting.smoother != "-") c["solver"]["smoother"] = setting.smoother;
+        if (setting.obstacle != "-") c["solver"]["coarse_obstacle"] = setting.obstacle;
+        if (setting.cycle != "-") c["solver"]["cycle"] = setting.cycle;
+        c["solver"]["tolerance"] = o.tolerance;
+        c["solver"]["max_iterations"] = o.max_iterations;
+        nlohmann::json row = run_isolated(c, threads);
+        row["level"] = level;
+        row["method"] = setting.method;
+        row["smoother"] = setting.smoother;
+        row["coarse_obstacle"] = setting.obstacle;
+        row["cycle"] = setting.cycle;
+        if (row.contains("error")) {
+          all_ok = false;
+          std::printf("%-5d %9s %s error: %s\n", level, "-", settings_columns(row).c_str(),
+                      row["error"].get<std::string>().c_str());
+        } else {
+          const double force =
+              std::hypot(row["force"][0].get<double>(), row["force"][1].get<double>());
+          std::printf(
+              "%-5d %9lld %s %3d %6d %5s %8.4f %9.3f %9.3f %9.3f %9.1f %9.1f %9.1f %11.5g %11.5g "
+              "%10.4g %10.3g\n",
+              level, row["dofs"].get<long long>(), settings_columns(row).c_str(),
+              row["threads"].get<int>(), row["iterations"].get<int>(),
+              row["converged"].get<bool>() ? "yes" : "no", row["rate"].get<double>(),
+              row["setup_s"].get<double>(), row["solve_s"].get<double>(),
+              row["total_s"].get<double>(), row["memory"]["assembly_mib"].get<double>(),
+              row["memory"]["chain_mib"].get<double>(), row["peak_mib"].get<double>(), force,
+              row["peak_pressure"].get<double>(), row["contact_width"].get<double>(),
+              row["estimator"].get<double>());
+        }
+        std::fflush(stdout);
+        rows.push_back(row);
+      }
   print_against_pdas(rows);
   if (!o.json_path.empty()) std::ofstream(o.json_path) << rows.dump(2) << '\n';
   return all_ok ? kExitOk : kExitInternal;
@@ -284,6 +315,7 @@ void add_bench_command(CLI::App& app, int& exit_code) {
                   "Comma-separated: " + join_words(smoother_names(), ", "));
   cmd->add_option("--coarse-obstacles", o->coarse_obstacles,
                   "Comma-separated: " + join_words(coarse_obstacle_names(), ", "));
+  cmd->add_option("--cycles", o->cycles, "Comma-separated: " + join_words(cycle_names(), ", "));
   cmd->add_option("--tolerance", o->tolerance, "Relative KKT tolerance");
   cmd->add_option("--max-iterations", o->max_iterations, "Iteration cap per run");
   cmd->add_option("--json", o->json_path, "Also write the rows as JSON to this file");

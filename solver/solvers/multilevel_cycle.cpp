@@ -423,8 +423,8 @@ void MultilevelCycle::project_obstacle(int j, const Vector& c, const Vector& hi,
   project_defect(hierarchy_.levels[j], options_.projection, defect, coarse_hi, &sn_weights_[j]);
 }
 
-void MultilevelCycle::recurse(int j, Vector& c, Vector& r, const Vector& lo, const Vector& hi,
-                              bool constrained) {
+void MultilevelCycle::recurse(int j, CycleShape shape, Vector& c, Vector& r, const Vector& lo,
+                              const Vector& hi, bool constrained) {
   const int top = hierarchy_.num_levels() - 1;
   const SparseMatrix& A = matrix(j);
   if (j == 0) {
@@ -463,10 +463,12 @@ void MultilevelCycle::recurse(int j, Vector& c, Vector& r, const Vector& lo, con
   Vector lo_c = Vector::Constant(nc, -kNoBound), hi_c = Vector::Constant(nc, kNoBound);
   if (constrained) project_obstacle(j, c, hi, hi_c);
   Vector cc = Vector::Zero(nc);
-  // γ = 1: V-cycle, γ = 2: W-cycle (the coarse problem is visited twice; its bounds are on the
-  // total coarse correction, so the second visit continues from the first).
-  const int visits = revisit_[j] ? options_.cycle_index : 1;
-  for (int g = 0; g < visits; ++g) recurse(j - 1, cc, rc, lo_c, hi_c, constrained);
+  // W and F visit the coarse problem twice; its bounds are on the total coarse correction, so
+  // the second visit continues from the first (each visit is monotone, hence both are).
+  recurse(j - 1, shape, cc, rc, lo_c, hi_c, constrained);
+  if (revisit_[j] && shape != CycleShape::kV)
+    recurse(j - 1, shape == CycleShape::kF ? CycleShape::kV : shape, cc, rc, lo_c, hi_c,
+            constrained);
   Vector v = P * cc;
   double alpha = 1.0;
   if (constrained) {
@@ -499,7 +501,7 @@ void MultilevelCycle::recurse(int j, Vector& c, Vector& r, const Vector& lo, con
 }
 
 void MultilevelCycle::nonlinear_cycle(Vector& x, Vector& r) {
-  recurse(hierarchy_.num_levels() - 1, x, r, qp_.lower, qp_.upper, true);
+  recurse(hierarchy_.num_levels() - 1, options_.cycle, x, r, qp_.lower, qp_.upper, true);
 }
 
 void MultilevelCycle::linear_cycle(const std::vector<char>& frozen, Vector& c, Vector& r) {
@@ -510,7 +512,7 @@ void MultilevelCycle::linear_cycle(const std::vector<char>& frozen, Vector& c, V
     if (frozen[i]) lo[i] = hi[i] = 0.0;
   auto hook = std::move(sweep_hook_);
   sweep_hook_ = nullptr;
-  recurse(hierarchy_.num_levels() - 1, c, r, lo, hi, false);
+  recurse(hierarchy_.num_levels() - 1, options_.cycle, c, r, lo, hi, false);
   sweep_hook_ = std::move(hook);
 }
 

@@ -1,7 +1,7 @@
 #pragma once
-// The monotone multilevel cycle of docs/method.md §4 (a W-cycle by default, a V-cycle with
-// cycle_index = 1): smoothing, truncated coarse basis, coarse obstacles by non-linear
-// projection, exact coarsest solve, prolongation.
+// The monotone multilevel cycle of docs/method.md §4 (a W-cycle by default; V and F on
+// request): smoothing, truncated coarse basis, coarse obstacles by non-linear projection, exact
+// coarsest solve, prolongation.
 //
 // Convention: a cycle works on an iterate and its residual in place. On the finest level the
 // iterate is x itself (bounds = the problem's bounds); on coarser levels it is the correction
@@ -23,16 +23,19 @@ enum class SmootherType { kPatch, kPoint };
 /// (docs/method.md §4.3): (a) least restrictive, (b) min of end and midpoint, (c) min over the
 /// edge.
 enum class CoarseProjection { kA, kB, kC };
+/// How often a level visits the next coarser one: V once; W twice (a W-cycle each time); F
+/// an F-cycle then a V-cycle, so that level j−k is visited k+1 times instead of W's 2^k.
+enum class CycleShape { kV, kW, kF };
 
 struct MultilevelOptions {
   SmootherType smoother = SmootherType::kPatch;
   int pre_smoothing = 1;
   int post_smoothing = 1;
   CoarseProjection projection = CoarseProjection::kA;
-  /// 1 = V-cycle, 2 = W-cycle. W is the default: with the vertex-patch smoother the V-cycle
-  /// rate grows with the number of levels (measured, see the README), the W-cycle's does not,
-  /// and in 2D it costs at most twice the fine-level work of a V-cycle.
-  int cycle_index = 2;
+  /// W is the default: with the vertex-patch smoother the V-cycle rate grows with the number
+  /// of levels (measured, docs/performance.md), the W-cycle's does not, and in 2D it costs at
+  /// most twice the fine-level work of a V-cycle.
+  CycleShape cycle = CycleShape::kW;
   /// After every sweep, solve exactly on the strip of triangles along the contact boundary
   /// (StripSmoother).
   bool strip = true;
@@ -77,11 +80,11 @@ class MultilevelCycle {
                   std::shared_ptr<const GalerkinChain> chain = nullptr);
   ~MultilevelCycle();
 
-  /// One monotone cycle (V or W by `cycle_index`): J(x) does not increase and x stays within
+  /// One monotone cycle (of `options.cycle`'s shape): J(x) does not increase and x stays within
   /// [lower, upper]. The truncated set is the fine active set after pre-smoothing.
   void nonlinear_cycle(Vector& x, Vector& r);
 
-  /// One linear cycle (V or W by `cycle_index`) for the correction c (started at 0) on the DOFs
+  /// One linear cycle (of `options.cycle`'s shape) for the correction c (started at 0) on the DOFs
   /// that are not `frozen`; coarse basis functions are truncated at the frozen DOFs (TNNMG).
   void linear_cycle(const std::vector<char>& frozen, Vector& c, Vector& r);
 
@@ -100,7 +103,8 @@ class MultilevelCycle {
   /// P̃_j from level j's truncated set and matrix; sets level j−1's truncated set.
   void truncate_level(int j);
   void rebuild_coarse_levels();
-  void recurse(int j, Vector& c, Vector& r, const Vector& lo, const Vector& hi, bool constrained);
+  void recurse(int j, CycleShape shape, Vector& c, Vector& r, const Vector& lo, const Vector& hi,
+               bool constrained);
   void smooth_level(int j, Vector& c, Vector& r, const Vector& lo, const Vector& hi, bool forward);
   void project_obstacle(int j, const Vector& c, const Vector& hi, Vector& coarse_hi) const;
   const SparseMatrix& matrix(int j) const;
@@ -111,7 +115,8 @@ class MultilevelCycle {
   const LevelHierarchy& hierarchy_;
   MultilevelOptions options_;
   std::vector<std::unique_ptr<LevelState>> levels_;
-  /// revisit_[j]: level j visits level j−1 cycle_index times (else once); see the constructor.
+  /// revisit_[j]: level j visits level j−1 as the cycle's shape says (else once, with the same
+  /// shape); see the constructor.
   std::vector<char> revisit_;
   std::vector<char> truncated_;  ///< the fine truncated set the levels below were built for
   bool built_ = false;

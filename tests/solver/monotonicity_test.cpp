@@ -1,7 +1,8 @@
 // Invariants of the monotone multilevel method: J never increases
 // — after every fine-level smoother sweep, every coarse correction and every iteration — and
-// every iterate satisfies the bounds exactly, for the three coarse-obstacle projections, on
-// uniform hierarchies and on hierarchies adapted by newest-vertex bisection.
+// every iterate satisfies the bounds exactly, for the three coarse-obstacle projections and the
+// W, V and F cycles, on uniform hierarchies and on hierarchies adapted by newest-vertex
+// bisection.
 #include <gtest/gtest.h>
 
 #include <limits>
@@ -21,6 +22,7 @@ struct Case {
   double lambda;
   CoarseProjection projection;
   int adaptive_steps = 0;  ///< bisection levels on top of the uniform ones
+  CycleShape cycle = CycleShape::kW;
 };
 
 Discretization discretization(const Case& c) {
@@ -44,6 +46,7 @@ TEST_P(Monotonicity, EnergyNeverIncreasesAndIteratesStayFeasible) {
   const BoxQp& qp = disc.problem().qp;
   MultilevelOptions options;
   options.projection = c.projection;
+  options.cycle = c.cycle;
   MultilevelCycle cycle(qp, h, options);
   Vector x = Vector::Zero(qp.size());
   for (int i = 0; i < qp.size(); ++i) x[i] = std::clamp(x[i], qp.lower[i], qp.upper[i]);
@@ -80,19 +83,24 @@ TEST_P(Monotonicity, EnergyNeverIncreasesAndIteratesStayFeasible) {
 
 INSTANTIATE_TEST_SUITE_P(
     Benchmarks, Monotonicity,
-    ::testing::Values(Case{"square_lambda1_a", false, 1.0, CoarseProjection::kA},
-                      Case{"square_lambdainf_a", false, kInf, CoarseProjection::kA},
-                      Case{"hertz_lambda1_a", true, 1.0, CoarseProjection::kA},
-                      Case{"hertz_lambdainf_a", true, kInf, CoarseProjection::kA},
-                      Case{"hertz_lambda1_b", true, 1.0, CoarseProjection::kB},
-                      Case{"hertz_lambda1_c", true, 1.0, CoarseProjection::kC},
-                      Case{"square_lambda1_b", false, 1.0, CoarseProjection::kB},
-                      Case{"square_lambda1_c", false, 1.0, CoarseProjection::kC},
-                      Case{"adapted_square_lambda1_a", false, 1.0, CoarseProjection::kA, 5},
-                      Case{"adapted_square_lambdainf_a", false, kInf, CoarseProjection::kA, 5},
-                      Case{"adapted_hertz_lambda1_a", true, 1.0, CoarseProjection::kA, 5},
-                      Case{"adapted_hertz_lambdainf_a", true, kInf, CoarseProjection::kA, 5},
-                      Case{"adapted_hertz_lambda1_c", true, 1.0, CoarseProjection::kC, 5}),
+    ::testing::Values(
+        Case{"square_lambda1_a", false, 1.0, CoarseProjection::kA},
+        Case{"square_lambdainf_a", false, kInf, CoarseProjection::kA},
+        Case{"hertz_lambda1_a", true, 1.0, CoarseProjection::kA},
+        Case{"hertz_lambdainf_a", true, kInf, CoarseProjection::kA},
+        Case{"hertz_lambda1_b", true, 1.0, CoarseProjection::kB},
+        Case{"hertz_lambda1_c", true, 1.0, CoarseProjection::kC},
+        Case{"square_lambda1_b", false, 1.0, CoarseProjection::kB},
+        Case{"square_lambda1_c", false, 1.0, CoarseProjection::kC},
+        Case{"adapted_square_lambda1_a", false, 1.0, CoarseProjection::kA, 5},
+        Case{"adapted_square_lambdainf_a", false, kInf, CoarseProjection::kA, 5},
+        Case{"adapted_hertz_lambda1_a", true, 1.0, CoarseProjection::kA, 5},
+        Case{"adapted_hertz_lambdainf_a", true, kInf, CoarseProjection::kA, 5},
+        Case{"adapted_hertz_lambda1_c", true, 1.0, CoarseProjection::kC, 5},
+        Case{"square_lambda1_a_V", false, 1.0, CoarseProjection::kA, 0, CycleShape::kV},
+        Case{"square_lambda1_a_F", false, 1.0, CoarseProjection::kA, 0, CycleShape::kF},
+        Case{"hertz_lambdainf_a_F", true, kInf, CoarseProjection::kA, 0, CycleShape::kF},
+        Case{"adapted_hertz_lambda1_a_F", true, 1.0, CoarseProjection::kA, 5, CycleShape::kF}),
     [](const auto& info) { return std::string(info.param.name); });
 
 }  // namespace

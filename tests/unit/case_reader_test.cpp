@@ -152,9 +152,9 @@ TEST(ReadCase, EveryFieldIsRead) {
   json j = valid_case();
   j["body_force"] = {"sin(x)", 2};
   j["weights"] = {{"c1", 2}, {"c2", 3}, {"c3", 0}, {"c4", 0.25}};
-  j["solver"] = {{"method", "pgs"},       {"tolerance", 1e-6},  {"max_iterations", 77},
-                 {"smoother", "point"},   {"pre_smoothing", 0}, {"post_smoothing", 0},
-                 {"coarse_obstacle", "c"}};
+  j["solver"] = {{"method", "pgs"},        {"tolerance", 1e-6},  {"max_iterations", 77},
+                 {"smoother", "point"},    {"pre_smoothing", 0}, {"post_smoothing", 0},
+                 {"coarse_obstacle", "c"}, {"cycle", "F"}};
   j["mesh"]["builtin"] = {{"name", "square"}, {"x0", -1}, {"width", 2}};
   j["boundary"]["left"] = {{"type", "neumann"}, {"traction", {0.5, "y"}}};
   j["boundary"]["right"] = {
@@ -173,6 +173,7 @@ TEST(ReadCase, EveryFieldIsRead) {
   EXPECT_EQ(s.solver.tolerance, 1e-6);
   EXPECT_EQ(s.solver.max_iterations, 77);
   EXPECT_EQ(s.solver.multilevel.smoother, SmootherType::kPoint);
+  EXPECT_EQ(s.solver.multilevel.cycle, CycleShape::kF);
   EXPECT_EQ(s.solver.multilevel.pre_smoothing, 0);
   EXPECT_EQ(s.solver.multilevel.projection, CoarseProjection::kC);
   EXPECT_EQ(s.mesh.params.at("x0"), -1.0);
@@ -609,6 +610,13 @@ TEST(ReadCase, SemanticRulesUseOnlyValidFields) {
   const auto r = read_case(j);
   EXPECT_TRUE(has_error(r, "/solver/coarse_obstacle", "a, b, c")) << dump_errors(r.errors);
   EXPECT_TRUE(has_error(r, "/solver/pre_smoothing", "mmg"));
+}
+
+TEST(ReadCase, UnknownCycleNamesTheChoices) {
+  json j = valid_case();
+  j["solver"] = {{"cycle", "w"}};
+  const auto r = read_case(j);
+  EXPECT_TRUE(has_error(r, "/solver/cycle", "W, V, F")) << dump_errors(r.errors);
 }
 
 TEST(ReadCase, RootMustBeAnObject) {
