@@ -70,13 +70,13 @@ constexpr double kRevisitFactor = 2;
 }  // namespace
 
 MultilevelCycle::MultilevelCycle(const BoxQp& qp, const LevelHierarchy& hierarchy,
-                                 MultilevelOptions options,
-                                 std::shared_ptr<const GalerkinChain> chain)
+                                 MultilevelOptions options, std::shared_ptr<GalerkinChain> chain)
     : qp_(qp), hierarchy_(hierarchy), options_(options), chain_(std::move(chain)) {
   FOSLS_ASSERT(hierarchy_inconsistency(hierarchy, qp.size()).empty(),
                hierarchy_inconsistency(hierarchy, qp.size()));
   const int nl = hierarchy.num_levels();
-  if (!chain_) chain_ = std::make_shared<const GalerkinChain>(galerkin_chain(qp.A, hierarchy));
+  if (!chain_) chain_ = std::make_shared<GalerkinChain>(galerkin_chain(qp.A, hierarchy));
+  if (nl >= 2) top_edits_ = std::make_unique<ReversibleEdits>(chain_->matrices[nl - 2]);
   for (int j = 0; j < nl; ++j) levels_.push_back(std::make_unique<LevelState>());
   // A W-cycle's second visit of the coarser levels is affordable only where the unknowns have
   // fallen by a large enough factor since the last level that made one. A factor 2 keeps every
@@ -96,7 +96,9 @@ MultilevelCycle::MultilevelCycle(const BoxQp& qp, const LevelHierarchy& hierarch
   set_truncation(std::vector<char>(qp.size(), 0));
 }
 
-MultilevelCycle::~MultilevelCycle() = default;
+MultilevelCycle::~MultilevelCycle() {
+  if (top_edits_) top_edits_->restore();
+}
 
 const SparseMatrix& MultilevelCycle::matrix(int j) const {
   return j == hierarchy_.num_levels() - 1 ? qp_.A : *levels_[j]->A;
@@ -182,7 +184,7 @@ void MultilevelCycle::truncate_level(int j) {
   if (j > 1) level_truncated_[j - 1] = std::move(coarse);
 }
 
-void MultilevelCycle::truncated_galerkin(SparseMatrix& out) {
+void MultilevelCycle::truncation_correction(SparseMatrix& out) {
   // P̃ = P + F where F, the difference made by truncation, has few rows (the contact
   // boundary and the fine edges that carry moved flux), so
   //   P̃ᵀAP̃ = PᵀAP + FᵀAP + (FᵀAP)ᵀ + FᵀAF,
@@ -190,7 +192,6 @@ void MultilevelCycle::truncated_galerkin(SparseMatrix& out) {
   // active set. F is −P on the truncated rows plus the flux moves; only its rows, and the rows
   // of P that A couples to them, are formed (not F or a row-major P of the fine size).
   const int top = hierarchy_.num_levels() - 1;
-  const SparseMatrix& full = chain_->matrices[top - 1];
   const SparseMatrix& p = hierarchy_.levels[top].prolongation;
   const std::vector<char>& truncated = level_truncated_[top];
   const int n = static_cast<int>(p.rows()), nc = static_cast<int>(p.cols());
@@ -207,7 +208,8 @@ void MultilevelCycle::truncated_galerkin(SparseMatrix& out) {
       add_f(static_cast<int>(it.row()), col, it.value());
   }
   if (tf.empty()) {
-    out = full;
+    out = SparseMatrix(nc, nc);
+    out.makeCompressed();
     return;
   }
   const int m = static_cast<int>(rows.size());
@@ -239,13 +241,8 @@ void MultilevelCycle::truncated_galerkin(SparseMatrix& out) {
   const SparseMatrix rft = rf.transpose();
   const SparseMatrix cross = rft * rap;  // FᵀAP
   const SparseMatrix inner = rft * (aff * rf);
-  SparseMatrix correction = cross + SparseMatrix(cross.transpose()) + inner;
-  correction.makeCompressed();
-  // Into `out` by swapping: Eigen 3.4's sparse matrices have no move, and a returned local
-  // beside another return path is copied.
-  SparseMatrix a = sparse_sum(full, correction);
-  a.prune(0.0);
-  out.swap(a);
+  out = cross + SparseMatrix(cross.transpose()) + inner;
+  out.makeCompressed();
 }
 
 namespace {
@@ -253,7 +250,10 @@ constexpr double kCoarseShift = 1e-10;
 constexpr double kRetryCoarseShift = 1e-8;
 
 /// Makes a truncated coarse matrix definite, in place (no second copy of it is formed).
-void regularise_truncated(SparseMatrix& a, const SparseMatrix& truncated_prolongation) {
+/// With `edits`, every change is saved there, and a missing diagonal entry makes it return
+/// false with nothing changed; without, such an entry is inserted.
+bool regularise_truncated(SparseMatrix& a, const SparseMatrix& truncated_prolongation,
+                          ReversibleEdits* edits) {
   // A coarse DOF whose basis function was truncated away entirely (its column of the
   // truncated prolongation is empty: under bisection, a U_n or S_n whose fine neighbourhood
   // was not refined) has a zero row and column — up to the rounding of truncated_galerkin's
@@ -270,27 +270,56 @@ void regularise_truncated(SparseMatrix& a, const SparseMatrix& truncated_prolong
   // increases J. The untruncated chain is checked for definiteness (chain_is_definite), so
   // this hides no indefinite weights.
   std::vector<char> has_diagonal(a.rows(), 0);
+  for (int col = 0; col < a.outerSize(); ++col)
+    for (SparseMatrix::InnerIterator it(a, col); it; ++it)
+      if (it.row() == col) has_diagonal[col] = 1;
+  const bool complete =
+      std::find(has_diagonal.begin(), has_diagonal.end(), 0) == has_diagonal.end();
+  if (edits && !complete) return false;
   for (int col = 0; col < a.outerSize(); ++col) {
     for (SparseMatrix::InnerIterator it(a, col); it; ++it) {
       const int row = static_cast<int>(it.row());
-      if (row == col) has_diagonal[col] = 1;
-      if (vanished[row] || vanished[col]) it.valueRef() = 0.0;
+      const bool clear = vanished[row] || vanished[col];
+      if (!clear && row != col) continue;
+      if (edits) edits->save(&it.valueRef());
+      if (clear) it.valueRef() = 0.0;
       if (row == col)
         it.valueRef() = it.value() == 0.0 ? 1.0 : it.value() + kCoarseShift * it.value();
     }
   }
+  if (complete) return true;
   // A vanished function's diagonal may be missing from the pattern: the rare insertion.
   std::vector<Eigen::Triplet<double>> unit;
   for (int i = 0; i < a.rows(); ++i)
     if (!has_diagonal[i]) unit.emplace_back(i, i, 1.0);
-  if (!unit.empty()) {
-    SparseMatrix e(a.rows(), a.cols());
-    e.setFromTriplets(unit.begin(), unit.end());
-    SparseMatrix sum = sparse_sum(a, e);
-    a.swap(sum);
-  }
+  SparseMatrix e(a.rows(), a.cols());
+  e.setFromTriplets(unit.begin(), unit.end());
+  SparseMatrix sum = sparse_sum(a, e);
+  a.swap(sum);
+  return true;
 }
 }  // namespace
+
+void MultilevelCycle::truncate_second_finest() {
+  const int top = hierarchy_.num_levels() - 1;
+  LevelState& level = *levels_[top - 1];
+  SparseMatrix& full = chain_->matrices[top - 1];
+  SparseMatrix correction;
+  truncation_correction(correction);
+  if (top_edits_->add_within_pattern(correction) &&
+      regularise_truncated(full, prolongation(top), top_edits_.get())) {
+    level.A = &full;
+    return;
+  }
+  // The correction reaches outside the pattern (not seen on the benchmarks): a matrix of its
+  // own.
+  top_edits_->restore();
+  SparseMatrix sum = sparse_sum(full, correction);
+  level.truncated.swap(sum);
+  level.truncated.prune(0.0);
+  level.A = &level.truncated;
+  regularise_truncated(level.truncated, prolongation(top), nullptr);
+}
 
 void MultilevelCycle::rebuild_coarse_levels() {
   const auto t0 = std::chrono::steady_clock::now();
@@ -311,24 +340,22 @@ void MultilevelCycle::rebuild_coarse_levels() {
   // The finest matrix never changes: its smoother is built once.
   if (!built_) make_smoother(top);
   const bool truncating = std::find(truncated_.begin(), truncated_.end(), 1) != truncated_.end();
+  if (top_edits_) top_edits_->restore();
   for (int j = top - 1; j >= 0; --j) {
     LevelState& level = *levels_[j];
+    // The old matrix is released before the new one is formed: two of them at once were the
+    // peak of a solve.
+    SparseMatrix().swap(level.truncated);
     if (!truncating) {
       level.A = &chain_->matrices[j];
-      SparseMatrix().swap(level.truncated);
+    } else if (j == top - 1) {
+      truncate_second_finest();
     } else {
-      // The old matrix is released before the new one is formed: two of them at once were
-      // the peak of a solve.
-      SparseMatrix().swap(level.truncated);
-      if (j == top - 1) {
-        truncated_galerkin(level.truncated);
-      } else {
-        SparseMatrix coarse = galerkin_product(matrix(j + 1), prolongation(j + 1));
-        level.truncated.swap(coarse);
-      }
+      SparseMatrix coarse = galerkin_product(matrix(j + 1), prolongation(j + 1));
+      level.truncated.swap(coarse);
       level.truncated.makeCompressed();
       level.A = &level.truncated;
-      regularise_truncated(level.truncated, prolongation(j + 1));
+      regularise_truncated(level.truncated, prolongation(j + 1), nullptr);
     }
     if (j > 0) {
       // The truncated prolongation into level j needs level j's (truncated) matrix.
@@ -343,9 +370,14 @@ void MultilevelCycle::rebuild_coarse_levels() {
         // that level, only when needed, keeps its correction minimising a majorant of J, so
         // the cycle stays monotone; raising kCoarseShift for every level slowed the robustness
         // cases (146 iterations on one).
-        SparseMatrix& a = level.truncated;
-        const Vector d = a.diagonal();
-        for (int i = 0; i < a.rows(); ++i) a.coeffRef(i, i) += kRetryCoarseShift * d[i];
+        SparseMatrix& a = const_cast<SparseMatrix&>(*level.A);  // the level's own or edited
+        const bool in_chain = level.A == &chain_->matrices[j];
+        for (int col = 0; col < a.outerSize(); ++col)
+          for (SparseMatrix::InnerIterator it(a, col); it; ++it)
+            if (it.row() == col) {
+              if (in_chain) top_edits_->save(&it.valueRef());
+              it.valueRef() += kRetryCoarseShift * it.value();
+            }
         make_smoother(j);
       }
     }

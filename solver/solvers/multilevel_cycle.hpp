@@ -14,6 +14,7 @@
 #include "core/box_qp.hpp"
 #include "core/level_hierarchy.hpp"
 #include "solvers/exact_box_qp.hpp"
+#include "solvers/reversible_edits.hpp"
 #include "solvers/smoothers.hpp"
 
 namespace fosls {
@@ -75,9 +76,12 @@ void project_defect(const Level& fine_level, CoarseProjection projection, const 
 
 class MultilevelCycle {
  public:
-  /// `chain` (the Galerkin matrices of these levels) is computed here when not given.
+  /// `chain` (the Galerkin matrices of these levels) is computed here when not given. The
+  /// cycle edits the chain's second-finest matrix in place while truncating and restores it
+  /// exactly whenever the truncation changes and when it is destroyed: no one else may use that
+  /// matrix while the cycle lives.
   MultilevelCycle(const BoxQp& qp, const LevelHierarchy& hierarchy, MultilevelOptions options,
-                  std::shared_ptr<const GalerkinChain> chain = nullptr);
+                  std::shared_ptr<GalerkinChain> chain = nullptr);
   ~MultilevelCycle();
 
   /// One monotone cycle (of `options.cycle`'s shape): J(x) does not increase and x stays within
@@ -108,7 +112,11 @@ class MultilevelCycle {
   void smooth_level(int j, Vector& c, Vector& r, const Vector& lo, const Vector& hi, bool forward);
   void project_obstacle(int j, const Vector& c, const Vector& hi, Vector& coarse_hi) const;
   const SparseMatrix& matrix(int j) const;
-  void truncated_galerkin(SparseMatrix& out);
+  /// P̃ᵀAP̃ − PᵀAP on the second-finest level (small: the contact boundary's couplings).
+  void truncation_correction(SparseMatrix& out);
+  /// Forms the truncated matrix of the second-finest level, in the chain's storage when the
+  /// correction stays within its pattern, else in its own.
+  void truncate_second_finest();
   const SparseMatrix& prolongation(int j) const;
 
   const BoxQp& qp_;
@@ -128,7 +136,9 @@ class MultilevelCycle {
   /// The flux moves of the finest truncated prolongation (P̃ − P off the truncated rows).
   SparseMatrix top_moves_;
   std::unique_ptr<SparseBoxQpSolver> coarse_solver_;
-  std::shared_ptr<const GalerkinChain> chain_;
+  std::shared_ptr<GalerkinChain> chain_;
+  /// Edits of the chain's second-finest matrix made by the truncation (restored on change).
+  std::unique_ptr<ReversibleEdits> top_edits_;
   /// Per level: the weights of the fine S_n of each link in the truncated prolongation.
   std::vector<std::vector<std::array<double, 2>>> sn_weights_;
   std::function<void(const Vector&, const Vector&)> sweep_hook_;

@@ -61,7 +61,7 @@ class Step {
 class MmgStep : public Step {
  public:
   MmgStep(const BoxQp& qp, const LevelHierarchy& h, const MultilevelOptions& o,
-          std::shared_ptr<const GalerkinChain> chain)
+          std::shared_ptr<GalerkinChain> chain)
       : cycle_(qp, h, o, std::move(chain)) {}
   void iterate(Vector& x, Vector& r) override { cycle_.nonlinear_cycle(x, r); }
   CycleStatistics statistics() const override { return cycle_.statistics(); }
@@ -98,7 +98,7 @@ class PgsStep : public Step {
 class TnnmgStep : public Step {
  public:
   TnnmgStep(const BoxQp& qp, const LevelHierarchy& h, const MultilevelOptions& o,
-            std::shared_ptr<const GalerkinChain> chain)
+            std::shared_ptr<GalerkinChain> chain)
       : qp_(qp), options_(o), cycle_(qp, h, o, std::move(chain)) {}
   void iterate(Vector& x, Vector& r) override {
     for (int s = 0; s < std::max(1, options_.pre_smoothing); ++s) cycle_.smooth(x, r, true);
