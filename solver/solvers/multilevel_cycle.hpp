@@ -100,6 +100,8 @@ class MultilevelCycle {
   /// P̃_j from level j's truncated set and matrix; sets level j−1's truncated set.
   void truncate_level(int j);
   void rebuild_coarse_levels();
+  /// Level j's smoothers for its current matrix.
+  void make_smoother(int j);
   void recurse(int j, Vector& c, Vector& r, const Vector& lo, const Vector& hi, bool constrained);
   void smooth_level(int j, Vector& c, Vector& r, const Vector& lo, const Vector& hi, bool forward);
   void project_obstacle(int j, const Vector& c, const Vector& hi, Vector& coarse_hi) const;
