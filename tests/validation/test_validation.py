@@ -4,7 +4,8 @@ recomputed and compared with the recorded numbers within tolerances that a loss 
 would exceed. Standard library only.
 
     python3 tests/validation/test_validation.py --bin build/bin/fosls-contact \
-        --estimator build/bin/validation_manufactured_errors [TestClass ...]
+        --estimator build/bin/validation_manufactured_errors \
+        --corner build/bin/validation_corner_errors [TestClass ...]
 
 ctest runs one class per test (tests/validation/tests.cmake, label `validation`).
 """
