@@ -6,11 +6,13 @@
 
 namespace fosls {
 
-/// The free DOFs of a solution on the second-finest level of `disc`, carried to the finest
-/// level by the level transfer (fem/transfer.hpp: P1 interpolation for u, the RT0 embedding
-/// for σ, rotated contact coordinates). Bounds are not imposed here: the solve loop projects
-/// its initial iterate onto them (a midpoint's interpolated U_n can exceed a curved gap).
-/// Throws std::invalid_argument when `disc` has one level or x_coarse has the wrong size.
-Vector prolongate_to_finest(const Discretization& disc, const Vector& x_coarse);
+/// The free DOFs of the finest level of `disc` for the solution whose full DOF vector (fixed
+/// values included; rotated contact coordinates, scaled stresses: FoslsAssembler::full_vector)
+/// on the second-finest level is `full_coarse`, carried by the level transfer
+/// (fem/transfer.hpp: P1 interpolation for u, the RT0 embedding for σ). Bounds are not imposed
+/// here: the solve loop projects its initial iterate onto them (a midpoint's interpolated U_n
+/// can exceed a curved gap). Throws std::invalid_argument when `disc` has one level or
+/// full_coarse has the wrong size.
+Vector prolongate_to_finest(const Discretization& disc, const Vector& full_coarse);
 
 }  // namespace fosls

@@ -86,7 +86,7 @@ CaseSolution solve_case_levels(MeshHierarchy meshes, const ProblemData& data, co
     const Discretization& disc = *solution.disc;
     const bool started = step == 0 && start && start->size() == disc.problem().qp.size();
     if (started) solution.x = *start;
-    if (step > 0) solution.x = prolongate_to_finest(disc, solution.x);
+    if (step > 0) solution.x = prolongate_to_finest(disc, solution.full);
     if (observer.on_step) observer.on_step(step, disc.problem().qp.size());
     solve_finest(solution, spec, step > 0 || started, observer);
 

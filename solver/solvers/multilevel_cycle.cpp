@@ -93,7 +93,13 @@ MultilevelCycle::MultilevelCycle(const BoxQp& qp, const LevelHierarchy& hierarch
     const long long coarse = hierarchy.levels[j - 1].num_dofs;
     if (kRevisitFactor * coarse < reference) revisit_[j] = 1, reference = coarse;
   }
-  set_truncation(std::vector<char>(qp.size(), 0));
+  // The finest matrix never changes: its smoother is built once, here. The coarse levels are
+  // built by the first set_truncation, for the first cycle's truncated set: building them
+  // untruncated here as well was one full rebuild per solve that a constrained problem threw
+  // away at once (docs/performance.md, adaptivity). A single level has no coarse levels to wait
+  // for, only its exact solver.
+  make_smoother(nl - 1);
+  if (nl == 1) set_truncation(std::vector<char>(qp.size(), 0));
 }
 
 MultilevelCycle::~MultilevelCycle() {
@@ -321,24 +327,23 @@ void MultilevelCycle::truncate_second_finest() {
   regularise_truncated(level.truncated, prolongation(top), nullptr);
 }
 
+void MultilevelCycle::make_smoother(int j) {
+  LevelState& s = *levels_[j];
+  s.patch.reset();
+  s.point.reset();
+  if (options_.smoother == SmootherType::kPatch)
+    s.patch = std::make_unique<PatchSmoother>(matrix(j), hierarchy_.levels[j].patches,
+                                              hierarchy_.levels[j].patch_split);
+  else
+    s.point = std::make_unique<PointSmoother>(matrix(j));
+  s.strip.reset();
+  if (options_.strip && !hierarchy_.levels[j].contact_strip.empty())
+    s.strip = std::make_unique<StripSmoother>(matrix(j), hierarchy_.levels[j].contact_strip);
+}
+
 void MultilevelCycle::rebuild_coarse_levels() {
   const auto t0 = std::chrono::steady_clock::now();
   const int top = hierarchy_.num_levels() - 1;
-  auto make_smoother = [this](int j) {
-    LevelState& s = *levels_[j];
-    s.patch.reset();
-    s.point.reset();
-    if (options_.smoother == SmootherType::kPatch)
-      s.patch = std::make_unique<PatchSmoother>(matrix(j), hierarchy_.levels[j].patches,
-                                                hierarchy_.levels[j].patch_split);
-    else
-      s.point = std::make_unique<PointSmoother>(matrix(j));
-    s.strip.reset();
-    if (options_.strip && !hierarchy_.levels[j].contact_strip.empty())
-      s.strip = std::make_unique<StripSmoother>(matrix(j), hierarchy_.levels[j].contact_strip);
-  };
-  // The finest matrix never changes: its smoother is built once.
-  if (!built_) make_smoother(top);
   const bool truncating = std::find(truncated_.begin(), truncated_.end(), 1) != truncated_.end();
   if (top_edits_) top_edits_->restore();
   for (int j = top - 1; j >= 0; --j) {

@@ -109,6 +109,8 @@ class MultilevelCycle {
   void rebuild_coarse_levels();
   void recurse(int j, CycleShape shape, Vector& c, Vector& r, const Vector& lo, const Vector& hi,
                bool constrained);
+  /// Level j's smoothers for its current matrix.
+  void make_smoother(int j);
   void smooth_level(int j, Vector& c, Vector& r, const Vector& lo, const Vector& hi, bool forward);
   void project_obstacle(int j, const Vector& c, const Vector& hi, Vector& coarse_hi) const;
   const SparseMatrix& matrix(int j) const;
