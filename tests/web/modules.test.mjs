@@ -14,6 +14,7 @@ import { parseVtu } from '../../web/app/vtu.js';
 import { autoMagnification, colourAt, colourScale, maxDisplacement } from '../../web/app/mesh_view.js';
 import { MESH_FIELDS, probeSummary } from '../../web/app/mesh_fields.js';
 import { contactCsv, sweepCsv } from '../../web/app/csv_export.js';
+import { adaptiveRows, STEP_COLUMNS } from '../../web/app/adaptive_steps.js';
 import { bounds, deformedPoints, fitTransform, locatePoint, meshEdges, valueRange } from '../../web/app/mesh_drawing.js';
 
 const repo = join(dirname(fileURLToPath(import.meta.url)), '..', '..');
@@ -269,4 +270,19 @@ test('CSV of the contact boundary and of a sweep', () => {
   assert.equal(contactCsv({ x: [] }), 'x,y,s,length,pressure,gap,active\n');
   const sweep = { pointer: '/a/b', points: [{ value: 1, force: [0, 2.5], peak_pressure: 3, contact_length: 0.4, converged: false, stop_reason: 'max_iterations', iterations: 200 }] };
   assert.equal(sweepCsv(sweep), '/a/b,force_x,force_y,peak_pressure,contact_length,converged,stop_reason,iterations\n1,0,2.5,3,0.4,0,"max_iterations",200\n');
+});
+
+test('adaptive steps: the force change is relative to the later step, none on the first', () => {
+  const steps = [
+    { step: 0, dofs: 100, triangles: 40, iterations: 9, estimator: 0.02, force: [0, 1], algebraic_error: null, time_s: 0.1 },
+    { step: 1, dofs: 180, triangles: 70, iterations: 8, estimator: 0.015, force: [0.3, 1.4], algebraic_error: 2e-9, time_s: 0.2 },
+  ];
+  const rows = adaptiveRows(steps);
+  assert.equal(rows.length, 2);
+  assert.equal(rows[0].forceChange, null);
+  assert.ok(Math.abs(rows[1].forceChange - 0.5 / Math.hypot(0.3, 1.4)) < 1e-15);
+  const cells = STEP_COLUMNS.map(([, text]) => text(rows[1]));
+  assert.deepEqual(cells, ['1', '180', '70', '8', '0.015', '0.3', '1.4', '0.35', '2.0e-9', '0.20 s']);
+  assert.equal(STEP_COLUMNS[7][1](rows[0]), '—');
+  assert.deepEqual(adaptiveRows(undefined), []);
 });

@@ -29,6 +29,7 @@ const chromiumPath = process.env.CHROMIUM ?? '/usr/bin/chromium';
 const hertzText = readFileSync(join(repo, 'solver', 'examples', 'hertz.json'), 'utf8');
 const { parseVtu } = await import(join(repo, 'web', 'app', 'vtu.js'));
 const { MESH_FIELDS } = await import(join(repo, 'web', 'app', 'mesh_fields.js'));
+const { fmt, seconds } = await import(join(repo, 'web', 'app', 'format.js'));
 
 // playwright-core lives in web/node_modules (installed by web/build.sh), not beside this file.
 const requireFromWeb = createRequire(join(webRoot, 'package.json'));
@@ -223,6 +224,7 @@ test('submitting the hertz case shows pressure with the Hertz curve, residuals a
   assert.match(numbers, new RegExp(`Iterations\\s+${result.iterations}`));
   assert.match(await page.locator('#mesh-caption').innerText(), /magnified ×\d+/);
   assert.equal(await page.locator('#sweep-figure').isVisible(), false, 'no sweep, no sweep plot');
+  assert.equal(await page.locator('#adaptivity-section').isVisible(), false, 'uniform, no adaptive steps');
 
   // Downloads point at the API and answer.
   for (const [link, type] of [['#download-result', 'application/json'], ['#download-vtu', 'application/xml']]) {
@@ -389,6 +391,66 @@ test('the mesh view zooms about the pointer, pans, shows edges and probes values
   await page.screenshot({ path: join(screenshots, 'mesh-probe.png'), clip: { x: box.x - 10, y: box.y - 80, width: box.width + 20, height: box.height + 160 } });
   await page.locator('#mesh-edges').uncheck();
   await page.getByRole('button', { name: 'Auto' }).click();
+});
+
+test('an adaptive run shows its steps: the log–log plot, the table and the adapted mesh', async () => {
+  await page.locator('#example-select').selectOption('hertz_adaptive');
+  await page.getByRole('button', { name: 'Load example' }).click();
+  const row = await submitAndWaitForRow('hertz_adaptive');
+  await row.locator('.state-succeeded').waitFor();
+  const jobId = Number(await row.getAttribute('data-job-id'));
+  const result = await (await fetch(`${server.url}/v1/jobs/${jobId}/result`)).json();
+  const steps = result.adaptivity.steps;
+  assert.ok(steps.length >= 3, `${steps.length} adaptive steps`);
+  await page.waitForFunction((n) => document.querySelector('#adaptivity-plot')?.dataset.points === String(n) &&
+    document.querySelectorAll('#adaptivity-table tbody tr').length === n &&
+    Number(document.querySelector('#mesh-canvas')?.dataset.triangles) > 0, steps.length);
+
+  // The plot: one point per step of J^½ and of the force change, both drawn.
+  assert.equal(await page.locator('#adaptivity-plot').getAttribute('data-series'),
+    'J^½ (estimator)|N^(−½) (optimal rate)||ΔF| / |F| (force change)');
+  await expectPixels('#adaptivity-plot', '#1f5fbf', 50, 'estimator line');
+  await expectPixels('#adaptivity-plot', '#2e8b57', 30, 'force change line');
+
+  // The table: one row per step, each number the result's (to the digits shown).
+  const headings = await page.locator('#adaptivity-table thead th').allInnerTexts();
+  assert.deepEqual(headings, ['step', 'unknowns', 'triangles', 'iterations', 'J^½', 'F_x', 'F_y', '|ΔF| / |F|', 'algebraic error', 'time']);
+  const cells = await page.locator('#adaptivity-table tbody tr').evaluateAll((rs) => rs.map((r) => [...r.cells].map((c) => c.textContent)));
+  const close = (text, want, digits) => Math.abs(Number(text) - want) <= 0.51 * 10 ** (1 - digits) * Math.abs(want);
+  steps.forEach((s, k) => {
+    const c = cells[k];
+    assert.deepEqual(c.slice(0, 4), [String(s.step), String(s.dofs), String(s.triangles), String(s.iterations)], `step ${k}`);
+    assert.ok(close(c[4], s.estimator, 4), `J^½ ${c[4]} against ${s.estimator}`);
+    assert.ok(close(c[6], s.force[1], 4), `F_y ${c[6]} against ${s.force[1]}`);
+    assert.equal(c[5], fmt(s.force[0]));
+    const change = k > 0 ? Math.hypot(s.force[0] - steps[k - 1].force[0], s.force[1] - steps[k - 1].force[1]) / Math.hypot(...s.force) : null;
+    if (change === null) assert.equal(c[7], '—');
+    else assert.ok(close(c[7], change, 2), `|ΔF|/|F| ${c[7]} against ${change}`);
+    assert.equal(c[8], fmt(s.algebraic_error ?? null, 2));
+    assert.equal(c[9], seconds(s.time_s));
+  });
+  assert.ok(steps.at(-1).dofs > steps[0].dofs && steps.at(-1).estimator < steps[0].estimator, 'refined and improved');
+  assert.match(await page.locator('#key-numbers').innerText(), new RegExp(`Adaptive steps\\s+${steps.length} \\(stopped: ${result.adaptivity.stop_reason}\\)`));
+
+  // The mesh is the last step's adapted mesh, coloured by the refinement generation of the VTU.
+  assert.equal(Number(await page.locator('#mesh-canvas').getAttribute('data-triangles')), steps.at(-1).triangles);
+  const mesh = await solutionOf(jobId);
+  const generation = [...mesh.cellData.generation.values];
+  await page.locator('#mesh-field').selectOption('generation');
+  await page.waitForFunction(() => document.querySelector('#mesh-canvas').dataset.field === 'generation');
+  const canvas = page.locator('#mesh-canvas');
+  assert.equal(Number(await canvas.getAttribute('data-min')), Math.min(...generation));
+  assert.equal(Number(await canvas.getAttribute('data-max')), Math.max(...generation));
+  assert.ok(Math.max(...generation) > Math.min(...generation), 'graded: the generations differ');
+  assert.match(await page.locator('#legend-label').innerText(), /^refinement generation, in bisections from the coarse-mesh triangle/);
+  // The adaptive section and the mesh under it, in page coordinates.
+  const shot = await page.evaluate(() => {
+    const top = document.querySelector('#adaptivity-section').getBoundingClientRect();
+    const bottom = document.querySelector('#mesh-caption').getBoundingClientRect();
+    return { x: top.x - 10, y: top.y + window.scrollY - 10, width: top.width + 20, height: bottom.bottom - top.y + 20 };
+  });
+  await page.screenshot({ path: join(screenshots, 'adaptive.png'), fullPage: true, clip: shot });
+  await page.locator('#mesh-field').selectOption('von_mises');
 });
 
 test('a solve stopped by max_iterations gets its own badge, not the success colour', async () => {

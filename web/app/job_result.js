@@ -1,8 +1,9 @@
 // The job view of a finished job: key numbers, warnings, downloads, the charts (pressure and
-// gap along the contact boundary, residuals, sweep), and the coloured mesh with its colour
+// gap along the contact boundary, residuals, sweep, adaptive steps), and the coloured mesh with its colour
 // bar. `view` is the page's record of the job shown: {result, mesh, meshError, hertz,
 // compare, charts}; `plots` the chart module (null when uPlot is missing).
 import * as api from './api.js';
+import { adaptiveRows, renderStepTable } from './adaptive_steps.js';
 import { contactCsv, sweepCsv } from './csv_export.js';
 import { fmt, seconds } from './format.js';
 import { MESH_FIELDS, UNITS } from './mesh_fields.js';
@@ -55,6 +56,11 @@ export function renderSummary(job, view) {
   addNumber(dl, 'Final KKT residual', fmt(r.final_kkt_residual, 3));
   addNumber(dl, 'Levels', String(r.levels));
   addNumber(dl, 'DOFs', String(r.dofs), r.dofs_total ? `${r.dofs_total} including constrained` : undefined);
+  const adaptivity = r.adaptivity;
+  if (adaptivity) {
+    addNumber(dl, 'Adaptive steps', `${adaptivity.steps?.length ?? 0} (stopped: ${adaptivity.stop_reason ?? '—'})`,
+      `Dörfler marking θ = ${adaptivity.theta}; the numbers here are the last step's`);
+  }
   addNumber(dl, 'Active contact edges', `${contact.active?.filter(Boolean).length ?? 0} of ${contact.active?.length ?? 0}`);
   addNumber(dl, 'Time', `${seconds(r.timing?.total_s)} (solve ${seconds(r.timing?.solve_s)})`,
     `mesh ${seconds(r.timing?.mesh_s)}, assembly ${seconds(r.timing?.assembly_s)}`);
@@ -112,6 +118,7 @@ export function drawCharts(view, plots) {
       : '';
   }
   drawSweep(view, plots);
+  drawAdaptivity(view, plots);
   const history = view.result.history ?? [];
   if (history.length) view.charts.push(plots.residualPlot(residualBox, history));
   else {
@@ -133,6 +140,24 @@ function drawSweep(view, plots) {
   $('sweep-note').textContent = `${sweep.points.length} points of ${sweep.pointer}, each started from the previous solution` +
     (bad ? `; ${bad} did not converge (red).` : '; all converged.') +
     (other ? ` Dashed: ${view.compare.label} (${other.points.length} points of ${other.pointer}).` : '');
+}
+
+// An adaptive run: estimator and force change against the unknowns, and the steps' table.
+function drawAdaptivity(view, plots) {
+  const steps = view.result.adaptivity?.steps;
+  $('adaptivity-section').hidden = !steps?.length;
+  const box = $('adaptivity-plot');
+  box.innerHTML = '';
+  if (!steps?.length) return;
+  const rows = adaptiveRows(steps);
+  view.charts.push(plots.adaptivityPlot(box, rows));
+  renderStepTable($('adaptivity-table'), rows);
+  const last = rows[rows.length - 1];
+  const first = rows[0];
+  $('adaptivity-note').textContent =
+    `${rows.length} solves from ${first.dofs} to ${last.dofs} unknowns; J^½ fell from ${fmt(first.estimator)} to ${fmt(last.estimator)}` +
+    (rows.length > 1 ? ` and the force changed by ${fmt(100 * last.forceChange, 2)} % in the last step.` : '.') +
+    ' The mesh below is the last step\'s (colour by refinement generation or the error indicator).';
 }
 
 /** The colour bar's words for a unit id, with the case's μ when the unit is a stress. */

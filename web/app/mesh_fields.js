@@ -8,6 +8,7 @@ export const UNITS = {
   S: 'the stress unit of the case (that of μ or E)',
   L: 'the length unit of the mesh',
   scaled: 'scaled units (stresses divided by μ)',
+  bisections: 'bisections from the coarse-mesh triangle (a uniform refinement counts as two)',
 };
 
 const cellArray = (name) => (mesh) => mesh.cellData[name]?.values ?? null;
@@ -53,6 +54,7 @@ export const MESH_FIELDS = {
   u_x: { label: 'displacement u_x', unit: 'L', signed: true, compute: displacementPerCell((x) => x) },
   u_y: { label: 'displacement u_y', unit: 'L', signed: true, compute: displacementPerCell((x, y) => y) },
   functional: { label: 'FOSLS functional (error indicator)', unit: 'scaled', compute: cellArray('functional') },
+  generation: { label: 'refinement generation', unit: 'bisections', compute: cellArray('generation') },
 };
 
 /**

@@ -1,6 +1,7 @@
 // The uPlot charts of a job: contact pressure and gap along the contact boundary (with the
 // Hertz curve when it applies, and a second job's curves to compare), the KKT residual per
-// iteration on a log axis, and a sweep's force against the swept value.
+// iteration on a log axis, a sweep's force against the swept value, and an adaptive run's
+// estimator and force change against the unknowns.
 import uPlot from '../dist/uPlot.esm.js';
 import { hertzPressure } from './hertz.js';
 
@@ -14,6 +15,9 @@ export const COLOURS = {
   hertz: '#c0392b',
   kkt: '#1f5fbf',
   correction: '#8e44ad',
+  estimator: '#1f5fbf',
+  forceChange: '#2e8b57',
+  slope: '#7f8c8d',
 };
 
 const plotHeight = 260;
@@ -187,6 +191,56 @@ export function sweepPlot(container, sweep, compare = null) {
     points: String(table[0].length),
     unconverged: String(table[2].filter((v) => v !== null).length),
     comparePoints: String(compare ? compare.sweep.points?.length ?? 0 : 0),
+  });
+  return chart;
+}
+
+/** Labels of a log axis: every tick when it spans less than a decade, else mantissas 1, 2, 5. */
+function logTicks(u, vals) {
+  const shown = vals.filter((v) => v > 0);
+  const narrow = shown.length > 0 && shown[shown.length - 1] < 10 * shown[0];
+  return vals.map((v) => {
+    const mantissa = Math.round(v / 10 ** Math.floor(Math.log10(v) + 1e-9));
+    if (!narrow && ![1, 2, 5].includes(mantissa)) return '';
+    return Number.isInteger(v) && v < 1e7 ? String(v) : sci(v);  // unknowns as counts
+  });
+}
+
+/**
+ * An adaptive run, log–log against the unknowns, one point per step (`rows` of
+ * adaptiveRows): the estimator J^½ with the reference slope N^(−1/2) through its first point
+ * (the optimal rate of P1/RT0 in 2D), and on a second log axis the relative change of the
+ * contact force since the previous step.
+ */
+export function adaptivityPlot(container, rows) {
+  const value = (u, v) => sci(v);
+  const positive = (v) => (typeof v === 'number' && v > 0 ? v : null);
+  const dofs = rows.map((r) => r.dofs);
+  const estimator = rows.map((r) => positive(r.estimator));
+  const first = rows.findIndex((r, k) => estimator[k] !== null);
+  const slope = dofs.map((n) => (first < 0 ? null : estimator[first] * Math.sqrt(dofs[first] / n)));
+  const opts = {
+    width: fitWidth(container),
+    height: plotHeight,
+    scales: { x: { time: false, distr: 3 }, y: { distr: 3 }, change: { distr: 3 } },
+    legend: { live: false },
+    series: [
+      { label: 'unknowns', value },
+      { label: 'J^½ (estimator)', stroke: COLOURS.estimator, width: 2, value, points: { show: true, size: 6 } },
+      { label: 'N^(−½) (optimal rate)', stroke: COLOURS.slope, width: 1, dash: [5, 4], value, points: { show: false } },
+      { label: '|ΔF| / |F| (force change)', scale: 'change', stroke: COLOURS.forceChange, width: 2, dash: [8, 3], value, points: { show: true, size: 6 }, spanGaps: true },
+    ],
+    axes: [
+      { label: 'unknowns N', size: 46, values: logTicks },
+      { label: 'J^½', size: 64, values: logTicks },
+      { label: '|ΔF| / |F|', scale: 'change', side: 1, size: 64, grid: { show: false }, values: logTicks },
+    ],
+  };
+  const data = [dofs, estimator, slope, rows.map((r) => positive(r.forceChange))];
+  const chart = responsive(new uPlot(opts, data, container), container);
+  Object.assign(container.dataset, {
+    points: String(estimator.filter((v) => v !== null).length),
+    series: opts.series.slice(1).map((s) => s.label).join('|'),
   });
   return chart;
 }
