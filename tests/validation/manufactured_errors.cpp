@@ -13,7 +13,6 @@
 //                                       [--elements R]
 // Prints one JSON object with a row per level; the row of refinement R also lists η_T² and
 // e_T² of every triangle.
-#include <Eigen/CholmodSupport>
 #include <algorithm>
 #include <cmath>
 #include <cstdlib>
@@ -25,7 +24,7 @@
 
 #include "assembly/discretization.hpp"
 #include "mesh/builtin_meshes.hpp"
-#include "post/fe_field.hpp"
+#include "validation/measured_solve.hpp"
 #include "verification/verification_problems.hpp"
 
 namespace {
@@ -48,26 +47,17 @@ nlohmann::json level_row(const SmoothSolution& sol, double lambda, double size, 
       fosls::build_mesh_hierarchy(fosls::make_square({.size = size}), refinements),
       sol.problem(lambda));
   const auto& p = disc.problem();
-  Eigen::CholmodSupernodalLLT<fosls::SparseMatrix> llt(p.qp.A);
-  if (llt.info() != Eigen::Success) throw std::runtime_error("CHOLMOD factorisation failed");
-  const fosls::Vector x = llt.solve(p.qp.b);
-  const fosls::Vector full = disc.assembler().full_vector(p, x);
-  const fosls::FunctionalParts parts = disc.assembler().functional(full);
-  const fosls::FeField field(disc.finest_space(), full, p.stress_scale);
+  const fosls::testing::MeasuredSolve m = fosls::testing::measure_linear_solve(disc, sol.exact());
+  const fosls::FunctionalParts& parts = m.parts;
   const fosls::Mesh& mesh = disc.meshes().finest();
-
-  std::array<double, 4> total = {0, 0, 0, 0};
-  std::vector<double> ratio(mesh.num_triangles()), true_error(mesh.num_triangles());
-  const fosls::ExactSolution exact = sol.exact();
-  for (int t = 0; t < mesh.num_triangles(); ++t) {
-    const auto e = fosls::element_error(field, exact, t);
-    for (int k = 0; k < 4; ++k) total[k] += e[k];
-    true_error[t] = e[0] + e[1] + e[2] + e[3];
-    // Local efficiency η_T / e_T: bounded above by the norm equivalence, not below (the
-    // estimator's reliability is global), so its spread is part of the picture.
-    ratio[t] = std::sqrt(parts.element[t] / (e[0] + e[1] + e[2] + e[3]));
-  }
-  const double error = std::sqrt(total[0] + total[1] + total[2] + total[3]);
+  const auto& total = m.total;
+  const auto& true_error = m.element_error;
+  // Local efficiency η_T / e_T: bounded above by the norm equivalence, not below (the
+  // estimator's reliability is global), so its spread is part of the picture.
+  std::vector<double> ratio(mesh.num_triangles());
+  for (int t = 0; t < mesh.num_triangles(); ++t)
+    ratio[t] = std::sqrt(parts.element[t] / true_error[t]);
+  const double error = m.error();
   const double j = parts.total();
   nlohmann::json row = {
       {"refinements", refinements},

@@ -9,14 +9,20 @@ add_executable(validation_manufactured_errors ${VALIDATION_DIR}/manufactured_err
 target_link_libraries(validation_manufactured_errors PRIVATE fosls_internals nlohmann_json::nlohmann_json)
 target_include_directories(validation_manufactured_errors PRIVATE ${PROJECT_SOURCE_DIR}/tests)
 
+# True error and estimator on the L-shaped domain's corner singularity, uniform and adaptive.
+add_executable(validation_corner_errors ${VALIDATION_DIR}/corner_errors.cpp)
+target_link_libraries(validation_corner_errors PRIVATE fosls_internals nlohmann_json::nlohmann_json)
+target_include_directories(validation_corner_errors PRIVATE ${PROJECT_SOURCE_DIR}/tests)
+
 find_package(Python3 COMPONENTS Interpreter)
 if(Python3_Interpreter_FOUND)
   foreach(check ShippedBenchmarks HertzCompressible HertzIncompressible FiniteBody
-                SolverIterations ErrorEstimator SignoriniSquare CornerSingularity)
+                SolverIterations ErrorEstimator SignoriniSquare CornerSingularity CornerTrueError)
     add_test(NAME validation_${check}
              COMMAND ${Python3_EXECUTABLE} ${VALIDATION_DIR}/test_validation.py
                      --bin $<TARGET_FILE:fosls-contact>
-                     --estimator $<TARGET_FILE:validation_manufactured_errors> ${check})
+                     --estimator $<TARGET_FILE:validation_manufactured_errors>
+                     --corner $<TARGET_FILE:validation_corner_errors> ${check})
     set_tests_properties(validation_${check} PROPERTIES LABELS validation TIMEOUT 300)
   endforeach()
 endif()
