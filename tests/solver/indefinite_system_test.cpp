@@ -74,5 +74,21 @@ TEST(IndefiniteSystem, TheCaseLayerReportsTheWeightsWhenASolverFindsIt) {
   }
 }
 
+// An adaptive case checks the definiteness on its first step only (SolverOptions::
+// check_definiteness): indefinite weights are refused there, before any refinement.
+TEST(IndefiniteSystem, AnAdaptiveCaseIsRefusedOnItsFirstStep) {
+  nlohmann::json j = square_case("mmg");
+  j["adaptivity"] = {{"steps", 2}};
+  const CaseReadResult read = read_case(j);
+  ASSERT_TRUE(read.errors.empty());
+  try {
+    run_case(*read.spec);
+    ADD_FAILURE() << "indefinite weights were accepted";
+  } catch (const CaseException& e) {
+    ASSERT_EQ(e.errors().size(), 1u);
+    EXPECT_EQ(e.errors()[0].pointer, "/weights");
+  }
+}
+
 }  // namespace
 }  // namespace fosls
