@@ -33,7 +33,7 @@ long long dofs_total(const Mesh& mesh) { return 2LL * (mesh.num_vertices() + mes
 
 /// Solves the finest level of `solution.disc` from `solution.x` (empty: from the nested
 /// iteration or zero) and evaluates the solution.
-void solve_finest(CaseSolution& solution, const CaseSpec& spec, bool from_start,
+void solve_finest(CaseSolution& solution, const CaseSpec& spec, bool from_start, bool first_step,
                   const CaseSolveObserver& observer) {
   const auto t0 = Clock::now();
   const Discretization& disc = *solution.disc;
@@ -44,6 +44,7 @@ void solve_finest(CaseSolution& solution, const CaseSpec& spec, bool from_start,
   // A prolongated (or continued) solution is a better start than the nested iteration would compute
   // again on all the coarser levels.
   if (from_start) options.nested = false;
+  options.check_definiteness = first_step;
   const LevelHierarchy hierarchy =
       method_info(options.method).needs_hierarchy ? disc.build_level_hierarchy() : LevelHierarchy{};
   const auto t_assembled = Clock::now();
@@ -88,7 +89,7 @@ CaseSolution solve_case_levels(MeshHierarchy meshes, const ProblemData& data, co
     if (started) solution.x = *start;
     if (step > 0) solution.x = prolongate_to_finest(disc, solution.full);
     if (observer.on_step) observer.on_step(step, disc.problem().qp.size());
-    solve_finest(solution, spec, step > 0 || started, observer);
+    solve_finest(solution, spec, step > 0 || started, step == 0, observer);
 
     const ErrorEstimate estimate = error_estimate(solution.parts);
     const Mesh& finest = disc.meshes().finest();

@@ -56,6 +56,11 @@ CaseReadResult read_case(const nlohmann::json& j, const CaseReadOptions& options
   if (j.contains("solver")) spec.solver = read_solver_section(j["solver"]);
   if (j.contains("adaptivity"))
     spec.adaptivity = read_adaptivity_section(j["adaptivity"], options.limits);
+  // An adaptive step's solution only decides where to refine and where the next step starts:
+  // iterating it beyond its discretisation error is wasted, so that is where its solve stops
+  // unless the case gives a tolerance (docs/method.md §5.1).
+  if (spec.adaptivity && !(j.contains("solver") && j["solver"].contains("tolerance")))
+    spec.solver.stopping = StoppingRule::kDiscretisation;
   if (j.contains("sweep")) {
     read_sweep_section(j, options, spec, result.errors);
     if (!result.errors.empty()) return result;

@@ -75,7 +75,8 @@ ObjectRulePtr solver_rule() {
           "stopping tolerance: the KKT residual relative to the initial iterate's; "
           "\"discretisation\": stop once the estimated algebraic error is "
           "discretisation_fraction times the estimated discretisation error J^½, or "
-          "at the default KKT tolerance, whichever comes first (docs/method.md §5.1)"),
+          "at the default KKT tolerance, whichever comes first (docs/method.md §5.1); "
+          "a case with adaptivity stops at \"discretisation\" unless it gives a tolerance"),
       optional_field("discretisation_fraction", number_value(Range::open(0, 1)),
                      s.discretisation_fraction,
                      "with tolerance \"discretisation\": the algebraic error allowed, as a "

@@ -54,6 +54,11 @@ struct SolverOptions {
   /// previous one, as far as the bounds allow (SubspaceAcceleration; docs/method.md §4.5).
   /// Still monotone and feasible; false runs the plain method.
   bool accelerate = true;
+  /// mmg and tnnmg: run chain_is_definite before solving. An adaptive step after the first
+  /// leaves it out: the weights were checked on the first step, and a step's check, a CHOLMOD
+  /// factorisation of up to 5·10⁴ unknowns, cost 15–25 % of the steps below that size
+  /// (docs/performance.md, adaptivity).
+  bool check_definiteness = true;
 };
 
 struct SolverReport {
@@ -93,8 +98,9 @@ struct SolverReport {
 /// most `max_dofs` DOFs: PᵀAP indefinite implies A indefinite, and the measured c3 limit barely
 /// moves with h (0.28, 0.26, 0.25 at 3, 4, 5 levels of the square), so a level of ≤ 5·10⁴ DOFs
 /// decides at a small fraction of the cost of factorising the finest matrix; weights within
-/// ≈ 10 % of the limit may pass. mmg and tnnmg run this check first; pdas learns it from its
-/// own factorisation.
+/// ≈ 10 % of the limit may pass. mmg and tnnmg run this check first (in an adaptive case on
+/// its first step: SolverOptions::check_definiteness); pdas learns it from its own
+/// factorisation.
 bool chain_is_definite(const SparseMatrix& A, const GalerkinChain& chain, int max_dofs = 50000);
 
 /// The solve loop: minimises the bound-constrained QP from x (projected onto the bounds

@@ -2,7 +2,7 @@
 """Uniform refinement against the adaptive loop on Hertz, λ = 1 and λ = ∞, in one run.
 
 For each material: the shipped `hertz` case at mesh.refinements 2..5 (uniform), then the
-shipped `hertz_adaptive` case (refinements 1, θ = 0.5) with more steps, every solve stopped at
+shipped `hertz_adaptive` case (refinements 1, its θ unless --theta) with more steps, every solve stopped at
 the discretisation error (solver.tolerance "discretisation", docs/method.md §5.1) unless
 --tolerance gives a number. Prints one Markdown table per material: unknowns, iterations, wall
 time, the contact force's error against the reference, and J^½. The adaptive rows' time is the
@@ -17,6 +17,7 @@ References: λ = 1, F = 0.0125226 from an independent displacement FEM (docs/val
 import argparse
 import json
 import os
+import resource
 import subprocess
 import sys
 import tempfile
@@ -29,16 +30,25 @@ def example(program, name):
                                      capture_output=True, text=True).stdout)
 
 
+def children_cpu_s():
+    usage = resource.getrusage(resource.RUSAGE_CHILDREN)
+    return usage.ru_utime + usage.ru_stime
+
+
 def solve(program, case, workdir):
+    """The result, with the process's CPU time added as result["cpu_s"]."""
     path = os.path.join(workdir, "case.json")
     out = os.path.join(workdir, "result.json")
     with open(path, "w") as f:
         json.dump(case, f)
+    cpu0 = children_cpu_s()
     run = subprocess.run([program, "solve", path, "--out", out], capture_output=True, text=True)
     if run.returncode not in (0, 3):
         sys.exit(f"{case['name']}: fosls-contact exited {run.returncode}: {run.stderr}")
     with open(out) as f:
-        return json.load(f)
+        result = json.load(f)
+    result["cpu_s"] = children_cpu_s() - cpu0
+    return result
 
 
 def force(result_or_step):
@@ -48,7 +58,7 @@ def force(result_or_step):
 
 def rows_for(program, lam, args, workdir):
     tolerance = args.tolerance
-    rows = []
+    rows, cpu = [], []
     base = example(program, "hertz")
     base["material"]["lambda"] = lam
     base["solver"]["tolerance"] = tolerance
@@ -58,22 +68,26 @@ def rows_for(program, lam, args, workdir):
         rows.append({"run": f"uniform r{r}", "dofs": res["dofs"], "iterations": res["iterations"],
                      "time_s": res["timing"]["total_s"], "force": force(res),
                      "estimator": res["functional"]["estimator"]})
+        cpu.append(f"uniform r{r} {res['cpu_s']:.2f} s")
     adaptive = example(program, "hertz_adaptive")
     adaptive["material"]["lambda"] = lam
     adaptive["solver"]["tolerance"] = tolerance
     adaptive["adaptivity"]["steps"] = args.steps
     adaptive["adaptivity"]["max_dofs"] = args.max_dofs
+    if args.theta:
+        adaptive["adaptivity"]["theta"] = args.theta
     res = solve(program, adaptive, workdir)
+    cpu.append(f"adaptive (θ = {adaptive['adaptivity']['theta']}, all steps) {res['cpu_s']:.2f} s")
     elapsed = res["timing"]["mesh_s"]
     for s in res["adaptivity"]["steps"]:
         elapsed += s["time_s"]
         rows.append({"run": f"adaptive step {s['step']}", "dofs": s["dofs"],
                      "iterations": s["iterations"], "time_s": elapsed, "force": force(s),
                      "estimator": s["estimator"]})
-    return rows
+    return rows, cpu
 
 
-def print_table(title, rows, reference, reference_note):
+def print_table(title, rows, cpu, reference, reference_note):
     print(f"\n{title} (reference F = {reference:.7g}, {reference_note})\n")
     print("| run | unknowns | iterations | wall (s) | F | F error | J^½ |")
     print("|---|---:|---:|---:|---:|---:|---:|")
@@ -81,6 +95,7 @@ def print_table(title, rows, reference, reference_note):
         error = 100 * (r["force"] / reference - 1)
         print(f"| {r['run']} | {r['dofs']:,} | {r['iterations']} | {r['time_s']:.2f} | "
               f"{r['force']:.7f} | {error:+.3f} % | {r['estimator']:.3e} |".replace(",", " "))
+    print(f"\nCPU time: {'; '.join(cpu)}")
 
 
 def main():
@@ -90,6 +105,8 @@ def main():
     ap.add_argument("--uniform-to", type=int, default=5)
     ap.add_argument("--steps", type=int, default=16)
     ap.add_argument("--max-dofs", type=int, default=250000, help="adaptivity.max_dofs")
+    ap.add_argument("--theta", type=float, default=0.0,
+                    help="adaptivity.theta (default: the shipped case's)")
     ap.add_argument("--tolerance", default="discretisation",
                     help='solver.tolerance: "discretisation" or a number')
     args = ap.parse_args()
@@ -97,12 +114,12 @@ def main():
         args.tolerance = float(args.tolerance)
     env_note = f"solver.tolerance {args.tolerance}"
     with tempfile.TemporaryDirectory() as workdir:
-        rows = rows_for(args.program, 1, args, workdir)
-        print_table(f"Hertz λ = 1, {env_note}", rows, REFERENCE_FORCE_LAMBDA_1,
+        rows, cpu = rows_for(args.program, 1, args, workdir)
+        print_table(f"Hertz λ = 1, {env_note}", rows, cpu, REFERENCE_FORCE_LAMBDA_1,
                     "displacement FEM, docs/validation.md")
-        rows = rows_for(args.program, "inf", args, workdir)
+        rows, cpu = rows_for(args.program, "inf", args, workdir)
         finest = [r for r in rows if r["run"] == f"uniform r{args.uniform_to}"][0]
-        print_table(f"Hertz λ = ∞, {env_note}", rows, finest["force"],
+        print_table(f"Hertz λ = ∞, {env_note}", rows, cpu, finest["force"],
                     f"the finest uniform solve, r{args.uniform_to}")
 
 

@@ -97,11 +97,13 @@ TEST(DiscretisationStop, EveryAdaptiveStepStopsEarly) {
   ASSERT_TRUE(read.spec);
   const nlohmann::json r = run_case(*read.spec, quiet()).result;
   EXPECT_EQ(r["adaptivity"]["stop_reason"], "steps");
-  // Measured 3 to 5 iterations per step (15 to 26 at tolerance 1e-8).
+  // Measured 3 iterations per step, 4 on the first (8 to 12 at tolerance 1e-8): three is the
+  // rule's floor, so each step starts within the rule's reach of its solution. (Starts that
+  // lost the Dirichlet values next to refined corners took up to 6.)
   for (const auto& s : r["adaptivity"]["steps"]) {
     EXPECT_TRUE(s["converged"].get<bool>());
     EXPECT_LE(s["algebraic_error"].get<double>(), 0.1 * s["estimator"].get<double>());
-    EXPECT_LE(s["iterations"].get<int>(), 8) << s["step"];
+    EXPECT_LE(s["iterations"].get<int>(), s["step"] == 0 ? 5 : 3) << s["step"];
   }
 }
 

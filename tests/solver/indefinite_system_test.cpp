@@ -54,24 +54,36 @@ nlohmann::json square_case(const char* method) {
           {"solver", {{"method", method}}}};
 }
 
+/// Runs the case and expects it refused with one error at /weights that names c3 = 0.35.
+void expect_weights_refused(const nlohmann::json& j, const std::string& what) {
+  const CaseReadResult read = read_case(j);
+  ASSERT_TRUE(read.errors.empty()) << what;
+  try {
+    run_case(*read.spec);
+    ADD_FAILURE() << what << ": indefinite weights were accepted";
+  } catch (const CaseException& e) {
+    ASSERT_EQ(e.errors().size(), 1u) << what;
+    EXPECT_EQ(e.errors()[0].pointer, "/weights") << what;
+    EXPECT_NE(e.errors()[0].detail.find("c3 = 0.35"), std::string::npos) << e.errors()[0].detail;
+  }
+}
+
 TEST(IndefiniteSystem, TheCaseLayerReportsTheWeightsWhenASolverFindsIt) {
   ProblemData d = testing::flat_square(1.0);
   d.weights.c3 = 0.35;
   const Discretization disc(build_mesh_hierarchy(make_square({.size = 0.25}), 3), d);
   ASSERT_TRUE(contact_layer_is_definite(disc.finest_space(), disc.problem().qp))
       << "the screen catches c3 = 0.35: this test would not reach the solvers";
-  for (const char* method : {"mmg", "tnnmg", "pdas"}) {
-    const CaseReadResult read = read_case(square_case(method));
-    ASSERT_TRUE(read.errors.empty());
-    try {
-      run_case(*read.spec);
-      ADD_FAILURE() << method << ": indefinite weights were accepted";
-    } catch (const CaseException& e) {
-      ASSERT_EQ(e.errors().size(), 1u) << method;
-      EXPECT_EQ(e.errors()[0].pointer, "/weights") << method;
-      EXPECT_NE(e.errors()[0].detail.find("c3 = 0.35"), std::string::npos) << e.errors()[0].detail;
-    }
-  }
+  for (const char* method : {"mmg", "tnnmg", "pdas"})
+    expect_weights_refused(square_case(method), method);
+}
+
+// An adaptive case checks the definiteness on its first step only (SolverOptions::
+// check_definiteness): indefinite weights are refused there, before any refinement.
+TEST(IndefiniteSystem, AnAdaptiveCaseIsRefusedOnItsFirstStep) {
+  nlohmann::json j = square_case("mmg");
+  j["adaptivity"] = {{"steps", 2}};
+  expect_weights_refused(j, "adaptive mmg");
 }
 
 }  // namespace

@@ -41,8 +41,25 @@ TEST(AdaptivitySection, AbsentMeansUniformAndDefaultsFillAnEmptyObject) {
   const AdaptivitySpec defaults;
   EXPECT_EQ(r.spec->adaptivity->steps, defaults.steps);
   EXPECT_EQ(r.spec->adaptivity->max_dofs, defaults.max_dofs);
-  EXPECT_EQ(r.spec->adaptivity->theta, 0.5);
+  EXPECT_EQ(r.spec->adaptivity->theta, 0.7);
   EXPECT_EQ(r.spec->adaptivity->target, 0.0);
+}
+
+TEST(AdaptivitySection, StepsStopAtTheDiscretisationErrorUnlessTheCaseGivesATolerance) {
+  json uniform = adaptive_case(nullptr);
+  uniform.erase("adaptivity");
+  EXPECT_EQ(read_case(uniform).spec->solver.stopping, StoppingRule::kKktResidual);
+  EXPECT_EQ(read_case(adaptive_case(json::object())).spec->solver.stopping,
+            StoppingRule::kDiscretisation);
+  json solver_without_tolerance = adaptive_case(json::object());
+  solver_without_tolerance["solver"] = {{"method", "mmg"}};
+  EXPECT_EQ(read_case(solver_without_tolerance).spec->solver.stopping,
+            StoppingRule::kDiscretisation);
+  json tight = adaptive_case(json::object());
+  tight["solver"] = {{"tolerance", 1e-8}};
+  const auto r = read_case(tight);
+  EXPECT_EQ(r.spec->solver.stopping, StoppingRule::kKktResidual);
+  EXPECT_EQ(r.spec->solver.tolerance, 1e-8);
 }
 
 TEST(AdaptivitySection, EveryFieldIsRead) {
