@@ -9,15 +9,15 @@ double bytes_per_unknown(SolverMethod method) {
   // tests/benchmarks/memory_calibration.py, fitted on relative error; see docs/case-format.md.
   switch (method) {
     case SolverMethod::kMmg:
-      return 1209;
+      return 944;
     case SolverMethod::kTnnmg:
-      return 1215;
+      return 973;
     case SolverMethod::kPdas:
-      return 2095;
+      return 2077;
     case SolverMethod::kPgs:
-      return 610;
+      return 595;
   }
-  return 2095;
+  return 2077;
 }
 
 long long unknowns_after_refinement(long long triangles, long long edges, long long vertices,

@@ -167,7 +167,9 @@ TEST(ServiceIsolation, ASolveOverItsMemoryLimitFailsAloneAndTheNextJobSucceeds) 
   // Admitted despite the estimate, so that the solve itself meets the limit.
   Service svc(1, {"--max-job-memory", "100M", "--admit-over-budget"});
   json big = example("signorini_square");
-  big["mesh"]["refinements"] = 6;
+  // 2.1M unknowns: its assembly alone (≈ 850 MiB) is over the limit with its headroom
+  // (100 MiB + kSolveAddressSpaceHeadroom); 524k unknowns (≈ 480 MiB) now fit in it.
+  big["mesh"]["refinements"] = 7;
   const auto id = svc.submit(big);
   const json job = svc.wait_state(id, "failed");
   const std::string error = job["error"];
