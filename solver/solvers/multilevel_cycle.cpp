@@ -262,9 +262,9 @@ bool regularise_truncated(SparseMatrix& a, const SparseMatrix& truncated_prolong
                           ReversibleEdits* edits) {
   // A coarse DOF whose basis function was truncated away entirely (its column of the
   // truncated prolongation is empty: under bisection, a U_n or S_n whose fine neighbourhood
-  // was not refined) has a zero row and column — up to the rounding of the
-  // truncation correction's update formula, which is cleared here; a unit diagonal keeps the level definite and its
-  // correction (with zero restricted residual) exactly zero.
+  // was not refined) has a zero row and column — up to the rounding of the truncation
+  // correction's update formula, which is cleared here; a unit diagonal keeps the level
+  // definite and its correction (with zero restricted residual) exactly zero.
   std::vector<char> vanished(a.rows(), 1);
   for (int col = 0; col < truncated_prolongation.outerSize(); ++col)
     for (SparseMatrix::InnerIterator it(truncated_prolongation, col); it; ++it)
