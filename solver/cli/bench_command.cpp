@@ -55,7 +55,20 @@ struct Configuration {
 std::vector<Configuration> configurations(const std::vector<std::string>& methods,
                                           const std::vector<std::string>& smoothers,
                                           const std::vector<std::string>& obstacles,
-                                          const std::vector<std::string>& cycles);
+                                          const std::vector<std::string>& cycles) {
+  std::vector<Configuration> out;
+  for (const auto& method : methods) {
+    const MethodInfo& info = *find_method(method);
+    auto used = [&info](SolverOption option, const std::vector<std::string>& names) {
+      return uses_option(info, option) ? names : std::vector<std::string>{"-"};
+    };
+    for (const auto& smoother : used(SolverOption::kSmoother, smoothers))
+      for (const auto& obstacle : used(SolverOption::kCoarseObstacle, obstacles))
+        for (const auto& cycle : used(SolverOption::kCycle, cycles))
+          out.push_back({method, smoother, obstacle, cycle});
+  }
+  return out;
+}
 
 /// The settings columns of the tables: method, smoother, coarse obstacle, cycle.
 std::string settings_columns(const nlohmann::json& row) {
@@ -155,24 +168,6 @@ std::string unknown_name(const std::vector<std::string>& names, Find find, const
     if (!find(n))
       out += std::string("error: ") + option + ": unknown name \"" + n +
              "\"; known: " + join_words(known, ", ") + "\n";
-  return out;
-}
-
-std::vector<Configuration> configurations(const std::vector<std::string>& methods,
-                                          const std::vector<std::string>& smoothers,
-                                          const std::vector<std::string>& obstacles,
-                                          const std::vector<std::string>& cycles) {
-  std::vector<Configuration> out;
-  for (const auto& method : methods) {
-    const MethodInfo& info = *find_method(method);
-    auto used = [&info](SolverOption option, const std::vector<std::string>& names) {
-      return uses_option(info, option) ? names : std::vector<std::string>{"-"};
-    };
-    for (const auto& smoother : used(SolverOption::kSmoother, smoothers))
-      for (const auto& obstacle : used(SolverOption::kCoarseObstacle, obstacles))
-        for (const auto& cycle : used(SolverOption::kCycle, cycles))
-          out.push_back({method, smoother, obstacle, cycle});
-  }
   return out;
 }
 

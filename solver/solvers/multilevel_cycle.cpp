@@ -46,7 +46,7 @@ Vector energy_minimising_correction(const SparseMatrix& a, const SparseMatrix& p
 struct MultilevelCycle::LevelState {
   /// The level's matrix (coarse levels only): the chain's untruncated Galerkin matrix, not
   /// copied, while nothing is truncated, else `truncated`.
-  const SparseMatrix* A = nullptr;
+  SparseMatrix* A = nullptr;
   SparseMatrix truncated;  ///< the truncated Galerkin matrix, when truncating
   std::unique_ptr<PatchSmoother> patch;
   std::unique_ptr<PointSmoother> point;
@@ -375,7 +375,7 @@ void MultilevelCycle::rebuild_coarse_levels() {
         // that level, only when needed, keeps its correction minimising a majorant of J, so
         // the cycle stays monotone; raising kCoarseShift for every level slowed the robustness
         // cases (146 iterations on one).
-        SparseMatrix& a = const_cast<SparseMatrix&>(*level.A);  // the level's own or edited
+        SparseMatrix& a = *level.A;  // the level's own, or the chain's edited in place
         const bool in_chain = level.A == &chain_->matrices[j];
         for (int col = 0; col < a.outerSize(); ++col)
           for (SparseMatrix::InnerIterator it(a, col); it; ++it)
