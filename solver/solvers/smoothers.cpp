@@ -30,70 +30,45 @@ void PointSmoother::sweep(Vector& x, Vector& r, const Vector& lo, const Vector& 
 
 namespace {
 
-/// Solves L Lᵀ y = y in place for L lower triangular, packed by columns (column b holds rows
-/// b … m−1).
-void solve_packed_cholesky(const double* l, int m, Vector& y) {
-  // Column b starts at b·m − b(b−1)/2.
-  auto column = [m](int b) { return b * m - b * (b - 1) / 2; };
-  for (int b = 0; b < m; ++b) {
-    const double* c = l + column(b);
-    y[b] /= c[0];
-    for (int a = b + 1; a < m; ++a) y[a] -= c[a - b] * y[b];
-  }
-  for (int b = m - 1; b >= 0; --b) {
-    const double* c = l + column(b);
-    double s = y[b];
-    for (int a = b + 1; a < m; ++a) s -= c[a - b] * y[a];
-    y[b] = s / c[0];
-  }
+std::vector<int> patch_sizes(const std::vector<std::vector<int>>& patches) {
+  std::vector<int> sizes(patches.size());
+  for (std::size_t p = 0; p < patches.size(); ++p) sizes[p] = static_cast<int>(patches[p].size());
+  return sizes;
 }
 
 }  // namespace
 
 PatchSmoother::PatchSmoother(const SparseMatrix& A, const std::vector<std::vector<int>>& patches,
                              std::array<int, 2> split)
-    : A_(A), patches_(patches), split_(split) {
-  // Only the lower triangle of each factor is kept, packed by columns: half the memory of the
-  // full m × m blocks, which were the largest part of a multilevel solve after A itself.
-  offset_.resize(patches.size() + 1, 0);
-  for (std::size_t p = 0; p < patches.size(); ++p)
-    offset_[p + 1] = offset_[p] + patches[p].size() * (patches[p].size() + 1) / 2;
-  factors_.resize(offset_.back());
+    : A_(A), patches_(patches), split_(split), factors_(factorise_patches(A, patches)) {}
+
+SmallCholeskyFactors PatchSmoother::factorise_patches(
+    const SparseMatrix& A, const std::vector<std::vector<int>>& patches) {
+  // Each thread marks the local index of the patch's DOFs in its own copy of `local`.
+  std::vector<std::vector<int>> local(omp_get_max_threads());
+  auto fill = [&](int p, Eigen::MatrixXd& block) {
+    std::vector<int>& mine = local[omp_get_thread_num()];
+    if (mine.empty()) mine.assign(A.rows(), -1);
+    const auto& idx = patches[p];
+    const int m = static_cast<int>(idx.size());
+    for (int a = 0; a < m; ++a) mine[idx[a]] = a;
+    for (int b = 0; b < m; ++b)
+      for (SparseMatrix::InnerIterator it(A, idx[b]); it; ++it)
+        if (int a = mine[it.row()]; a >= 0) block(a, b) = it.value();
+    for (int a = 0; a < m; ++a) mine[idx[a]] = -1;
+  };
   int failed = -1;
-#pragma omp parallel
-  {
-    std::vector<int> local(A.rows(), -1);
-    Eigen::MatrixXd block;
-#pragma omp for schedule(dynamic, 256)
-    for (std::size_t p = 0; p < patches.size(); ++p) {
-      const auto& idx = patches[p];
-      const int m = static_cast<int>(idx.size());
-      for (int a = 0; a < m; ++a) local[idx[a]] = a;
-      block.setZero(m, m);
-      for (int b = 0; b < m; ++b)
-        for (SparseMatrix::InnerIterator it(A, idx[b]); it; ++it)
-          if (int a = local[it.row()]; a >= 0) block(a, b) = it.value();
-      for (int a = 0; a < m; ++a) local[idx[a]] = -1;
-      Eigen::LLT<Eigen::Ref<Eigen::MatrixXd>> llt(block);  // in place: block becomes L
-      if (llt.info() != Eigen::Success) {
-#pragma omp critical
-        failed = static_cast<int>(p);
-      }
-      double* packed = factors_.data() + offset_[p];
-      for (int b = 0; b < m; ++b)
-        for (int a = b; a < m; ++a) *packed++ = block(a, b);
-    }
-  }
+  SmallCholeskyFactors factors(patch_sizes(patches), fill, failed);
   if (failed >= 0)
     throw IndefiniteSystemError("the local matrix of vertex patch " + std::to_string(failed) +
                                 " is not positive definite");
+  return factors;
 }
 
 void PatchSmoother::solve_patch(int p, const Vector& rl, Vector& x, const Vector& lo,
                                 const Vector& hi, Vector& change) const {
   const auto& idx = patches_[p];
   const int m = static_cast<int>(idx.size());
-  const double* l = factors_.data() + offset_[p];  // packed lower columns
   Vector delta(m);
   change.setZero(m);
   bool bounded = false;
@@ -101,11 +76,9 @@ void PatchSmoother::solve_patch(int p, const Vector& rl, Vector& x, const Vector
     bounded |= is_bounded_above(hi[idx[a]]) || is_bounded_below(lo[idx[a]]);
   if (!bounded) {
     delta = rl;
-    solve_packed_cholesky(l, m, delta);
+    factors_.solve(p, delta);
   } else {
-    Eigen::MatrixXd lower = Eigen::MatrixXd::Zero(m, m);
-    for (int b = 0, k = 0; b < m; ++b)
-      for (int a = b; a < m; ++a) lower(a, b) = l[k++];
+    const Eigen::MatrixXd lower = factors_.lower(p);
     const Eigen::MatrixXd a = lower * lower.transpose();
     Vector dlo(m), dhi(m);
     for (int k = 0; k < m; ++k) {

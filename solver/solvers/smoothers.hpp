@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "core/box_qp.hpp"
+#include "solvers/small_cholesky_factors.hpp"
 
 namespace fosls {
 
@@ -23,7 +24,8 @@ class PointSmoother {
 
 /// Vertex-patch smoother: for each vertex, the exact minimiser over its displacement DOFs and
 /// both stress rows on every edge through it (≈ 14 unknowns), subject to the bounds. Patches
-/// without active bounds use a Cholesky factor computed once.
+/// without active bounds use a Cholesky factor computed once (in single precision where that
+/// provably keeps every correction a decrease of J: small_cholesky_factors.hpp).
 class PatchSmoother {
  public:
   /// Throws IndefiniteSystemError naming the patch when a local matrix is not positive
@@ -51,11 +53,13 @@ class PatchSmoother {
   void sweep_range(int begin, int end, Vector& x, Vector& r, const Vector& lo, const Vector& hi,
                    bool forward) const;
 
+  static SmallCholeskyFactors factorise_patches(const SparseMatrix& A,
+                                                const std::vector<std::vector<int>>& patches);
+
   const SparseMatrix& A_;
   const std::vector<std::vector<int>>& patches_;
   std::array<int, 2> split_;
-  std::vector<std::size_t> offset_;  ///< start of each patch's factor in factors_
-  std::vector<double> factors_;      ///< lower Cholesky factor, packed by columns
+  SmallCholeskyFactors factors_;  ///< of the patch matrices, in single precision when safe
 };
 
 /// Exact minimisation over the strip of triangles along the contact boundary, within the
