@@ -101,6 +101,19 @@ FoslsSpace::FoslsSpace(const Mesh& mesh, const std::vector<GroupRole>& roles,
     roles_[u_dof(v, 1)] = prescribed[v] ? DofRole::kFixed : DofRole::kFree;
   }
 
+  full_to_free_.assign(num_dofs(), -1);
+  for (int d = 0; d < num_dofs(); ++d)
+    if (roles_[d] != DofRole::kFixed) {
+      full_to_free_[d] = static_cast<int>(free_to_full_.size());
+      free_to_full_.push_back(d);
+    }
+}
+
+Eigen::SparseMatrix<double> FoslsSpace::rotation() const {
+  // Formed when asked for (setting up transfers, output), not kept: it is as large as a few
+  // vectors of the level and nothing in a solve's iteration uses it.
+  const Mesh& mesh = *mesh_;
+  const int nv = mesh.num_vertices(), ne = mesh.num_edges();
   std::vector<Eigen::Triplet<double>> q;
   q.reserve(num_dofs() + 2 * nv);
   auto block = [&q](int d, const Point& n) {
@@ -126,15 +139,9 @@ FoslsSpace::FoslsSpace(const Mesh& mesh, const std::vector<GroupRole>& roles,
       q.emplace_back(sigma_dof(e, 1), sigma_dof(e, 1), 1.0);
     }
   }
-  rotation_.resize(num_dofs(), num_dofs());
-  rotation_.setFromTriplets(q.begin(), q.end());
-
-  full_to_free_.assign(num_dofs(), -1);
-  for (int d = 0; d < num_dofs(); ++d)
-    if (roles_[d] != DofRole::kFixed) {
-      full_to_free_[d] = static_cast<int>(free_to_full_.size());
-      free_to_full_.push_back(d);
-    }
+  Eigen::SparseMatrix<double> rotation(num_dofs(), num_dofs());
+  rotation.setFromTriplets(q.begin(), q.end());
+  return rotation;
 }
 
 }  // namespace fosls

@@ -47,8 +47,9 @@ class FoslsSpace {
   /// Constraint direction n_v at a contact vertex.
   const Point& vertex_normal(int v) const { return vertex_normal_[v]; }
 
-  /// Rotation Q with x_cartesian = Q x_rotated (orthogonal, 2×2 blocks at contact DOFs).
-  const Eigen::SparseMatrix<double>& rotation() const { return rotation_; }
+  /// Rotation Q with x_cartesian = Q x_rotated (orthogonal, 2×2 blocks at contact DOFs),
+  /// formed on each call.
+  Eigen::SparseMatrix<double> rotation() const;
 
   int num_free() const { return static_cast<int>(free_to_full_.size()); }
   const std::vector<int>& free_to_full() const { return free_to_full_; }
@@ -60,7 +61,6 @@ class FoslsSpace {
   std::vector<DofRole> roles_;
   std::vector<char> contact_vertex_, contact_edge_;
   std::vector<Point> vertex_normal_;
-  Eigen::SparseMatrix<double> rotation_;
   std::vector<int> free_to_full_, full_to_free_;
 };
 
