@@ -63,8 +63,14 @@ class FoslsAssembler {
   const FoslsSpace& space_;
   const ProblemData& data_;
   double mu_ = 1.0;
-  double kappa_ = 0.5;                             ///< λ / (2λ + 2μ), → ½ as λ → ∞
-  std::vector<std::array<double, 6>> body_force_;  ///< scaled f at the 3 quadrature points
+  double kappa_ = 0.5;  ///< λ / (2λ + 2μ), → ½ as λ → ∞
+  /// Scaled f at quadrature point q (edge midpoint) of triangle t.
+  Eigen::Vector2d body_force(int t, int q) const {
+    if (body_force_.empty()) return Eigen::Vector2d::Zero();
+    return {body_force_[t][2 * q], body_force_[t][2 * q + 1]};
+  }
+  /// Scaled f at the 3 quadrature points of each triangle; empty when f = 0.
+  std::vector<std::array<double, 6>> body_force_;
   std::vector<double> vertex_gap_;
 };
 

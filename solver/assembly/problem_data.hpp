@@ -63,8 +63,8 @@ struct GroupData {
 struct ProblemData {
   ElasticMaterial material;
   FunctionalWeights weights;
-  std::array<ScalarFunction, 2> body_force;
-  std::vector<GroupData> groups;  ///< indexed like Mesh::group_names()
+  std::array<ScalarFunction, 2> body_force;  ///< an empty component is zero
+  std::vector<GroupData> groups;             ///< indexed like Mesh::group_names()
 
   std::vector<GroupRole> roles() const {
     std::vector<GroupRole> r;

@@ -50,7 +50,10 @@ ProblemData problem_data(const CaseSpec& spec, const Mesh& mesh) {
   d.material = {.mu = spec.material.mu, .lambda = spec.material.lambda};
   const Weights& w = spec.weights;
   d.weights = {.c1 = w.c1, .c2 = w.c2, .c3 = w.c3, .c4 = w.c4};
-  for (int i = 0; i < 2; ++i) d.body_force[i] = compile_scalar(spec.body_force[i]);
+  // A zero component stays empty: the assembler then stores no body force at all.
+  for (int i = 0; i < 2; ++i)
+    if (const Scalar& f = spec.body_force[i]; !f.is_constant() || f.value != 0.0)
+      d.body_force[i] = compile_scalar(f);
   d.groups.resize(mesh.group_names().size());  // unnamed groups: traction free
   for (const auto& [name, bc] : spec.boundary) {
     GroupData& g = d.groups[mesh.group_index(name)];
