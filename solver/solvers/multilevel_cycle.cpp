@@ -190,6 +190,34 @@ void MultilevelCycle::truncate_level(int j) {
   if (j > 1) level_truncated_[j - 1] = std::move(coarse);
 }
 
+namespace {
+
+/// A small set of indices out of [0, n): a bit per index and the sorted members, so that the
+/// position of a member costs a binary search and the set n / 8 bytes (two int maps of the fine
+/// size were a fifth of the transient at a solve's peak).
+class SparseIndexSet {
+ public:
+  explicit SparseIndexSet(int n) : in_(n, false) {}
+  void insert(int i) {
+    if (!in_[i]) in_[i] = true, members_.push_back(i);
+  }
+  /// Call after the last insert: positions follow the sorted order.
+  void finish() { std::sort(members_.begin(), members_.end()); }
+  /// Position of i among the members, −1 if it is not one.
+  int position(int i) const {
+    if (!in_[i]) return -1;
+    return static_cast<int>(std::lower_bound(members_.begin(), members_.end(), i) -
+                            members_.begin());
+  }
+  const std::vector<int>& members() const { return members_; }
+
+ private:
+  std::vector<bool> in_;
+  std::vector<int> members_;
+};
+
+}  // namespace
+
 void MultilevelCycle::truncation_correction(SparseMatrix& out) {
   // P̃ = P + F where F, the difference made by truncation, has few rows (the contact
   // boundary and the fine edges that carry moved flux), so
@@ -201,44 +229,58 @@ void MultilevelCycle::truncation_correction(SparseMatrix& out) {
   const SparseMatrix& p = hierarchy_.levels[top].prolongation;
   const std::vector<char>& truncated = level_truncated_[top];
   const int n = static_cast<int>(p.rows()), nc = static_cast<int>(p.cols());
-  std::vector<int> local(n, -1), rows;
-  std::vector<Eigen::Triplet<double>> tf;
-  auto add_f = [&](int row, int col, double value) {
-    if (local[row] < 0) local[row] = static_cast<int>(rows.size()), rows.push_back(row);
-    tf.emplace_back(local[row], col, value);
-  };
+  SparseIndexSet f_rows(n);
   for (int col = 0; col < nc; ++col) {
     for (SparseMatrix::InnerIterator it(p, col); it; ++it)
-      if (truncated[it.row()]) add_f(static_cast<int>(it.row()), col, -it.value());
+      if (truncated[it.row()]) f_rows.insert(static_cast<int>(it.row()));
     for (SparseMatrix::InnerIterator it(top_moves_, col); it; ++it)
-      add_f(static_cast<int>(it.row()), col, it.value());
+      f_rows.insert(static_cast<int>(it.row()));
   }
-  if (tf.empty()) {
+  f_rows.finish();
+  const std::vector<int>& rows = f_rows.members();
+  const int m = static_cast<int>(rows.size());
+  if (m == 0) {
     out = SparseMatrix(nc, nc);
     out.makeCompressed();
     return;
   }
-  const int m = static_cast<int>(rows.size());
+  std::vector<Eigen::Triplet<double>> tf;
+  for (int col = 0; col < nc; ++col) {
+    for (SparseMatrix::InnerIterator it(p, col); it; ++it)
+      if (truncated[it.row()]) tf.emplace_back(f_rows.position(it.row()), col, -it.value());
+    for (SparseMatrix::InnerIterator it(top_moves_, col); it; ++it)
+      tf.emplace_back(f_rows.position(it.row()), col, it.value());
+  }
   // The rows of P that A couples to F's rows, in a small row-major matrix.
-  std::vector<int> coupled(n, -1);
-  int num_coupled = 0;
+  SparseIndexSet coupled(n);
   for (int k = 0; k < m; ++k)
     for (SparseMatrix::InnerIterator it(qp_.A, rows[k]); it; ++it)
-      if (coupled[it.row()] < 0) coupled[it.row()] = num_coupled++;
+      coupled.insert(static_cast<int>(it.row()));
+  coupled.finish();
   std::vector<Eigen::Triplet<double>> tp;
   for (int col = 0; col < nc; ++col)
     for (SparseMatrix::InnerIterator it(p, col); it; ++it)
-      if (const int c = coupled[it.row()]; c >= 0) tp.emplace_back(c, col, it.value());
-  RowMajorMatrix p_rows(num_coupled, nc);
+      if (const int c = coupled.position(it.row()); c >= 0) tp.emplace_back(c, col, it.value());
+  RowMajorMatrix p_rows(static_cast<int>(coupled.members().size()), nc);
   p_rows.setFromTriplets(tp.begin(), tp.end());
+  std::vector<Eigen::Triplet<double>>().swap(tp);
+  // Rows `rows` of A P: row k of A is its column k (A is symmetric), times the rows of P, each
+  // row summed in a dense accumulator first (one entry per coarse column it reaches, not one
+  // per product).
   std::vector<Eigen::Triplet<double>> tap, taa;
-  // Rows `rows` of A P: row k of A is its column k (A is symmetric), times the rows of P.
+  Vector sum = Vector::Zero(nc);
+  std::vector<int> reached;
   for (int k = 0; k < m; ++k) {
     for (SparseMatrix::InnerIterator it(qp_.A, rows[k]); it; ++it) {
-      for (RowMajorMatrix::InnerIterator pt(p_rows, coupled[it.row()]); pt; ++pt)
-        tap.emplace_back(k, static_cast<int>(pt.col()), it.value() * pt.value());
-      if (int l = local[it.row()]; l >= 0) taa.emplace_back(l, k, it.value());
+      for (RowMajorMatrix::InnerIterator pt(p_rows, coupled.position(it.row())); pt; ++pt) {
+        const int col = static_cast<int>(pt.col());
+        if (sum[col] == 0.0) reached.push_back(col);
+        sum[col] += it.value() * pt.value();
+      }
+      if (const int l = f_rows.position(it.row()); l >= 0) taa.emplace_back(l, k, it.value());
     }
+    for (int col : reached) tap.emplace_back(k, col, sum[col]), sum[col] = 0.0;
+    reached.clear();
   }
   SparseMatrix rf(m, nc), rap(m, nc), aff(m, m);
   rf.setFromTriplets(tf.begin(), tf.end());
