@@ -110,7 +110,7 @@ const SparseMatrix& MultilevelCycle::matrix(int j) const {
   return j == hierarchy_.num_levels() - 1 ? qp_.A : *levels_[j]->A;
 }
 
-const SparseMatrix& MultilevelCycle::prolongation(int j) const {
+const TruncatedProlongation& MultilevelCycle::prolongation(int j) const {
   return truncated_prolongations_[j];
 }
 
@@ -119,7 +119,7 @@ void MultilevelCycle::set_truncation(const std::vector<char>& truncated) {
   truncated_ = truncated;
   const int top = hierarchy_.num_levels() - 1;
   level_truncated_.assign(top + 1, {});
-  truncated_prolongations_.assign(top + 1, SparseMatrix());
+  truncated_prolongations_.assign(top + 1, TruncatedProlongation());
   sn_weights_.assign(top + 1, {});
   if (top > 0) {
     level_truncated_[top] = truncated;
@@ -137,7 +137,6 @@ void MultilevelCycle::truncate_level(int j) {
   const Level& level = hierarchy_.levels[j];
   const std::vector<char>& truncated = level_truncated_[j];
   const SparseMatrix& a = matrix(j);
-  SparseMatrix& p = truncated_prolongations_[j];
   std::vector<char> coarse(hierarchy_.levels[j - 1].num_dofs, 0);
   std::vector<std::array<double, 2>>& weights = sn_weights_[j];
   weights.assign(level.links.size(), {0.0, 0.0});
@@ -180,13 +179,18 @@ void MultilevelCycle::truncate_level(int j) {
         corrections.emplace_back(path[m], link.coarse_sn, delta[m]);
     }
   }
-  // P̃ = P without the truncated rows, plus the flux moves, in storage of its exact size.
+  // P̃ = P without the truncated rows, plus the flux moves: applied from P on the finest level,
+  // elsewhere formed in storage of its exact size.
   SparseMatrix moves(level.prolongation.rows(), level.prolongation.cols());
   moves.setFromTriplets(corrections.begin(), corrections.end());
   moves.makeCompressed();
-  SparseMatrix truncated_p = sparse_sum(level.prolongation, moves, any ? &truncated : nullptr);
-  p.swap(truncated_p);
-  if (j == hierarchy_.num_levels() - 1) top_moves_.swap(moves);
+  if (j == hierarchy_.num_levels() - 1) {
+    truncated_prolongations_[j] = TruncatedProlongation::applied(
+        level.prolongation, any ? truncated : std::vector<char>{}, std::move(moves));
+  } else {
+    truncated_prolongations_[j] = TruncatedProlongation::formed(
+        sparse_sum(level.prolongation, moves, any ? &truncated : nullptr));
+  }
   if (j > 1) level_truncated_[j - 1] = std::move(coarse);
 }
 
@@ -228,12 +232,13 @@ void MultilevelCycle::truncation_correction(SparseMatrix& out) {
   const int top = hierarchy_.num_levels() - 1;
   const SparseMatrix& p = hierarchy_.levels[top].prolongation;
   const std::vector<char>& truncated = level_truncated_[top];
+  const SparseMatrix& top_moves = prolongation(top).moves();
   const int n = static_cast<int>(p.rows()), nc = static_cast<int>(p.cols());
   SparseIndexSet f_rows(n);
   for (int col = 0; col < nc; ++col) {
     for (SparseMatrix::InnerIterator it(p, col); it; ++it)
       if (truncated[it.row()]) f_rows.insert(static_cast<int>(it.row()));
-    for (SparseMatrix::InnerIterator it(top_moves_, col); it; ++it)
+    for (SparseMatrix::InnerIterator it(top_moves, col); it; ++it)
       f_rows.insert(static_cast<int>(it.row()));
   }
   f_rows.finish();
@@ -248,7 +253,7 @@ void MultilevelCycle::truncation_correction(SparseMatrix& out) {
   for (int col = 0; col < nc; ++col) {
     for (SparseMatrix::InnerIterator it(p, col); it; ++it)
       if (truncated[it.row()]) tf.emplace_back(f_rows.position(it.row()), col, -it.value());
-    for (SparseMatrix::InnerIterator it(top_moves_, col); it; ++it)
+    for (SparseMatrix::InnerIterator it(top_moves, col); it; ++it)
       tf.emplace_back(f_rows.position(it.row()), col, it.value());
   }
   // The rows of P that A couples to F's rows, in a small row-major matrix.
@@ -300,17 +305,14 @@ constexpr double kRetryCoarseShift = 1e-8;
 /// Makes a truncated coarse matrix definite, in place (no second copy of it is formed).
 /// With `edits`, every change is saved there, and a missing diagonal entry makes it return
 /// false with nothing changed; without, such an entry is inserted.
-bool regularise_truncated(SparseMatrix& a, const SparseMatrix& truncated_prolongation,
+bool regularise_truncated(SparseMatrix& a, const TruncatedProlongation& truncated_prolongation,
                           ReversibleEdits* edits) {
   // A coarse DOF whose basis function was truncated away entirely (its column of the
   // truncated prolongation is empty: under bisection, a U_n or S_n whose fine neighbourhood
   // was not refined) has a zero row and column — up to the rounding of the truncation
   // correction's update formula, which is cleared here; a unit diagonal keeps the level
   // definite and its correction (with zero restricted residual) exactly zero.
-  std::vector<char> vanished(a.rows(), 1);
-  for (int col = 0; col < truncated_prolongation.outerSize(); ++col)
-    for (SparseMatrix::InnerIterator it(truncated_prolongation, col); it; ++it)
-      if (it.value() != 0.0) vanished[col] = 0;
+  const std::vector<char> vanished = truncated_prolongation.vanished_columns();
   // Under bisection, truncated coarse functions can also become linearly dependent (a function
   // whose unrefined neighbourhood keeps only components that others share), and the level is
   // then only semi-definite. A relative diagonal shift of kCoarseShift makes it definite; the
@@ -398,7 +400,7 @@ void MultilevelCycle::rebuild_coarse_levels() {
     } else if (j == top - 1) {
       truncate_second_finest();
     } else {
-      SparseMatrix coarse = galerkin_product(matrix(j + 1), prolongation(j + 1));
+      SparseMatrix coarse = galerkin_product(matrix(j + 1), *prolongation(j + 1).matrix());
       level.truncated.swap(coarse);
       level.truncated.makeCompressed();
       level.A = &level.truncated;
@@ -536,9 +538,10 @@ void MultilevelCycle::recurse(int j, CycleShape shape, Vector& c, Vector& r, con
     for (int i = 0; i < c.size(); ++i) active[i] = is_at_bound(c[i], lo[i], hi[i]);
     set_truncation(active);
   }
-  const SparseMatrix& P = prolongation(j);
-  const int nc = static_cast<int>(P.cols());
-  Vector rc = P.transpose() * r;
+  const TruncatedProlongation& P = prolongation(j);
+  const int nc = P.cols();
+  Vector rc;
+  P.restrict_to(r, rc);
   Vector lo_c = Vector::Constant(nc, -kNoBound), hi_c = Vector::Constant(nc, kNoBound);
   if (constrained) project_obstacle(j, c, hi, hi_c);
   Vector cc = Vector::Zero(nc);
@@ -548,7 +551,8 @@ void MultilevelCycle::recurse(int j, CycleShape shape, Vector& c, Vector& r, con
   if (revisit_[j] && shape != CycleShape::kV)
     recurse(j - 1, shape == CycleShape::kF ? CycleShape::kV : shape, cc, rc, lo_c, hi_c,
             constrained);
-  Vector v = P * cc;
+  Vector v;
+  P.prolongate(cc, v);
   double alpha = 1.0;
   if (constrained) {
     // Safeguard: the projections make K_{j−1} ⊂ K_j exactly where contact normals agree
@@ -562,7 +566,7 @@ void MultilevelCycle::recurse(int j, CycleShape shape, Vector& c, Vector& r, con
     if (alpha < 1.0) ++stats_.safeguard_reductions;
   }
   if (alpha > 0.0) {
-    Vector change(v.size());
+    Vector& change = v;  // v becomes the change of c: one vector of the level fewer
     for (int i = 0; i < v.size(); ++i) {
       const double updated = std::clamp(c[i] + alpha * v[i], lo[i], hi[i]);
       change[i] = updated - c[i];

@@ -16,6 +16,7 @@
 #include "solvers/exact_box_qp.hpp"
 #include "solvers/reversible_edits.hpp"
 #include "solvers/smoothers.hpp"
+#include "solvers/truncated_prolongation.hpp"
 
 namespace fosls {
 
@@ -119,7 +120,7 @@ class MultilevelCycle {
   /// Forms the truncated matrix of the second-finest level, in the chain's storage when the
   /// correction stays within its pattern, else in its own.
   void truncate_second_finest();
-  const SparseMatrix& prolongation(int j) const;
+  const TruncatedProlongation& prolongation(int j) const;
 
   const BoxQp& qp_;
   const LevelHierarchy& hierarchy_;
@@ -134,9 +135,7 @@ class MultilevelCycle {
   /// finest level; S_n DOFs whose fine descendants are all truncated below it) and the
   /// truncated prolongation P̃_j.
   std::vector<std::vector<char>> level_truncated_;
-  std::vector<SparseMatrix> truncated_prolongations_;
-  /// The flux moves of the finest truncated prolongation (P̃ − P off the truncated rows).
-  SparseMatrix top_moves_;
+  std::vector<TruncatedProlongation> truncated_prolongations_;
   std::unique_ptr<SparseBoxQpSolver> coarse_solver_;
   std::shared_ptr<GalerkinChain> chain_;
   /// Edits of the chain's second-finest matrix made by the truncation (restored on change).
