@@ -16,10 +16,12 @@
 #include "case_job_runner.hpp"
 #include "job_process_protocol.hpp"
 #include "process/child_process.hpp"
+#include "process/malloc_arenas.hpp"
 
 int main() {
   using namespace fosls::service;
   fosls::die_with_parent();
+  fosls::use_one_malloc_arena();
   // Nothing a library prints can corrupt the answer: fd 1 now writes to stderr.
   const int protocol_fd = fosls::take_stdout_for_answer();
   try {

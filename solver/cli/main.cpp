@@ -25,6 +25,7 @@
 #include "cli/exit_codes.hpp"
 #include "cli/schema_command.hpp"
 #include "cli/solve_command.hpp"
+#include "process/malloc_arenas.hpp"
 
 int main(int argc, char** argv) {
   using namespace fosls;
@@ -34,6 +35,7 @@ int main(int argc, char** argv) {
   // main, so the program starts itself again with it set, unless the caller chose one.
   if (!std::getenv("OMP_WAIT_POLICY") && setenv("OMP_WAIT_POLICY", "passive", 1) == 0)
     execv("/proc/self/exe", argv);  // returns only on failure: then run as we are
+  use_one_malloc_arena();
   try {
     CLI::App app{"FOSLS solver for 2D frictionless elastic contact (Signorini problems)",
                  "fosls-contact"};
