@@ -13,7 +13,7 @@ namespace fosls {
 struct CaseLimits {
   int max_refinements = 8;
   /// DOFs of the finest level. 10 million: level 9 of the square (8.4M) fits, and mmg needs
-  /// about 1 KB per unknown (docs/performance.md); whether a case fits the machine is the
+  /// about 0.8 KB per unknown (docs/performance.md); whether a case fits the machine is the
   /// memory estimate's question (the service refuses what exceeds a job's budget).
   long long max_dofs = 10'000'000;
   std::size_t max_text_bytes = 4u << 20;  ///< msh text

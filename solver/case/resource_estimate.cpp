@@ -9,15 +9,15 @@ double bytes_per_unknown(SolverMethod method) {
   // tests/benchmarks/memory_calibration.py, fitted on relative error; see docs/case-format.md.
   switch (method) {
     case SolverMethod::kMmg:
-      return 944;
+      return 766;
     case SolverMethod::kTnnmg:
-      return 973;
+      return 783;
     case SolverMethod::kPdas:
-      return 2077;
+      return 2031;
     case SolverMethod::kPgs:
-      return 595;
+      return 482;
   }
-  return 2077;
+  return 2031;
 }
 
 long long unknowns_after_refinement(long long triangles, long long edges, long long vertices,
