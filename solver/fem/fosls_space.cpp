@@ -1,5 +1,6 @@
 #include "fem/fosls_space.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <stdexcept>
 
@@ -102,6 +103,8 @@ FoslsSpace::FoslsSpace(const Mesh& mesh, const std::vector<GroupRole>& roles,
   }
 
   full_to_free_.assign(num_dofs(), -1);
+  // Reserved exactly: grown by push_back it kept up to twice its size on every level.
+  free_to_full_.reserve(num_dofs() - std::count(roles_.begin(), roles_.end(), DofRole::kFixed));
   for (int d = 0; d < num_dofs(); ++d)
     if (roles_[d] != DofRole::kFixed) {
       full_to_free_[d] = static_cast<int>(free_to_full_.size());
