@@ -42,6 +42,7 @@ json statistics_json(const SolverReport& report) {
           {"accelerated_steps", report.accelerated_steps},
           {"galerkin_rebuilds", c.galerkin_rebuilds},
           {"safeguard_reductions", c.safeguard_reductions},
+          {"double_precision_smoothers", c.double_precision_smoothers},
           {"galerkin_s", c.galerkin_s},
           {"smoothing_s", c.smoothing_s},
           {"strip_s", c.strip_s},

@@ -51,6 +51,10 @@ ObjectRulePtr statistics_rule() {
                     "coarse matrices rebuilt for new active sets (truncation)"),
        output_field("safeguard_reductions", count(), "1",
                     "coarse corrections shortened to stay feasible (curved contact boundaries)"),
+       output_field("double_precision_smoothers", count(), "1",
+                    "vertex-patch smoothers built with factors in double precision because "
+                    "single precision was not provably monotone (docs/method.md §4.1; 0 on "
+                    "every benchmark)"),
        output_field("galerkin_s", number(), "s", "time of the Galerkin rebuilds"),
        output_field("smoothing_s", number(), "s", "time of the vertex-patch or pointwise sweeps"),
        output_field("strip_s", number(), "s", "time of the contact-strip solves"),

@@ -375,10 +375,11 @@ void MultilevelCycle::make_smoother(int j) {
   LevelState& s = *levels_[j];
   s.patch.reset();
   s.point.reset();
-  if (options_.smoother == SmootherType::kPatch)
+  if (options_.smoother == SmootherType::kPatch) {
     s.patch = std::make_unique<PatchSmoother>(matrix(j), hierarchy_.levels[j].patches,
                                               hierarchy_.levels[j].patch_split);
-  else
+    if (!s.patch->single_precision()) ++stats_.double_precision_smoothers;
+  } else
     s.point = std::make_unique<PointSmoother>(matrix(j));
   s.strip.reset();
   if (options_.strip && !hierarchy_.levels[j].contact_strip.empty())

@@ -47,6 +47,8 @@ struct MultilevelOptions {
 struct CycleStatistics {
   int galerkin_rebuilds = 0;
   int safeguard_reductions = 0;  ///< prolongated corrections that had to be shortened
+  /// Patch smoothers whose factors had to stay in double precision (small_cholesky_factors.hpp).
+  int double_precision_smoothers = 0;
   double galerkin_s = 0.0;
   double smoothing_s = 0.0;  ///< vertex-patch or pointwise sweeps
   double strip_s = 0.0;      ///< contact-strip solves

@@ -1,5 +1,6 @@
 #include "solvers/small_cholesky_factors.hpp"
 
+#include <atomic>
 #include <cmath>
 
 namespace fosls {
@@ -25,11 +26,12 @@ void solve_packed(const T* l, int m, Vector& y) {
   }
 }
 
-/// Bound on ε = ‖L⁻¹(L_f L_fᵀ − L Lᵀ)L⁻ᵀ‖₂ for L_f = L rounded to float: with G = L⁻¹(L_f − L),
-/// L⁻¹(L_f L_fᵀ − L Lᵀ)L⁻ᵀ = G + Gᵀ + G Gᵀ.
-/// L_f − L is lower triangular, so column b of G has rows b … m−1 only: forward substitution
-/// from row b, a sixth of m³ as the factorisation itself (a general solve costs three times that).
-double single_rounding_bound(const Eigen::MatrixXd& l) {
+}  // namespace
+
+// With G = L⁻¹(L_f − L), L⁻¹(L_f L_fᵀ − L Lᵀ)L⁻ᵀ = G + Gᵀ + G Gᵀ. L_f − L is lower
+// triangular, so column b of G has rows b … m−1 only: forward substitution from row b, about
+// m³/6 multiply-adds like the factorisation itself (a general solve costs three times that).
+double SmallCholeskyFactors::rounding_bound(const Eigen::MatrixXd& l) {
   const int m = static_cast<int>(l.rows());
   double norm2 = 0.0;
   Eigen::VectorXd g(m);
@@ -45,8 +47,6 @@ double single_rounding_bound(const Eigen::MatrixXd& l) {
   return 2 * n + n * n;
 }
 
-}  // namespace
-
 SmallCholeskyFactors::SmallCholeskyFactors(const std::vector<int>& sizes,
                                            const std::function<void(int, Eigen::MatrixXd&)>& fill,
                                            int& failed)
@@ -57,7 +57,8 @@ SmallCholeskyFactors::SmallCholeskyFactors(const std::vector<int>& sizes,
   failed = -1;
   if (factorise(sizes, fill, single_, failed) || failed >= 0) return;
   // A matrix too ill-conditioned for a rounded factor: all of them in double (not seen on
-  // the benchmarks; one storage type keeps the solve loop simple).
+  // the benchmarks; one storage type keeps the solve loop simple). The double pass also finds
+  // an indefinite matrix the skipped part of the first may have held.
   std::vector<float>().swap(single_);
   single_precision_ = false;
   factorise(sizes, fill, double_, failed);
@@ -69,12 +70,14 @@ bool SmallCholeskyFactors::factorise(const std::vector<int>& sizes,
                                      std::vector<T>& out, int& failed) {
   out.resize(offset_.back());
   const int count = static_cast<int>(sizes.size());
-  bool within = true;
+  // Once one bound fails the factors go to double: the rest of this pass is skipped.
+  std::atomic<bool> within{true};
 #pragma omp parallel
   {
     Eigen::MatrixXd block;
-#pragma omp for schedule(dynamic, 256) reduction(&& : within)
+#pragma omp for schedule(dynamic, 256)
     for (int k = 0; k < count; ++k) {
+      if (!within.load(std::memory_order_relaxed)) continue;
       const int m = sizes[k];
       block.setZero(m, m);
       fill(k, block);
@@ -86,13 +89,13 @@ bool SmallCholeskyFactors::factorise(const std::vector<int>& sizes,
       }
       block.triangularView<Eigen::StrictlyUpper>().setZero();
       if constexpr (sizeof(T) < sizeof(double))
-        within = within && single_rounding_bound(block) <= kMaxSinglePerturbation;
+        if (!(rounding_bound(block) <= kMaxSinglePerturbation)) within = false;
       T* packed = out.data() + offset_[k];
       for (int b = 0; b < m; ++b)
         for (int a = b; a < m; ++a) *packed++ = static_cast<T>(block(a, b));
     }
   }
-  return within;
+  return within.load();
 }
 
 void SmallCholeskyFactors::solve(int k, Vector& y) const {

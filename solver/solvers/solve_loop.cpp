@@ -86,6 +86,11 @@ class PgsStep : public Step {
     else
       point_->sweep(x, r, qp_.lower, qp_.upper, true);
   }
+  CycleStatistics statistics() const override {
+    CycleStatistics s;
+    s.double_precision_smoothers = patch_ && !patch_->single_precision() ? 1 : 0;
+    return s;
+  }
 
  private:
   const BoxQp& qp_;

@@ -4,6 +4,7 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <random>
 
 namespace fosls {
@@ -72,6 +73,58 @@ TEST(SmallCholeskyFactors, OneIllConditionedPatchKeepsAllFactorsInDouble) {
   EXPECT_EQ(f.bytes(), 21 * 105 * sizeof(double));
   const Vector r = Vector::LinSpaced(14, -1.0, 2.0);
   for (int k = 0; k < 21; ++k) EXPECT_NEAR(relative_decrease(matrices[k], f, k, r), 1.0, 1e-3);
+}
+
+/// ε = ‖L⁻¹(L_f L_fᵀ − L Lᵀ)L⁻ᵀ‖₂ computed exactly (eigenvalues of the symmetric matrix).
+double exact_rounding_perturbation(const Eigen::MatrixXd& a) {
+  const Eigen::MatrixXd l = a.llt().matrixL();
+  const Eigen::MatrixXd lf = l.cast<float>().cast<double>();
+  const Eigen::MatrixXd linv =
+      l.triangularView<Eigen::Lower>().solve(Eigen::MatrixXd::Identity(a.rows(), a.cols()));
+  const Eigen::MatrixXd w = linv * (lf * lf.transpose() - l * l.transpose()) * linv.transpose();
+  return Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd>(w).eigenvalues().cwiseAbs().maxCoeff();
+}
+
+TEST(SmallCholeskyFactors, TheRoundingBoundHoldsAndIsNotFarOff) {
+  for (double condition : {1e2, 1e4, 1e6, 1e8}) {
+    for (unsigned seed = 0; seed < 10; ++seed) {
+      const Eigen::MatrixXd a = spd_with_condition(14, condition, seed);
+      const double bound = SmallCholeskyFactors::rounding_bound(Eigen::MatrixXd(a.llt().matrixL()));
+      const double exact = exact_rounding_perturbation(a);
+      EXPECT_GE(bound, exact) << condition << " " << seed;
+      EXPECT_LE(bound, 30 * exact) << condition << " " << seed;
+    }
+  }
+}
+
+/// The first condition 10^(k/4) whose matrix has a rounding bound above `threshold`.
+double first_condition_with_bound_above(double threshold, unsigned seed) {
+  for (int k = 8; k < 60; ++k) {
+    const double condition = std::pow(10.0, k / 4.0);
+    const Eigen::MatrixXd l = spd_with_condition(14, condition, seed).llt().matrixL();
+    if (SmallCholeskyFactors::rounding_bound(l) > threshold) return condition;
+  }
+  return 0.0;
+}
+
+TEST(SmallCholeskyFactors, TheSwitchToDoubleIsAtTheThresholdWhateverThreadFindsIt) {
+  // 600 matrices: more than two chunks of the factorisation's dynamic schedule, so with two
+  // threads the matrix that decides lies in another thread's share than the first ones.
+  const double limit = SmallCholeskyFactors::kMaxSinglePerturbation;
+  const double above = first_condition_with_bound_above(limit, 7);
+  ASSERT_GT(above, 0.0);
+  const double below = above / std::pow(10.0, 0.25);
+  ASSERT_LE(SmallCholeskyFactors::rounding_bound(spd_with_condition(14, below, 7).llt().matrixL()),
+            limit);
+  for (const double condition : {below, above}) {
+    std::vector<Eigen::MatrixXd> matrices;
+    for (int k = 0; k < 600; ++k) matrices.push_back(spd_with_condition(14, 1e3, k));
+    matrices[450] = spd_with_condition(14, condition, 7);
+    int failed = 0;
+    const SmallCholeskyFactors f = factorise(matrices, failed);
+    EXPECT_EQ(failed, -1);
+    EXPECT_EQ(f.single_precision(), condition == below) << condition;
+  }
 }
 
 TEST(SmallCholeskyFactors, NamesTheFirstIndefiniteMatrix) {
