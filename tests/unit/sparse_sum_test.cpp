@@ -3,23 +3,12 @@
 
 #include <gtest/gtest.h>
 
-#include <random>
+#include "random_sparse.hpp"
 
 namespace fosls {
 namespace {
 
-SparseMatrix random_sparse(int rows, int cols, double density, unsigned seed) {
-  std::mt19937 rng(seed);
-  std::uniform_real_distribution<double> u(0.0, 1.0);
-  std::vector<Eigen::Triplet<double>> t;
-  for (int i = 0; i < rows; ++i)
-    for (int j = 0; j < cols; ++j)
-      if (u(rng) < density) t.emplace_back(i, j, u(rng) - 0.5);
-  SparseMatrix m(rows, cols);
-  m.setFromTriplets(t.begin(), t.end());
-  m.makeCompressed();
-  return m;
-}
+using testing::random_sparse;
 
 TEST(SparseSum, EqualsEigensSumWithExactStorage) {
   const SparseMatrix a = random_sparse(60, 40, 0.2, 1), b = random_sparse(60, 40, 0.05, 2);
