@@ -234,12 +234,19 @@ void MultilevelCycle::truncation_correction(SparseMatrix& out) {
   const std::vector<char>& truncated = level_truncated_[top];
   const SparseMatrix& top_moves = prolongation(top).moves();
   const int n = static_cast<int>(p.rows()), nc = static_cast<int>(p.cols());
+  // F's entries in one pass over P, by fine row first, then renumbered to F's rows.
   SparseIndexSet f_rows(n);
+  std::vector<Eigen::Triplet<double>> tf;
   for (int col = 0; col < nc; ++col) {
     for (SparseMatrix::InnerIterator it(p, col); it; ++it)
-      if (truncated[it.row()]) f_rows.insert(static_cast<int>(it.row()));
-    for (SparseMatrix::InnerIterator it(top_moves, col); it; ++it)
+      if (truncated[it.row()]) {
+        f_rows.insert(static_cast<int>(it.row()));
+        tf.emplace_back(static_cast<int>(it.row()), col, -it.value());
+      }
+    for (SparseMatrix::InnerIterator it(top_moves, col); it; ++it) {
       f_rows.insert(static_cast<int>(it.row()));
+      tf.emplace_back(static_cast<int>(it.row()), col, it.value());
+    }
   }
   f_rows.finish();
   const std::vector<int>& rows = f_rows.members();
@@ -249,13 +256,7 @@ void MultilevelCycle::truncation_correction(SparseMatrix& out) {
     out.makeCompressed();
     return;
   }
-  std::vector<Eigen::Triplet<double>> tf;
-  for (int col = 0; col < nc; ++col) {
-    for (SparseMatrix::InnerIterator it(p, col); it; ++it)
-      if (truncated[it.row()]) tf.emplace_back(f_rows.position(it.row()), col, -it.value());
-    for (SparseMatrix::InnerIterator it(top_moves, col); it; ++it)
-      tf.emplace_back(f_rows.position(it.row()), col, it.value());
-  }
+  for (auto& t : tf) t = Eigen::Triplet<double>(f_rows.position(t.row()), t.col(), t.value());
   // The rows of P that A couples to F's rows, in a small row-major matrix.
   SparseIndexSet coupled(n);
   for (int k = 0; k < m; ++k)
