@@ -22,7 +22,9 @@ nlohmann::json run_example(const std::string& name, int steps = -1, double theta
   if (theta > 0.0) j["adaptivity"]["theta"] = theta;
   const CaseReadResult read = read_case(j);
   EXPECT_TRUE(read.spec) << name;
-  return run_case(*read.spec, {.want_vtu = false}).result;
+  RunControl control;
+  control.want_vtu = false;
+  return run_case(*read.spec, control).result;
 }
 
 /// Steps made, estimator falling by at least 5 % per step, bounded iterations.

@@ -73,7 +73,9 @@ TEST(DorflerMarking, TheMarkedSetIsMinimalOnRealIndicators) {
     std::vector<char> taken(e.indicators.size(), 0);
     for (int t : marked) taken[t] = 1;
     for (std::size_t t = 0; t < taken.size(); ++t) {
-      if (!taken[t]) EXPECT_LE(e.indicators[t], smallest_taken);
+      if (!taken[t]) {
+        EXPECT_LE(e.indicators[t], smallest_taken);
+      }
     }
   }
 }
