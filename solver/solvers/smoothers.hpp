@@ -42,9 +42,11 @@ class PatchSmoother {
   /// Whether the patch factors are kept in single precision (small_cholesky_factors.hpp).
   bool single_precision() const { return factors_.single_precision(); }
 
-  /// Blocks with fewer patches are swept on one thread: their sweep takes less than the
-  /// threads' meeting.
-  static constexpr int kMinParallelPatches = 2000;
+  /// Blocks with fewer patches are swept on one thread. 250 patches take ≈ 0.5 ms, far more
+  /// than the threads' meeting; lowering this from 2000 made the square 4–8 % faster at levels
+  /// 4–7 (the W-cycle's small levels are visited often), iterates bit for bit the same
+  /// (docs/performance.md, "Small levels on two threads").
+  static constexpr int kMinParallelPatches = 250;
 
  private:
   /// Minimises over patch p given its current local residual; returns the change of x there.
