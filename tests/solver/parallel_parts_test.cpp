@@ -94,6 +94,29 @@ std::vector<char> touched(const SparseMatrix& a, const std::vector<std::vector<i
   return rows;
 }
 
+TEST(ParallelParts, ResidualProductIsEigensAndThreadIndependent) {
+  // Above the 20 000-column threshold, so that the two threads split the entries.
+  const Discretization disc = square(4);
+  const SparseMatrix& a = disc.problem().qp.A;
+  ASSERT_GT(a.cols(), 20000);
+  std::mt19937 rng(3);
+  std::uniform_real_distribution<double> u(-1.0, 1.0);
+  Vector x(a.cols());
+  for (int i = 0; i < x.size(); ++i) x[i] = u(rng);
+  auto product = [&](int threads) {
+    return with_threads(threads, [&] {
+      Vector y;
+      symmetric_multiply(a, x, y);
+      return y;
+    });
+  };
+  const Vector one = product(1), two = product(2), three = product(3);
+  EXPECT_TRUE(identical(one, two));
+  EXPECT_TRUE(identical(one, three));
+  const Vector reference = a * x;
+  EXPECT_LE((one - reference).norm(), 1e-14 * reference.norm());
+}
+
 TEST(ParallelParts, PatchBlocksShareNoEntryAndSplitTheWorkEvenly) {
   const Discretization disc = square();
   const LevelHierarchy h = disc.build_level_hierarchy();
