@@ -43,9 +43,9 @@ class PatchSmoother {
   bool single_precision() const { return factors_.single_precision(); }
 
   /// Blocks with fewer patches are swept on one thread. 250 patches take ≈ 0.5 ms, far more
-  /// than the threads' meeting; lowering this from 2000 made the square 4–8 % faster at levels
-  /// 4–7 (the W-cycle's small levels are visited often), iterates bit for bit the same
-  /// (docs/performance.md, "Small levels on two threads").
+  /// than the threads' meeting; lowering this from 2000 made the square 5–7 % faster at levels
+  /// 5–7 on two threads (the W-cycle's small levels are visited often), iterates bit for bit
+  /// the same (docs/performance.md, "Small levels on two threads").
   static constexpr int kMinParallelPatches = 250;
 
  private:
