@@ -7,6 +7,15 @@
 
 namespace fosls {
 
+std::pair<int, int> entry_balanced_columns(const int* outer, int n, int share, int shares) {
+  auto start = [&](int k) {
+    if (k >= shares) return n;
+    const long long target = static_cast<long long>(outer[n]) * k / shares;
+    return static_cast<int>(std::lower_bound(outer, outer + n, target) - outer);
+  };
+  return {start(share), start(share + 1)};
+}
+
 void symmetric_multiply(const SparseMatrix& A, const Vector& x, Vector& y) {
   // For symmetric A, row i of A equals column i: each output entry is a column dot product,
   // which parallelises without write conflicts. Each thread takes an equal share of the
@@ -21,14 +30,8 @@ void symmetric_multiply(const SparseMatrix& A, const Vector& x, Vector& y) {
   const int threads = n > 20000 ? std::max(1, omp_get_max_threads()) : 1;
 #pragma omp parallel num_threads(threads)
   {
-    const int t = omp_get_thread_num(), nt = omp_get_num_threads();
-    const long long nnz = outer[n];
-    // Column ranges [begin, end) holding the t-th share of the entries.
-    auto start = [&](int share) {
-      const long long target = nnz * share / nt;
-      return static_cast<int>(std::lower_bound(outer, outer + n, target) - outer);
-    };
-    const int begin = start(t), end = t + 1 == nt ? n : start(t + 1);
+    const auto [begin, end] =
+        entry_balanced_columns(outer, n, omp_get_thread_num(), omp_get_num_threads());
     for (int i = begin; i < end; ++i) {
       double s = 0.0;
       for (int k = outer[i]; k < outer[i + 1]; ++k) s += val[k] * x[inner[k]];

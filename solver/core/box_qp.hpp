@@ -5,6 +5,7 @@
 #include <Eigen/Core>
 #include <Eigen/Sparse>
 #include <limits>
+#include <utility>
 
 namespace fosls {
 
@@ -41,6 +42,12 @@ struct BoxQp {
   /// Whether lower ≤ x ≤ upper holds exactly.
   bool feasible(const Vector& x) const;
 };
+
+/// The columns [begin, end) of share `share` of `shares` when a compressed sparse matrix with
+/// outer index `outer` (n + 1 entries) is cut into shares of about equal entry counts: the shares
+/// cover 0..n in order without gap or overlap (some may be empty), each within one column's
+/// entries of nnz / shares.
+std::pair<int, int> entry_balanced_columns(const int* outer, int n, int share, int shares);
 
 /// y = A x using both cores (A symmetric, column-major: y_i = Σ_j A_ji x_j by columns).
 void symmetric_multiply(const SparseMatrix& A, const Vector& x, Vector& y);

@@ -105,16 +105,54 @@ TEST(ParallelParts, ResidualProductIsEigensAndThreadIndependent) {
   for (int i = 0; i < x.size(); ++i) x[i] = u(rng);
   auto product = [&](int threads) {
     return with_threads(threads, [&] {
-      Vector y;
+      // NaN where a share would leave an entry unwritten.
+      Vector y = Vector::Constant(a.cols(), std::numeric_limits<double>::quiet_NaN());
       symmetric_multiply(a, x, y);
       return y;
     });
   };
+  // Two threads must really run, or the comparison below would hold trivially.
+  ASSERT_GE(with_threads(2, [] { return omp_get_max_threads(); }), 2);
   const Vector one = product(1), two = product(2), three = product(3);
   EXPECT_TRUE(identical(one, two));
   EXPECT_TRUE(identical(one, three));
   const Vector reference = a * x;
   EXPECT_LE((one - reference).norm(), 1e-14 * reference.norm());
+}
+
+/// Checks that the shares of `outer` cover 0..n in order and hold nnz / shares entries each,
+/// up to one column.
+void expect_balanced_cover(const std::vector<int>& outer, int shares) {
+  const int n = static_cast<int>(outer.size()) - 1;
+  int covered = 0, widest_column = 0;
+  for (int i = 0; i < n; ++i) widest_column = std::max(widest_column, outer[i + 1] - outer[i]);
+  for (int t = 0; t < shares; ++t) {
+    const auto [begin, end] = entry_balanced_columns(outer.data(), n, t, shares);
+    EXPECT_EQ(begin, covered) << "share " << t << " of " << shares;
+    EXPECT_LE(begin, end);
+    covered = end;
+    const double entries = outer[end] - outer[begin], fair = double(outer[n]) / shares;
+    EXPECT_LE(std::abs(entries - fair), widest_column + 1.0) << "share " << t << " of " << shares;
+  }
+  EXPECT_EQ(covered, n);
+}
+
+TEST(ParallelParts, EntryBalancedSharesCoverEveryColumnOnce) {
+  // Columns of 4 entries then of 2 (the u and σ DOFs of a FOSLS matrix), empty columns at the
+  // start, in the middle and at the end, fewer columns than shares, and no entries at all.
+  std::vector<int> uneven{0};
+  for (int i = 0; i < 3; ++i) uneven.push_back(0);
+  for (int i = 0; i < 40; ++i) uneven.push_back(uneven.back() + (i < 20 ? 4 : 2));
+  for (int i = 0; i < 5; ++i) uneven.push_back(uneven.back());
+  for (int i = 0; i < 10; ++i) uneven.push_back(uneven.back() + 3);
+  for (int i = 0; i < 4; ++i) uneven.push_back(uneven.back());
+  for (int shares : {1, 2, 3, 7, 64}) expect_balanced_cover(uneven, shares);
+  expect_balanced_cover({0, 5, 9}, 5);
+  expect_balanced_cover({0, 0, 0, 0}, 2);
+  // Two shares of the uneven columns: the first ends where half the entries are, well before
+  // half the columns (the point of balancing by entries).
+  const int n = static_cast<int>(uneven.size()) - 1;
+  EXPECT_LT(entry_balanced_columns(uneven.data(), n, 0, 2).second, n / 2);
 }
 
 TEST(ParallelParts, PatchBlocksShareNoEntryAndSplitTheWorkEvenly) {
@@ -127,10 +165,29 @@ TEST(ParallelParts, PatchBlocksShareNoEntryAndSplitTheWorkEvenly) {
   EXPECT_GE(end1 - end0, PatchSmoother::kMinParallelPatches);
   EXPECT_GE(end1 - end0, 0.9 * end0) << "unbalanced blocks";
   EXPECT_LE(np - end1, 0.05 * np) << "separator too large";
-  const auto first = touched(disc.problem().qp.A, level.patches, 0, end0);
-  const auto second = touched(disc.problem().qp.A, level.patches, end0, end1);
-  for (int i = 0; i < disc.problem().qp.size(); ++i)
-    ASSERT_FALSE(first[i] && second[i]) << "row " << i << " touched by both blocks";
+}
+
+TEST(ParallelParts, PatchBlocksShareNoEntryOnEveryLevelSweptOnTwoThreads) {
+  // Coarse levels are swept on two threads too once both blocks reach kMinParallelPatches; their
+  // matrices are Galerkin products (truncation only removes entries), so the blocks must be
+  // independent in P_jᵀ A P_j, not only in the finest A.
+  const Discretization disc = square();
+  const LevelHierarchy h = disc.build_level_hierarchy();
+  SparseMatrix a = disc.problem().qp.A;
+  int checked = 0;
+  for (int j = h.num_levels() - 1; j >= 0; --j) {
+    const Level& level = h.levels[j];
+    const auto [end0, end1] = level.patch_split;
+    if (std::min(end0, end1 - end0) >= PatchSmoother::kMinParallelPatches) {
+      ++checked;
+      const auto first = touched(a, level.patches, 0, end0);
+      const auto second = touched(a, level.patches, end0, end1);
+      for (int i = 0; i < a.rows(); ++i)
+        ASSERT_FALSE(first[i] && second[i]) << "level " << j << ", row " << i;
+    }
+    if (j > 0) a = galerkin_product(a, level.prolongation);
+  }
+  EXPECT_GE(checked, 3) << "the finest level and at least two coarse levels";
 }
 
 TEST(ParallelParts, TwoThreadPatchSweepIsTheSerialSweep) {
