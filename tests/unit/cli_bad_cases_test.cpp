@@ -366,4 +366,29 @@ TEST(CliExamples, ListAndPrintTheShippedFiles) {
   fs::remove_all(work);
 }
 
+TEST(CliSolve, MeshesTheGeometryOnce) {
+  // A solve meshes its geometry once: the errors that need the coarse mesh come from the run
+  // itself (the rows above), not from a separate validation that started gmsh a second time.
+  const fs::path work = work_folder("fosls_cli_meshes_once");
+  fs::create_directories(work);
+  const fs::path count = work / "mesher_runs.txt", script = work / "counting_mesher.sh";
+  fs::remove(count);
+  const std::string mesher = std::string(FOSLS_BIN_DIR) + "/fosls-mesher";
+  std::ofstream(script) << "#!/bin/sh\necho run >> '" << count.string() << "'\nexec '" << mesher
+                        << "' \"$@\"\n";
+  fs::permissions(script, fs::perms::owner_all);
+  json c = valid_case();
+  c["mesh"] = json::parse(R"({"geometry": {"points": [[0, 0], [1, 0], [1, 1], [0, 1]],
+      "curves": [{"type": "line", "points": [0, 1]}, {"type": "line", "points": [1, 2]},
+                 {"type": "line", "points": [2, 3]}, {"type": "line", "points": [3, 0]}],
+      "groups": {"bottom": [0], "right": [1], "top": [2], "left": [3]}}, "size": 0.5})");
+  const fs::path case_path = work / "case.json";
+  std::ofstream(case_path) << c.dump(2);
+  ::setenv("FOSLS_MESHER", script.c_str(), 1);
+  const ProcessResult r = run_program({"solve", case_path.string(), "--quiet"}, work);
+  ::unsetenv("FOSLS_MESHER");
+  EXPECT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_EQ(read_file(count), "run\n");
+}
+
 }  // namespace
