@@ -108,7 +108,8 @@ json stopping_json(const SolverReport& report, const SolverOptions& options) {
   const char* converged_by = report.converged_by == ConvergedBy::kKktResidual ? "kkt_residual"
                              : report.converged_by == ConvergedBy::kAlgebraicError
                                  ? "algebraic_error"
-                                 : "none";
+                             : report.converged_by == ConvergedBy::kRoundingLevel ? "rounding_level"
+                                                                                  : "none";
   return {{"rule",
            options.stopping == StoppingRule::kDiscretisation ? "discretisation" : "kkt_residual"},
           {"fraction", options.discretisation_fraction},
@@ -156,6 +157,14 @@ std::vector<std::string> result_warnings(const SolverReport& report, const Solve
   if (const StopReason why = stop_reason(report);
       why == StopReason::kMaxIterations || why == StopReason::kTimeLimit)
     warnings.push_back(convergence_message(report, options));
+  if (report.converged_by == ConvergedBy::kRoundingLevel)
+    warnings.push_back(
+        "solver.tolerance " + short_number(options.tolerance) +
+        " is below what double precision can show for this problem: the KKT residual reached " +
+        short_number(relative_kkt(report)) +
+        " of its initial value, within 10 times the rounding level of the residual, and the "
+        "solve stopped there as converged (docs/method.md §5.2): further iterations would only "
+        "move the iterate within rounding. A tolerance of 1e-8 or \"discretisation\" is enough");
   if (report.cycle.safeguard_reductions > 0)
     warnings.push_back(
         "coarse corrections were shortened " + std::to_string(report.cycle.safeguard_reductions) +

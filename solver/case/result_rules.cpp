@@ -150,10 +150,13 @@ ObjectRulePtr stopping_rule() {
                     "solver.tolerance as a rule: a number is kkt_residual, \"discretisation\" "
                     "also stops at the discretisation error (docs/method.md §5.1)"),
        output_field("fraction", number(), "1", "solver.discretisation_fraction used"),
-       output_field("converged_by", choice_value({"kkt_residual", "algebraic_error", "none"}), "",
+       output_field("converged_by",
+                    choice_value({"kkt_residual", "algebraic_error", "rounding_level", "none"}), "",
                     "the test the last iterate met: the KKT residual reached tolerance, or the "
-                    "algebraic error estimate fell to fraction · estimator; none when the solve "
-                    "did not converge"),
+                    "algebraic error estimate fell to fraction · estimator, or the KKT residual "
+                    "reached 10 times its rounding level ε‖|A||x| + |b|‖ before the tolerance "
+                    "(which was then below what double precision can show; docs/method.md "
+                    "§5.2); none when the solve did not converge"),
        output_field("algebraic_error",
                     one_of_value({number_value(), null_value()}, "a number or null"), "scaled",
                     "estimated algebraic error (J(x) − J(x_h))^½ of the last iterate from the "
@@ -285,8 +288,8 @@ ObjectRulePtr result_rule() {
        output_field("converged", boolean_value(), "",
                     "the stopping rule was met: final_kkt_residual ≤ tolerance · "
                     "initial_kkt_residual or, with solver.tolerance \"discretisation\", the "
-                    "estimated algebraic error ≤ fraction · J^½ (stopping.converged_by says "
-                    "which)"),
+                    "estimated algebraic error ≤ fraction · J^½, or the KKT residual reached its "
+                    "rounding level first (stopping.converged_by says which)"),
        output_field("stop_reason", choice_value(reasons), "",
                     "why the iteration stopped: converged, max_iterations (solver.max_iterations "
                     "reached first), time_limit (solver.time_limit_s ran out first; the result "

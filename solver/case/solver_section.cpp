@@ -76,7 +76,9 @@ ObjectRulePtr solver_rule() {
           "\"discretisation\": stop once the estimated algebraic error is "
           "discretisation_fraction times the estimated discretisation error J^½, or "
           "at the default KKT tolerance, whichever comes first (docs/method.md §5.1); "
-          "a case with adaptivity stops at \"discretisation\" unless it gives a tolerance"),
+          "a case with adaptivity stops at \"discretisation\" unless it gives a tolerance. "
+          "A tolerance below what double precision can show stops at the residual's rounding "
+          "level instead, converged, with a warning (docs/method.md §5.2)"),
       optional_field("discretisation_fraction", number_value(Range::open(0, 1)),
                      s.discretisation_fraction,
                      "with tolerance \"discretisation\": the algebraic error allowed, as a "

@@ -144,9 +144,13 @@ void print_sweep(const nlohmann::json& sweep) {
   }
 }
 
-/// What the summary line adds when the discretisation rule stopped the solve.
+/// What the summary line adds when the discretisation rule or the rounding level stopped the
+/// solve.
 std::string stopped_by(const nlohmann::json& r) {
-  if (!r.contains("stopping") || r["stopping"]["converged_by"] != "algebraic_error") return "";
+  if (!r.contains("stopping")) return "";
+  if (r["stopping"]["converged_by"] == "rounding_level")
+    return "; stopped at the rounding level (solver.tolerance below it; see the warning)";
+  if (r["stopping"]["converged_by"] != "algebraic_error") return "";
   return "; stopped at the discretisation error: algebraic error " +
          g(r["stopping"]["algebraic_error"], 2) + " <= " + g(r["stopping"]["fraction"], 2) +
          " x J^1/2, J^1/2 = " + g(r["stopping"]["estimator"], 2);

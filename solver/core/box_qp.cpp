@@ -60,6 +60,16 @@ double BoxQp::kkt_residual(const Vector& x, const Vector& r) const {
   return std::sqrt(s);
 }
 
+double BoxQp::rounding_level(const Vector& x) const {
+  Vector magnitude = b.cwiseAbs();
+  for (int col = 0; col < A.outerSize(); ++col) {
+    const double xc = std::abs(x[col]);
+    for (SparseMatrix::InnerIterator it(A, col); it; ++it)
+      magnitude[it.row()] += std::abs(it.value()) * xc;
+  }
+  return 0.5 * std::numeric_limits<double>::epsilon() * magnitude.norm();
+}
+
 bool BoxQp::feasible(const Vector& x) const {
   for (int i = 0; i < size(); ++i)
     if (x[i] < lower[i] || x[i] > upper[i]) return false;

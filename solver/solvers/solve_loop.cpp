@@ -372,6 +372,19 @@ SolverReport solve_with_chain(const BoxQp& qp, const LevelHierarchy& hierarchy,
   report.converged = report.initial_kkt == 0.0;
   const bool by_discretisation =
       options.stopping == StoppingRule::kDiscretisation && options.method != SolverMethod::kPdas;
+  // A tolerance relative to a small initial residual (a prolongated or continued start) can lie
+  // below the rounding level: the residual then stalls at a few times that level and the solve
+  // ran to max_iterations (31 instead of 13 iterations on an adaptive Hertz step at 10⁻⁸; a
+  // step at 10⁻¹⁰ stopped the adaptive run as not converged). The level is recomputed at x only
+  // near it, or once the residual has fallen by 10⁻⁶ (the level from the start can be far too
+  // small when x started at 0).
+  double rounding_level = qp.rounding_level(x);
+  auto at_rounding_level = [&](double kkt) {
+    if (kkt > 1e3 * kRoundingLevelFactor * rounding_level && kkt > 1e-6 * report.initial_kkt)
+      return false;
+    rounding_level = qp.rounding_level(x);
+    return kkt <= kRoundingLevelFactor * rounding_level;
+  };
   for (int k = 1; k <= options.max_iterations && !report.converged; ++k) {
     if (observer.cancelled && observer.cancelled()) {
       report.cancelled = true;
@@ -414,6 +427,8 @@ SolverReport solve_with_chain(const BoxQp& qp, const LevelHierarchy& hierarchy,
     else if (by_discretisation &&
              algebraic_error_is_small(report.history, options.discretisation_fraction))
       report.converged_by = ConvergedBy::kAlgebraicError;
+    else if (at_rounding_level(rec.kkt_residual))
+      report.converged_by = ConvergedBy::kRoundingLevel;
     report.converged = report.converged_by != ConvergedBy::kNone;
   }
   if (report.converged && report.converged_by == ConvergedBy::kNone)

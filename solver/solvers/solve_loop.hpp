@@ -27,8 +27,14 @@ enum class StoppingRule {
   kDiscretisation,  ///< that, or the algebraic error ≤ discretisation_fraction · J^½
 };
 
-/// Which test a converged solve met.
-enum class ConvergedBy { kNone, kKktResidual, kAlgebraicError };
+/// Which test a converged solve met. kRoundingLevel: the KKT residual reached the level that
+/// rounding in r = b − A x allows (BoxQp::rounding_level) before the tolerance, which was then
+/// below what double precision can show.
+enum class ConvergedBy { kNone, kKktResidual, kAlgebraicError, kRoundingLevel };
+
+/// A solve whose KKT residual is within this factor of the rounding level has converged as far
+/// as double precision can tell (docs/method.md §5.2).
+constexpr double kRoundingLevelFactor = 10.0;
 
 struct SolverOptions {
   SolverMethod method = SolverMethod::kMmg;
