@@ -53,11 +53,11 @@ struct MultilevelCycle::LevelState {
   std::unique_ptr<StripSmoother> strip;
 };
 
-GalerkinChain galerkin_chain(const SparseMatrix& A, const LevelHierarchy& hierarchy) {
+GalerkinChain galerkin_chain(const SparseMatrix& A, const LevelHierarchy& hierarchy, int levels) {
   const int top = hierarchy.num_levels() - 1;
   GalerkinChain c;
   c.matrices.resize(std::max(top, 0));
-  for (int j = top; j >= 1; --j) {
+  for (int j = top; j >= 1 && top - j < levels; --j) {
     SparseMatrix coarse =
         galerkin_product(j == top ? A : c.matrices[j], hierarchy.levels[j].prolongation);
     c.matrices[j - 1].swap(coarse);  // no move in Eigen 3.4: swapped, not copied
@@ -108,6 +108,17 @@ MultilevelCycle::~MultilevelCycle() {
 
 const SparseMatrix& MultilevelCycle::matrix(int j) const {
   return j == hierarchy_.num_levels() - 1 ? qp_.A : *levels_[j]->A;
+}
+
+SparseMatrix& MultilevelCycle::chain_matrix(int j) {
+  SparseMatrix& m = chain_->matrices[j];
+  if (m.rows() == 0) {
+    const int top = hierarchy_.num_levels() - 1;
+    SparseMatrix coarse = galerkin_product(j + 1 == top ? qp_.A : chain_matrix(j + 1),
+                                           hierarchy_.levels[j + 1].prolongation);
+    m.swap(coarse);
+  }
+  return m;
 }
 
 const TruncatedProlongation& MultilevelCycle::prolongation(int j) const {
@@ -392,13 +403,16 @@ void MultilevelCycle::rebuild_coarse_levels() {
   const int top = hierarchy_.num_levels() - 1;
   const bool truncating = std::find(truncated_.begin(), truncated_.end(), 1) != truncated_.end();
   if (top_edits_) top_edits_->restore();
+  // The untruncated levels are formed before any level's diagonal is shifted in place below,
+  // so that each is the product of unshifted ones, as when the chain was formed at once.
+  if (!truncating && top > 0) chain_matrix(0);
   for (int j = top - 1; j >= 0; --j) {
     LevelState& level = *levels_[j];
     // The old matrix is released before the new one is formed: two of them at once were the
     // peak of a solve.
     SparseMatrix().swap(level.truncated);
     if (!truncating) {
-      level.A = &chain_->matrices[j];
+      level.A = &chain_matrix(j);
     } else if (j == top - 1) {
       truncate_second_finest();
     } else {

@@ -8,6 +8,7 @@
 // c_j, starting at 0, with the bounds carried down from the level above.
 
 #include <functional>
+#include <limits>
 #include <memory>
 #include <vector>
 
@@ -63,9 +64,15 @@ using RowMajorMatrix = Eigen::SparseMatrix<double, Eigen::RowMajor, int>;
 /// only the few rows of A P at the contact boundary, recomputed from A and P per rebuild (kept,
 /// the finest A P was the largest matrix of a solve, ≈ 1.5 × A).
 struct GalerkinChain {
-  std::vector<SparseMatrix> matrices;  ///< A_0 … A_{J−1} (A_J is the problem's own matrix)
+  /// A_0 … A_{J−1} (A_J is the problem's own matrix); an empty (0 × 0) matrix is one not formed
+  /// yet, below those formed (MultilevelCycle::chain_matrix forms it when a level needs it).
+  std::vector<SparseMatrix> matrices;
 };
-GalerkinChain galerkin_chain(const SparseMatrix& A, const LevelHierarchy& hierarchy);
+/// The chain, formed down to `levels` levels below the finest (all by default). A cycle that
+/// truncates from its first iteration on, as every contact solve from a prolongated start does,
+/// uses only A_{J−1}: its coarser levels are products of truncated matrices instead.
+GalerkinChain galerkin_chain(const SparseMatrix& A, const LevelHierarchy& hierarchy,
+                             int levels = std::numeric_limits<int>::max());
 
 /// The coarse obstacle of docs/method.md §4.3: from the defects d ≥ 0 of the bounded DOFs of level
 /// j (kNoBound where a DOF is unbounded or truncated) to upper bounds of level j−1 that keep
@@ -117,6 +124,8 @@ class MultilevelCycle {
   void smooth_level(int j, Vector& c, Vector& r, const Vector& lo, const Vector& hi, bool forward);
   void project_obstacle(int j, const Vector& c, const Vector& hi, Vector& coarse_hi) const;
   const SparseMatrix& matrix(int j) const;
+  /// The chain's A_j, formed from A_{j+1} first if it was not (GalerkinChain).
+  SparseMatrix& chain_matrix(int j);
   /// P̃ᵀAP̃ − PᵀAP on the second-finest level (small: the contact boundary's couplings).
   void truncation_correction(SparseMatrix& out);
   /// Forms the truncated matrix of the second-finest level, in the chain's storage when the

@@ -289,7 +289,12 @@ SolverReport solve_box_qp(const BoxQp& qp, const LevelHierarchy& hierarchy,
   const auto t0 = Clock::now();
   std::shared_ptr<GalerkinChain> chain;
   if (multilevel) {
-    chain = std::make_shared<GalerkinChain>(galerkin_chain(qp.A, hierarchy));
+    // The definiteness check and the nested iteration read the coarse levels' untruncated
+    // matrices; without them a solve needs only the second-finest one up front (the rest is
+    // formed if a cycle runs untruncated): an adaptive step from its prolongated start.
+    const bool whole_chain = options.check_definiteness || options.nested;
+    chain = std::make_shared<GalerkinChain>(
+        galerkin_chain(qp.A, hierarchy, whole_chain ? std::numeric_limits<int>::max() : 1));
     if (options.check_definiteness && !chain_is_definite(qp.A, *chain))
       throw IndefiniteSystemError("the FOSLS matrix is not positive definite");
   }
