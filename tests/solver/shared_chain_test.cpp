@@ -49,5 +49,35 @@ TEST(SharedChain, ATruncatingCycleLeavesTheChainAsItFoundIt) {
     EXPECT_TRUE(identical(chain->matrices[j], untouched.matrices[j])) << "level " << j;
 }
 
+TEST(SharedChain, AChainFormedOnlyAtTheTopIsCompletedWhenACycleNeedsIt) {
+  // Adaptive steps after the first pass a chain with only the second-finest matrix: a cycle that
+  // runs untruncated (here the obstacle is moved away, so no bound is ever reached) forms the
+  // rest on demand, and must produce the iterates, and leave the chain, of one given the whole
+  // chain.
+  const Discretization disc(build_mesh_hierarchy(make_hertz({.size = 0.1}), 3),
+                            testing::hertz(1.0));
+  const LevelHierarchy h = disc.build_level_hierarchy();
+  BoxQp qp = disc.problem().qp;
+  for (int i = 0; i < qp.size(); ++i)
+    if (is_bounded_above(qp.upper[i])) qp.upper[i] += 1.0;
+  auto top_only = std::make_shared<GalerkinChain>(galerkin_chain(qp.A, h, 1));
+  auto whole = std::make_shared<GalerkinChain>(galerkin_chain(qp.A, h));
+  ASSERT_GE(top_only->matrices.size(), 3u);
+  EXPECT_EQ(top_only->matrices[0].rows(), 0) << "formed before it was needed";
+  Vector x_lazy = Vector::Zero(qp.size()), x_whole = Vector::Zero(qp.size());
+  Vector r_lazy = qp.b, r_whole = qp.b;
+  {
+    MultilevelCycle lazy(qp, h, MultilevelOptions{}, top_only);
+    MultilevelCycle eager(qp, h, MultilevelOptions{}, whole);
+    for (int k = 0; k < 4; ++k) {
+      lazy.nonlinear_cycle(x_lazy, r_lazy);
+      eager.nonlinear_cycle(x_whole, r_whole);
+      ASSERT_EQ(x_lazy, x_whole) << "cycle " << k;
+    }
+  }
+  for (std::size_t j = 0; j < whole->matrices.size(); ++j)
+    EXPECT_TRUE(identical(top_only->matrices[j], whole->matrices[j])) << "level " << j;
+}
+
 }  // namespace
 }  // namespace fosls
