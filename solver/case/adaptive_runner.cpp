@@ -103,6 +103,7 @@ CaseSolution solve_case_levels(MeshHierarchy meshes, const ProblemData& data, co
     record.force = {solution.contact.force_x, solution.contact.force_y};
     record.iterations = solution.report.iterations;
     record.converged = solution.report.converged;
+    record.converged_by = solution.report.converged_by;
     record.algebraic_error = solution.report.algebraic_error;
     if (step == 0) first_estimator = record.estimator;
     solution.steps.push_back(record);
@@ -148,6 +149,7 @@ nlohmann::json adaptivity_json(const CaseSolution& solution, const AdaptivitySpe
          {"force", s.force},
          {"iterations", s.iterations},
          {"converged", s.converged},
+         {"converged_by", converged_by_name(s.converged_by)},
          {"algebraic_error",
           std::isfinite(s.algebraic_error) ? nlohmann::json(s.algebraic_error) : nlohmann::json()},
          {"marked", s.marked},

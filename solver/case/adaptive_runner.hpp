@@ -30,6 +30,7 @@ struct AdaptiveStepRecord {
   std::array<double, 2> force = {0.0, 0.0};
   int iterations = 0;
   bool converged = false;
+  ConvergedBy converged_by = ConvergedBy::kNone;
   /// The solve's estimated algebraic error (SolverReport::algebraic_error; infinite: unknown).
   double algebraic_error = 0.0;
   int marked = 0;  ///< triangles marked for the next refinement (0 on the last step)

@@ -105,11 +105,7 @@ json mesh_json(const MeshSpec& mesh) {
 }
 
 json stopping_json(const SolverReport& report, const SolverOptions& options) {
-  const char* converged_by = report.converged_by == ConvergedBy::kKktResidual ? "kkt_residual"
-                             : report.converged_by == ConvergedBy::kAlgebraicError
-                                 ? "algebraic_error"
-                             : report.converged_by == ConvergedBy::kRoundingLevel ? "rounding_level"
-                                                                                  : "none";
+  const char* converged_by = converged_by_name(report.converged_by);
   return {{"rule",
            options.stopping == StoppingRule::kDiscretisation ? "discretisation" : "kkt_residual"},
           {"fraction", options.discretisation_fraction},
@@ -159,12 +155,14 @@ std::vector<std::string> result_warnings(const SolverReport& report, const Solve
     warnings.push_back(convergence_message(report, options));
   if (report.converged_by == ConvergedBy::kRoundingLevel)
     warnings.push_back(
-        "solver.tolerance " + short_number(options.tolerance) +
-        " is below what double precision can show for this problem: the KKT residual reached " +
-        short_number(relative_kkt(report)) +
-        " of its initial value, within 10 times the rounding level of the residual, and the "
-        "solve stopped there as converged (docs/method.md §5.2): further iterations would only "
-        "move the iterate within rounding. A tolerance of 1e-8 or \"discretisation\" is enough");
+        "the KKT residual stopped falling at " + short_number(relative_kkt(report)) +
+        " of its initial value, within 10 times the level that rounding allows, before the "
+        "tolerance " +
+        short_number(options.tolerance) +
+        " (solver.tolerance); the solve stopped there as converged (docs/method.md §5.2). "
+        "Either the start was already close to the solution (an adaptive step's or a sweep "
+        "point's), or the tolerance is probably below what double precision can show for this "
+        "problem");
   if (report.cycle.safeguard_reductions > 0)
     warnings.push_back(
         "coarse corrections were shortened " + std::to_string(report.cycle.safeguard_reductions) +

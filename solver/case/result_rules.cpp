@@ -14,6 +14,9 @@ ValueRule count() { return integer_value(Range::non_negative()); }
 ValueRule number() { return number_value(); }
 ValueRule numbers(std::string what) { return list_value(number_value(), std::move(what)); }
 ValueRule text() { return string_value(static_cast<std::size_t>(-1) >> 1, "the text"); }
+ValueRule converged_by_value() {
+  return choice_value({"kkt_residual", "algebraic_error", "rounding_level", "none"});
+}
 
 ObjectRulePtr object_rule(std::string title, std::string anchor, std::vector<FieldRule> fields) {
   auto r = std::make_shared<ObjectRule>();
@@ -85,6 +88,8 @@ ObjectRulePtr sweep_point_rule(ValueRule reasons) {
        output_field("contact_length", number(), "L", "contact.zone.length at this point"),
        output_field("converged", boolean_value(), "", "this point converged"),
        output_field("stop_reason", std::move(reasons), "", "why this point's iteration stopped"),
+       output_field("converged_by", converged_by_value(), "",
+                    "the test this point's solve met, as stopping.converged_by"),
        output_field("iterations", count(), "1",
                     "finest-level iterations of this point (from the previous point's solution)")});
 }
@@ -150,13 +155,11 @@ ObjectRulePtr stopping_rule() {
                     "solver.tolerance as a rule: a number is kkt_residual, \"discretisation\" "
                     "also stops at the discretisation error (docs/method.md §5.1)"),
        output_field("fraction", number(), "1", "solver.discretisation_fraction used"),
-       output_field("converged_by",
-                    choice_value({"kkt_residual", "algebraic_error", "rounding_level", "none"}), "",
+       output_field("converged_by", converged_by_value(), "",
                     "the test the last iterate met: the KKT residual reached tolerance, or the "
                     "algebraic error estimate fell to fraction · estimator, or the KKT residual "
-                    "reached 10 times its rounding level ε‖|A||x| + |b|‖ before the tolerance "
-                    "(which was then below what double precision can show; docs/method.md "
-                    "§5.2); none when the solve did not converge"),
+                    "stalled within 10 times its rounding level ε/2 ‖|A||x| + |b|‖ before the "
+                    "tolerance (docs/method.md §5.2); none when the solve did not converge"),
        output_field("algebraic_error",
                     one_of_value({number_value(), null_value()}, "a number or null"), "scaled",
                     "estimated algebraic error (J(x) − J(x_h))^½ of the last iterate from the "
@@ -232,6 +235,8 @@ ObjectRulePtr adaptive_step_rule() {
                     "the contact force at this step's solution (as contact.force)"),
        output_field("iterations", count(), "1", "iterations of this step's solve"),
        output_field("converged", boolean_value(), "", "this step's solve met its stopping rule"),
+       output_field("converged_by", converged_by_value(), "",
+                    "the test this step's solve met, as stopping.converged_by"),
        output_field("algebraic_error",
                     one_of_value({number_value(), null_value()}, "a number or null"), "scaled",
                     "this step's estimated algebraic error, as stopping.algebraic_error"),

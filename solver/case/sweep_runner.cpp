@@ -15,6 +15,7 @@ json point_json(double value, const json& r) {
           {"contact_length", contact["zone"]["length"]},
           {"converged", r["converged"]},
           {"stop_reason", r["stop_reason"]},
+          {"converged_by", r["stopping"]["converged_by"]},
           {"iterations", r["iterations"]}};
 }
 

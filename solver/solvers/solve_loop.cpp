@@ -25,6 +25,20 @@ bool chain_is_definite(const SparseMatrix& A, const GalerkinChain& chain, int ma
   return llt.info() == Eigen::Success;
 }
 
+const char* converged_by_name(ConvergedBy c) {
+  switch (c) {
+    case ConvergedBy::kKktResidual:
+      return "kkt_residual";
+    case ConvergedBy::kAlgebraicError:
+      return "algebraic_error";
+    case ConvergedBy::kRoundingLevel:
+      return "rounding_level";
+    case ConvergedBy::kNone:
+      break;
+  }
+  return "none";
+}
+
 const char* method_name(SolverMethod m) {
   switch (m) {
     case SolverMethod::kMmg:
@@ -378,13 +392,20 @@ SolverReport solve_with_chain(const BoxQp& qp, const LevelHierarchy& hierarchy,
   const bool by_discretisation =
       options.stopping == StoppingRule::kDiscretisation && options.method != SolverMethod::kPdas;
   // A tolerance relative to a small initial residual (a prolongated or continued start) can lie
-  // below the rounding level: the residual then stalls at a few times that level and the solve
-  // ran to max_iterations (31 instead of 13 iterations on an adaptive Hertz step at 10⁻⁸; a
-  // step at 10⁻¹⁰ stopped the adaptive run as not converged). The level is recomputed at x only
-  // near it, or once the residual has fallen by 10⁻⁶ (the level from the start can be far too
-  // small when x started at 0).
+  // below the rounding level: the residual then stalls between 0.5 and 7 times that level and
+  // the solve ran to max_iterations (31 instead of 16 iterations on an adaptive Hertz step at
+  // 10⁻⁸; a step at 10⁻¹⁰ stopped the adaptive run as not converged). Near the level, a solve
+  // stops once the residual has also stalled: it did not halve against the better of the two
+  // iterations before, so a residual still falling fast reaches its tolerance as before. The
+  // level is recomputed at x only near it, or once the residual has fallen by 10⁻⁶ (the level
+  // from the start can be far too small when x started at 0).
   double rounding_level = qp.rounding_level(x);
   auto at_rounding_level = [&](double kkt) {
+    const int h = static_cast<int>(report.history.size());  // the last record is kkt's
+    if (h < 3) return false;
+    const double before =
+        std::min(report.history[h - 2].kkt_residual, report.history[h - 3].kkt_residual);
+    if (kkt < 0.5 * before) return false;
     if (kkt > 1e3 * kRoundingLevelFactor * rounding_level && kkt > 1e-6 * report.initial_kkt)
       return false;
     rounding_level = qp.rounding_level(x);

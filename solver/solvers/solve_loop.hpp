@@ -27,14 +27,17 @@ enum class StoppingRule {
   kDiscretisation,  ///< that, or the algebraic error ≤ discretisation_fraction · J^½
 };
 
-/// Which test a converged solve met. kRoundingLevel: the KKT residual reached the level that
-/// rounding in r = b − A x allows (BoxQp::rounding_level) before the tolerance, which was then
-/// below what double precision can show.
+/// Which test a converged solve met. kRoundingLevel: the KKT residual stalled within a small
+/// factor of the level that rounding in r = b − A x allows (BoxQp::rounding_level) before it
+/// reached the tolerance.
 enum class ConvergedBy { kNone, kKktResidual, kAlgebraicError, kRoundingLevel };
 
-/// A solve whose KKT residual is within this factor of the rounding level has converged as far
-/// as double precision can tell (docs/method.md §5.2).
+/// A solve whose KKT residual has stalled within this factor of the rounding level has converged
+/// as far as double precision can tell (docs/method.md §5.2).
 constexpr double kRoundingLevelFactor = 10.0;
+
+/// "kkt_residual", "algebraic_error", "rounding_level" or "none" (result JSON's converged_by).
+const char* converged_by_name(ConvergedBy c);
 
 struct SolverOptions {
   SolverMethod method = SolverMethod::kMmg;
