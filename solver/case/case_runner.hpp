@@ -47,10 +47,11 @@ struct RunOutput {
 std::vector<CaseError> validate_case(const nlohmann::json& j, const CaseReadOptions& options = {},
                                      const MeshingControl& meshing = {});
 
-/// Runs a validated case; a case with a sweep runs every point in order (sweep_runner.hpp). Throws
-/// CaseException for problems a user caused that only show up while running (for example weights
-/// that make the matrix indefinite). A cancel while the coarse mesh is made returns at once with
-/// `cancelled` set and an empty result.
+/// Runs a case from read_case; a case with a sweep runs every point in order (sweep_runner.hpp).
+/// Throws CaseException for problems a user caused that show up only with the coarse mesh (mesh
+/// errors, groups the mesh lacks, DOF limits: validate_case's checks, made here once the mesh is
+/// built) or while running (for example weights that make the matrix indefinite). A cancel while
+/// the coarse mesh is made returns at once with `cancelled` set and an empty result.
 RunOutput run_case(const CaseSpec& spec, const RunControl& control = {},
                    const CaseLimits& limits = {});
 
