@@ -158,8 +158,9 @@ ObjectRulePtr stopping_rule() {
        output_field("converged_by", converged_by_value(), "",
                     "the test the last iterate met: the KKT residual reached tolerance, or the "
                     "algebraic error estimate fell to fraction · estimator, or the KKT residual "
-                    "stalled within 10 times its rounding level ε/2 ‖|A||x| + |b|‖ before the "
-                    "tolerance (docs/method.md §5.2); none when the solve did not converge"),
+                    "stalled within 10 times its rounding level u ‖|A||x| + |b|‖ (u = 2⁻⁵³) "
+                    "before the tolerance (docs/method.md §5.2); none when the solve did not "
+                    "converge"),
        output_field("algebraic_error",
                     one_of_value({number_value(), null_value()}, "a number or null"), "scaled",
                     "estimated algebraic error (J(x) − J(x_h))^½ of the last iterate from the "

@@ -149,7 +149,7 @@ void print_sweep(const nlohmann::json& sweep) {
 std::string stopped_by(const nlohmann::json& r) {
   if (!r.contains("stopping")) return "";
   if (r["stopping"]["converged_by"] == "rounding_level")
-    return "; stopped at the rounding level (solver.tolerance below it; see the warning)";
+    return "; stopped where the residual stalled at its rounding level (see the warning)";
   if (r["stopping"]["converged_by"] != "algebraic_error") return "";
   return "; stopped at the discretisation error: algebraic error " +
          g(r["stopping"]["algebraic_error"], 2) + " <= " + g(r["stopping"]["fraction"], 2) +

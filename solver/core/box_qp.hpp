@@ -39,8 +39,8 @@ struct BoxQp {
   double energy_from_residual(const Vector& x, const Vector& r) const;
   /// ‖x − P_K(x − (A x − b))‖₂ from the residual r = b − A x: zero exactly at the solution.
   double kkt_residual(const Vector& x, const Vector& r) const;
-  /// ε ‖ |A| |x| + |b| ‖₂, ε the double precision unit roundoff: the size of the rounding in a
-  /// computed r = b − A x, below which the KKT residual cannot fall reliably.
+  /// u ‖ |A| |x| + |b| ‖₂, u = 2⁻⁵³ the double precision unit roundoff: the size of the rounding
+  /// in a computed r = b − A x, below which the KKT residual cannot fall reliably.
   double rounding_level(const Vector& x) const;
   /// Whether lower ≤ x ≤ upper holds exactly.
   bool feasible(const Vector& x) const;
