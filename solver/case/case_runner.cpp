@@ -15,6 +15,7 @@
 #include "case/solver_methods.hpp"
 #include "core/indefinite_system.hpp"
 #include "core/peak_memory.hpp"
+#include "mesh/length_scale.hpp"
 #include "post/vtu_writer.hpp"
 
 namespace fosls {
@@ -49,7 +50,8 @@ ProblemData problem_data(const CaseSpec& spec, const Mesh& mesh) {
   ProblemData d;
   d.material = {.mu = spec.material.mu, .lambda = spec.material.lambda};
   const Weights& w = spec.weights;
-  d.weights = {.c1 = w.c1, .c2 = w.c2, .c3 = w.c3, .c4 = w.c4};
+  const double l = length_scale(mesh);
+  d.weights = {.c1 = w.c1 * l * l, .c2 = w.c2, .c3 = w.c3, .c4 = w.c4};
   // A zero component stays empty: the assembler then stores no body force at all.
   for (int i = 0; i < 2; ++i)
     if (const Scalar& f = spec.body_force[i]; !f.is_constant() || f.value != 0.0)
@@ -159,6 +161,7 @@ RunOutput run_point(const CaseSpec& spec, const RunControl& control, const CaseL
   RunMemory memory;
   memory.mesh_mib = peak_rss_mib();
   CaseSpec used = spec;  // the case with the weights as used
+  used.weights.length_scale = length_scale(coarse_mesh);
   if (has_contact(spec) && spec.weights.c3_auto) {
     const ContactWeightLimit limit = contact_weight_limit(meshes, data);
     used.weights.c3_limit = limit.limit;

@@ -76,6 +76,8 @@ struct Weights {
   double c4 = 0.0;
   bool c3_auto = true;
   double c3_limit = 0.0;  ///< 0 when not computed
+  /// ℓ of mesh/length_scale.hpp, set when the case runs: the c1 term is weighted c1 ℓ².
+  double length_scale = 1.0;
 };
 
 /// The `adaptivity` section: solve → estimate → mark → refine by newest-vertex bisection →

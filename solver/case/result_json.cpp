@@ -218,7 +218,8 @@ json result_json(const CaseSpec& spec, const SolverReport& report, const Contact
                   {"c3", spec.weights.c3},
                   {"c4", spec.weights.c4},
                   {"c3_rule", spec.weights.c3_auto ? "auto" : "given"},
-                  {"c3_limit", spec.weights.c3_limit > 0 ? json(spec.weights.c3_limit) : json()}};
+                  {"c3_limit", spec.weights.c3_limit > 0 ? json(spec.weights.c3_limit) : json()},
+                  {"length_scale", spec.weights.length_scale}};
   r["timing"] = {{"mesh_s", timing.mesh_s},
                  {"assembly_s", timing.assembly_s},
                  {"setup_s", report.setup_s},

@@ -205,6 +205,11 @@ ObjectRulePtr weights_echo_rule() {
       "with c3_rule auto: the largest c3 keeping the functional convex on the level it was "
       "computed on (c3 = min(0.1, c3_limit / 2)); null otherwise, without contact or when "
       "unbounded"));
+  fields.push_back(output_field(
+      "length_scale", number(), "L",
+      "ℓ, the power of ten nearest to the square root of the body's area: the c1 term is "
+      "weighted c1 ℓ², so that the weights balance the terms whatever the unit of length "
+      "(docs/method.md §2)"));
   return object_rule("the weights", "weights_echo", std::move(fields));
 }
 
