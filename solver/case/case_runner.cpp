@@ -50,7 +50,8 @@ ProblemData problem_data(const CaseSpec& spec, const Mesh& mesh) {
   ProblemData d;
   d.material = {.mu = spec.material.mu, .lambda = spec.material.lambda};
   const Weights& w = spec.weights;
-  const double l = length_scale(mesh);
+  // The c1 term in units of the body's size (mesh/length_scale.hpp).
+  const double l = w.length_scale;
   d.weights = {.c1 = w.c1 * l * l, .c2 = w.c2, .c3 = w.c3, .c4 = w.c4};
   // A zero component stays empty: the assembler then stores no body force at all.
   for (int i = 0; i < 2; ++i)
@@ -154,14 +155,14 @@ RunOutput run_point(const CaseSpec& spec, const RunControl& control, const CaseL
   }
   if (auto errors = check_against_mesh(spec, coarse, limits); !errors.empty())
     throw CaseException(std::move(errors));
-  ProblemData data = problem_data(spec, coarse);
+  CaseSpec used = spec;  // the case with the weights as used
+  used.weights.length_scale = length_scale(coarse);
+  ProblemData data = problem_data(used, coarse);
   const Mesh coarse_mesh = coarse;  // small; for the message of indefinite weights
   MeshHierarchy meshes = build_mesh_hierarchy(std::move(coarse), spec.mesh.refinements);
   const auto t_mesh = Clock::now();
   RunMemory memory;
   memory.mesh_mib = peak_rss_mib();
-  CaseSpec used = spec;  // the case with the weights as used
-  used.weights.length_scale = length_scale(coarse_mesh);
   if (has_contact(spec) && spec.weights.c3_auto) {
     const ContactWeightLimit limit = contact_weight_limit(meshes, data);
     used.weights.c3_limit = limit.limit;

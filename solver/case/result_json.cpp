@@ -156,8 +156,8 @@ std::vector<std::string> result_warnings(const SolverReport& report, const Solve
   if (report.converged_by == ConvergedBy::kRoundingLevel)
     warnings.push_back(
         "the KKT residual stopped falling at " + short_number(relative_kkt(report)) +
-        " of its initial value, within 10 times the level that rounding allows, before the "
-        "tolerance " +
+        " of its initial value, within " + short_number(kRoundingLevelFactor) +
+        " times the level that rounding allows, before the tolerance " +
         short_number(options.tolerance) +
         " (solver.tolerance); the solve stopped there as converged (docs/method.md §5.2). "
         "Either the start was already close to the solution (an adaptive step's or a sweep "
