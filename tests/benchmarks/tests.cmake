@@ -1,3 +1,8 @@
 # Benchmarks are programs, not tests: they print tables (see README "Performance").
 add_executable(fosls-bench-assembly ${CMAKE_CURRENT_LIST_DIR}/assembly_bench.cpp)
 target_link_libraries(fosls-bench-assembly PRIVATE fosls_internals)
+
+# The displacement FEM that FOSLS is measured against (docs/validation.md §12): its own sparse LU.
+find_library(UMFPACK_LIBRARY NAMES umfpack REQUIRED)
+add_executable(fosls-bench-displacement ${CMAKE_CURRENT_LIST_DIR}/displacement_fem.cpp)
+target_link_libraries(fosls-bench-displacement PRIVATE fosls_internals ${UMFPACK_LIBRARY})

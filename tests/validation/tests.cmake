@@ -17,7 +17,8 @@ target_include_directories(validation_corner_errors PRIVATE ${PROJECT_SOURCE_DIR
 find_package(Python3 COMPONENTS Interpreter)
 if(Python3_Interpreter_FOUND)
   foreach(check ShippedBenchmarks HertzCompressible HertzIncompressible FiniteBody
-                SolverIterations ErrorEstimator SignoriniSquare CornerSingularity CornerTrueError)
+                SolverIterations ErrorEstimator SignoriniSquare CornerSingularity CornerTrueError
+                DisplacementFem)
     add_test(NAME validation_${check}
              COMMAND ${Python3_EXECUTABLE} ${VALIDATION_DIR}/test_validation.py
                      --bin $<TARGET_FILE:fosls-contact>
