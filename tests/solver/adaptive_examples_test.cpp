@@ -46,7 +46,7 @@ void check_loop(const nlohmann::json& r, int steps) {
 TEST(AdaptiveExamples, HertzReachesTheReferenceForceWithFewerUnknowns) {
   const nlohmann::json r = run_example("hertz_adaptive");
   check_loop(r, 5);
-  // Reference F = 0.0125226 ± 3e-7 (issue 11, an independent displacement FEM); uniform
+  // Reference F = 0.0125226 ± 3e-7 (docs/validation.md §12, a displacement FEM); uniform
   // refinements 3 give +0.247 % with 27 216 unknowns, the adapted mesh (θ = 0.7) is closer
   // with fewer (measured +0.145 % with 17 137).
   const double force = r["contact"]["force"][1].get<double>();
