@@ -53,11 +53,13 @@ double constant(const Scalar& s, const std::string& what) {
   return s.value;
 }
 
-/// One contact vertex: u·d ≤ gap.
+/// One contact vertex: u·d ≤ gap. On a roller (one component prescribed) only the other
+/// component is free, and the constraint replaces its equation when active.
 struct NodalConstraint {
   int vertex;
   Point d;
   double gap;
+  int free_component = -1;  ///< -1: both free; 0 or 1: the one a roller leaves free
 };
 
 /// The system before boundary conditions: displacement DOFs 2v, 2v + 1 of vertex v, then the
@@ -211,8 +213,13 @@ BoundaryData boundary_data(const Mesh& mesh, const CaseSpec& spec, Eigen::Vector
   }
   for (int v = 0; v < mesh.num_vertices(); ++v) {
     const BoundaryCondition* bc = contact_bc[v];
-    if (!bc || !std::isnan(out.prescribed[2 * v]) || !std::isnan(out.prescribed[2 * v + 1]))
-      continue;
+    const bool x_free = std::isnan(out.prescribed[2 * v]);
+    const bool y_free = std::isnan(out.prescribed[2 * v + 1]);
+    if (!bc || (!x_free && !y_free)) continue;
+    if (bc->direction == ContactDirection::kObstacleNormal)
+      // FOSLS keeps the traction along the body normal with the constraint along the obstacle's
+      // (method.md §1); a nodal constraint's reaction acts along its own direction.
+      throw std::runtime_error("direction obstacle_normal is not supported here: use body_normal");
     const Point x = mesh.vertex(v);
     // The body normal at a vertex: the circle's where the boundary is an arc, else the mean of
     // the two edges'.
@@ -223,12 +230,15 @@ BoundaryData boundary_data(const Mesh& mesh, const CaseSpec& spec, Eigen::Vector
     }
     const Point nu = bc->obstacle.normal.normalized();  // from the obstacle into the body
     const double height = (x - bc->obstacle.point).dot(nu);
-    if (bc->direction == ContactDirection::kObstacleNormal) {
-      out.contact.push_back({v, -nu, height});
-    } else {
-      const double approach = -n.dot(nu);
-      if (approach > 1e-12) out.contact.push_back({v, n, height / approach});
+    const double approach = -n.dot(nu);
+    if (approach <= 1e-12) continue;  // n never reaches the plane
+    NodalConstraint c{v, n, height / approach};
+    if (!x_free || !y_free) {
+      c.free_component = x_free ? 0 : 1;
+      // Along the roller's own direction the roller already decides.
+      if (std::abs(n[c.free_component]) < 1e-12) continue;
     }
+    out.contact.push_back(c);
   }
   return out;
 }
@@ -268,10 +278,11 @@ Solution solve_contact(const Assembled& sys, const BoundaryData& bd, std::vector
           t.emplace_back(row, it.col(), it.value());
         continue;
       }
-      // Active vertex: its x row becomes u·d = g, its y row the equilibrium along the tangent.
+      // Active vertex: its x row becomes u·d = g, its y row the equilibrium along the tangent;
+      // on a roller (its prescribed row handled above) the free row becomes u·d = g.
       const NodalConstraint& con = bd.contact[c];
       const int vx = 2 * con.vertex;
-      if (row == vx) {
+      if (row == vx || con.free_component >= 0) {
         t.emplace_back(row, vx, con.d.x());
         t.emplace_back(row, vx + 1, con.d.y());
         rhs[row] = con.gap;
@@ -297,7 +308,11 @@ Solution solve_contact(const Assembled& sys, const BoundaryData& bd, std::vector
       const int vx = 2 * con.vertex;
       const Point r(residual[vx], residual[vx + 1]);
       const Point u(s.x[vx], s.x[vx + 1]);
-      s.contact_force[i] = active[i] ? -r.dot(con.d) : 0.0;
+      // The residual is the obstacle's force −λ_i d, plus a roller's along its prescribed axis.
+      const double lambda_i = con.free_component < 0
+                                  ? -r.dot(con.d)
+                                  : -r[con.free_component] / con.d[con.free_component];
+      s.contact_force[i] = active[i] ? lambda_i : 0.0;
       const double c = sys.K.coeff(vx, vx);
       next[i] = s.contact_force[i] + c * (u.dot(con.d) - con.gap) > 0;
     }
@@ -350,7 +365,7 @@ int run(const std::string& path, bool mixed) {
   MeshHierarchy meshes = build_mesh_hierarchy(build_coarse_mesh(spec.mesh), spec.mesh.refinements);
   const double mesh_s = seconds_since(t0);
   // Nested: each level starts its active set iteration from the coarser level's active set, so
-  // the finest level needs two or three factorisations instead of about eight.
+  // the finest level needs one or two factorisations instead of about eight.
   const int finest = meshes.num_levels() - 1;
   BoundaryData bd;
   Solution s;

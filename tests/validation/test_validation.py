@@ -331,8 +331,50 @@ def displacement_fem(case, element):
 
 
 class DisplacementFem(unittest.TestCase):
-    """The reference of section 12: its recorded forces, its two elements against each other
-    and against FOSLS, on refinement 3."""
+    """The reference of section 12: a patch test with an exact solution, its recorded forces,
+    its two elements against each other and against FOSLS's recorded forces, on refinement 3."""
+
+    @staticmethod
+    def patch_case(lam, roller_at_contact):
+        """A unit square on the plane y = 0, its top pushed down by δ = 0.05 with x free, its
+        left side on a roller (x = 0): a homogeneous uniaxial strain, so the force is exactly
+        E' δ with E' = 4μ(λ + μ)/(λ + 2μ) (8/3 δ at λ = μ = 1, 4 δ at λ = ∞). With
+        `roller_at_contact` the roller reaches the contact side: its corner vertex is on both."""
+        geometry = {
+            "points": [[0, 0], [1, 0], [1, 1], [0, 1], [0, 0.5]],
+            "curves": [{"type": "line", "points": [a, b]}
+                       for a, b in ((0, 1), (1, 2), (2, 3), (3, 4), (4, 0))],
+            "groups": {"bottom": [0], "right": [1], "top": [2], "left_upper": [3],
+                       "left_lower": [4]}}
+        roller = {"type": "dirichlet", "displacement": [0, None]}
+        free = {"type": "neumann", "traction": [0, 0]}
+        return {"name": "patch", "mesh": {"geometry": geometry, "size": 0.25, "refinements": 1},
+                "material": {"mu": 1, "lambda": lam}, "body_force": [0, 0],
+                "boundary": {"top": {"type": "dirichlet", "displacement": [None, -0.05]},
+                             "right": free, "left_upper": roller,
+                             "left_lower": roller if roller_at_contact else free,
+                             "bottom": {"type": "contact", "obstacle": {
+                                 "type": "plane", "point": [0, 0], "normal": [0, 1]}}}}
+
+    def test_patch_test_is_exact(self):
+        for lam, element, exact in ((1, "p1", 8 / 3 * 0.05), (1, "mixed", 8 / 3 * 0.05),
+                                    ("inf", "mixed", 4 * 0.05)):
+            for roller_at_contact in (False, True):
+                r = displacement_fem(self.patch_case(lam, roller_at_contact), element)
+                self.assertIsInstance(r, dict, r)
+                self.assertTrue(r["converged"])
+                # Every contact vertex is in contact, the corner on the roller too.
+                self.assertEqual(r["active"], r["contact_vertices"])
+                self.assertAlmostEqual(r["force"][1] / exact, 1.0, delta=1e-10,
+                                       msg=(lam, element, roller_at_contact))
+                self.assertAlmostEqual(r["force"][0], 0.0, delta=1e-12)
+
+    def test_obstacle_normal_is_refused(self):
+        case = self.patch_case(1, False)
+        case["boundary"]["bottom"]["direction"] = "obstacle_normal"
+        code, stderr = displacement_fem(case, "p1")
+        self.assertEqual(code, 1)
+        self.assertIn("body_normal", stderr)
 
     # Recorded (section 12): element, λ → F on refinement 3.
     RECORDED = {("p1", 1): 0.0125387, ("mixed", 1): 0.0125354, ("mixed", "inf"): 0.0215233}
@@ -349,8 +391,8 @@ class DisplacementFem(unittest.TestCase):
             self.assertAlmostEqual(forces[element, lam] / recorded, 1.0, delta=1e-5)
         # Two discretisations of one problem: measured 0.026 % apart on refinement 3.
         self.assertLess(abs(forces["p1", 1] / forces["mixed", 1] - 1), 5e-4)
-        # FOSLS on the same mesh (section 1: 0.012554 and 0.021432) lies within its own
-        # discretisation error of them: measured +0.12 % and −0.42 %.
+        # FOSLS on the same mesh (section 10: 0.0125536 and 0.0214296 at refinements 3) lies
+        # within its own discretisation error of them: measured +0.15 % and −0.42 %.
         self.assertLess(abs(0.012554 / forces["mixed", 1] - 1), 3e-3)
         self.assertLess(abs(0.021432 / forces["mixed", "inf"] - 1), 6e-3)
 
