@@ -10,9 +10,9 @@
 //   (P1-iso-P2/P1, inf-sup stable): find (u, p) with 2μ (ε(u), ε(v)) + (p, div v) = ℓ(v) and
 //   (div u, q) − (p, q)/λ = 0, so σ = 2μ ε(u) + p I; λ = ∞ is the incompressible limit.
 // Frictionless contact: nodal constraints u·d ≤ g at the contact group's vertices, d and g as the
-// case defines them (body normal by default; a plane obstacle only). Solved by the primal–dual
-// active set method (a semismooth Newton method): each step replaces the rows of the active
-// vertices by u·d = g and the tangential equilibrium, and solves with a sparse LU (UMFPACK),
+// case defines them (body normal by default; a plane obstacle or a gap function). Solved by the
+// primal–dual active set method (a semismooth Newton method): each step replaces the rows of the
+// active vertices by u·d = g and the tangential equilibrium, and solves with a sparse LU (UMFPACK),
 // until the active set repeats. The contact force is the sum of the nodal contact forces.
 // Prints one JSON object.
 #include <sys/resource.h>
@@ -31,6 +31,7 @@
 #include <vector>
 
 #include "case/case_reader.hpp"
+#include "case/expression.hpp"
 #include "case/mesh_factory.hpp"
 #include "mesh/refinement.hpp"
 
@@ -199,8 +200,8 @@ BoundaryData boundary_data(const Mesh& mesh, const CaseSpec& spec, Eigen::Vector
         }
         break;
       case BoundaryCondition::Type::kContact:
-        if (bc.obstacle.kind != Obstacle::Kind::kPlane)
-          throw std::runtime_error(group + ": only a plane obstacle is supported");
+        if (bc.obstacle.kind == Obstacle::Kind::kCircle)
+          throw std::runtime_error(group + ": a circle obstacle is not supported here");
         for (int v : {v0, v1}) {
           normal_sum[v] += mesh.edge_normal(e);
           if (mesh.edge_curve(e) >= 0) curve_of[v] = mesh.edge_curve(e);
@@ -228,11 +229,15 @@ BoundaryData boundary_data(const Mesh& mesh, const CaseSpec& spec, Eigen::Vector
       const Point radial = (x - mesh.curves()[curve_of[v]].center).normalized();
       n = radial.dot(n) > 0 ? radial : Point(-radial);
     }
-    const Point nu = bc->obstacle.normal.normalized();  // from the obstacle into the body
-    const double height = (x - bc->obstacle.point).dot(nu);
-    const double approach = -n.dot(nu);
-    if (approach <= 1e-12) continue;  // n never reaches the plane
-    NodalConstraint c{v, n, height / approach};
+    NodalConstraint c{v, n, 0.0};
+    if (bc->obstacle.kind == Obstacle::Kind::kGap) {
+      c.gap = compile_scalar(bc->obstacle.gap)(x.x(), x.y());  // given along the body normal
+    } else {
+      const Point nu = bc->obstacle.normal.normalized();  // from the obstacle into the body
+      const double approach = -n.dot(nu);
+      if (approach <= 1e-12) continue;  // n never reaches the plane
+      c.gap = (x - bc->obstacle.point).dot(nu) / approach;
+    }
     if (!x_free || !y_free) {
       c.free_component = x_free ? 0 : 1;
       // Along the roller's own direction the roller already decides.

@@ -369,6 +369,15 @@ class DisplacementFem(unittest.TestCase):
                                        msg=(lam, element, roller_at_contact))
                 self.assertAlmostEqual(r["force"][0], 0.0, delta=1e-12)
 
+    def test_a_gap_function_is_the_obstacle(self):
+        # A gap of 0.01 everywhere: the plane 0.01 lower, so the strain comes from δ − 0.01.
+        for lam, element, modulus in ((1, "p1", 8 / 3), ("inf", "mixed", 4)):
+            case = self.patch_case(lam, False)
+            case["boundary"]["bottom"]["obstacle"] = {"type": "gap", "g": "0.01"}
+            r = displacement_fem(case, element)
+            self.assertIsInstance(r, dict, r)
+            self.assertAlmostEqual(r["force"][1] / (modulus * 0.04), 1.0, delta=1e-10)
+
     def test_obstacle_normal_is_refused(self):
         case = self.patch_case(1, False)
         case["boundary"]["bottom"]["direction"] = "obstacle_normal"
