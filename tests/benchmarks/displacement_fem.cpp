@@ -25,6 +25,7 @@
 #include <fstream>
 #include <iostream>
 #include <limits>
+#include <map>
 #include <nlohmann/json.hpp>
 #include <stdexcept>
 #include <string>
@@ -178,6 +179,7 @@ BoundaryData boundary_data(const Mesh& mesh, const CaseSpec& spec, Eigen::Vector
   std::vector<Point> normal_sum(mesh.num_vertices(), Point::Zero());
   std::vector<int> curve_of(mesh.num_vertices(), -1);
   std::vector<const BoundaryCondition*> contact_bc(mesh.num_vertices(), nullptr);
+  std::map<const BoundaryCondition*, ScalarFunction> gap_of;  // compiled once per condition
   for (int e = 0; e < mesh.num_edges(); ++e) {
     if (!mesh.is_boundary_edge(e)) continue;
     const std::string& group = mesh.group_names()[mesh.edge_group(e)];
@@ -202,6 +204,8 @@ BoundaryData boundary_data(const Mesh& mesh, const CaseSpec& spec, Eigen::Vector
       case BoundaryCondition::Type::kContact:
         if (bc.obstacle.kind == Obstacle::Kind::kCircle)
           throw std::runtime_error(group + ": a circle obstacle is not supported here");
+        if (bc.obstacle.kind == Obstacle::Kind::kGap && !gap_of.count(&bc))
+          gap_of[&bc] = compile_scalar(bc.obstacle.gap);
         for (int v : {v0, v1}) {
           normal_sum[v] += mesh.edge_normal(e);
           if (mesh.edge_curve(e) >= 0) curve_of[v] = mesh.edge_curve(e);
@@ -231,7 +235,7 @@ BoundaryData boundary_data(const Mesh& mesh, const CaseSpec& spec, Eigen::Vector
     }
     NodalConstraint c{v, n, 0.0};
     if (bc->obstacle.kind == Obstacle::Kind::kGap) {
-      c.gap = compile_scalar(bc->obstacle.gap)(x.x(), x.y());  // given along the body normal
+      c.gap = gap_of.at(bc)(x.x(), x.y());  // given along the body normal
     } else {
       const Point nu = bc->obstacle.normal.normalized();  // from the obstacle into the body
       const double approach = -n.dot(nu);
