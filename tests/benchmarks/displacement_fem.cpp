@@ -19,6 +19,7 @@
 
 #include <Eigen/Sparse>
 #include <Eigen/UmfPackSupport>
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -256,7 +257,6 @@ struct Solution {
   Eigen::VectorXd x;
   std::vector<double> contact_force;  ///< λ_i ≥ 0 per constraint: the force −λ_i d_i on the body
   int iterations = 0;
-  int active = 0;
   std::vector<char> active_set;
   bool converged = false;
   double solve_s = 0.0;
@@ -332,7 +332,6 @@ Solution solve_contact(const Assembled& sys, const BoundaryData& bd, std::vector
     active = next;
   }
   s.iterations = std::min(s.iterations, kMaxIterations);
-  for (char a : active) s.active += a;
   s.active_set = std::move(active);
   return s;
 }
@@ -404,7 +403,7 @@ int run(const std::string& path, bool mixed) {
                               {"vertices", meshes.finest().num_vertices()},
                               {"dofs", sys.f.size()},
                               {"contact_vertices", bd.contact.size()},
-                              {"active", s.active},
+                              {"active", std::count(s.active_set.begin(), s.active_set.end(), 1)},
                               {"iterations", s.iterations},
                               {"coarse_iterations", coarse_iterations},
                               {"converged", s.converged},
