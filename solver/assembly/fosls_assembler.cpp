@@ -57,6 +57,12 @@ PointOperators point_operators(const ElementGeometry& g, const Point& x, double 
   return op;
 }
 
+/// tr(Aσ − ε(u)) at a point: the volumetric part of the constitutive residual, whose square
+/// the c2 term weights by ½ (the Frobenius norm) and `c2_volumetric` re-weights.
+Row12 volumetric_row(const PointOperators& op) {
+  return op.constitutive.row(0) + op.constitutive.row(3);
+}
+
 /// div σ_i as a function of the local DOFs (constant on the triangle).
 Eigen::Matrix<double, 2, 12> divergence_operator(const ElementGeometry& g) {
   Eigen::Matrix<double, 2, 12> d;
@@ -153,6 +159,10 @@ void FoslsAssembler::element_kernel(int t, Local& out) const {
   for (int q = 0; q < 3; ++q) {
     const PointOperators op = point_operators(g, g.edge_midpoint(q), kappa_);
     out.K.noalias() += (2.0 * w.c2 * wq) * op.constitutive.transpose() * op.constitutive;
+    if (w.c2_volumetric != 1.0) {
+      const auto trace = volumetric_row(op);
+      out.K.noalias() += (w.c2 * wq * (w.c2_volumetric - 1.0)) * trace.transpose() * trace;
+    }
     if (w.c4 != 0.0) out.K.noalias() += (2.0 * w.c4 * wq) * op.asymmetry.transpose() * op.asymmetry;
     const Eigen::Vector2d f = body_force(t, q);
     out.b.noalias() -= (2.0 * w.c1 * wq) * div.transpose() * f;
@@ -368,6 +378,8 @@ FunctionalParts FoslsAssembler::functional(const Vector& x_full) const {
       const Eigen::Vector2d f = body_force(t, q);
       m += w.c1 * wq * (div + f).squaredNorm();
       c += w.c2 * wq * (op.constitutive * xl).squaredNorm();
+      if (w.c2_volumetric != 1.0)
+        c += 0.5 * w.c2 * wq * (w.c2_volumetric - 1.0) * std::pow(volumetric_row(op).dot(xl), 2);
       a += w.c4 * wq * std::pow(op.asymmetry.dot(xl), 2);
     }
     parts.element[t] = m + c + a;

@@ -28,6 +28,9 @@ struct FunctionalWeights {
   double c2 = 1.0;
   double c3 = 0.1;
   double c4 = 0.0;
+  /// Weight of the volumetric part ½ (tr(Aσ − ε(u)))² of the c2 term against its deviatoric
+  /// part (1: the Frobenius norm; docs/method.md §2.2).
+  double c2_volumetric = 1.0;
 };
 
 /// A rigid obstacle: a plane, the outside of a circle, or a gap given as a function.

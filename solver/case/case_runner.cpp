@@ -52,7 +52,8 @@ ProblemData problem_data(const CaseSpec& spec, const Mesh& mesh) {
   const Weights& w = spec.weights;
   // The c1 term in units of the body's size (mesh/length_scale.hpp).
   const double l = w.length_scale;
-  d.weights = {.c1 = w.c1 * l * l, .c2 = w.c2, .c3 = w.c3, .c4 = w.c4};
+  d.weights = {
+      .c1 = w.c1 * l * l, .c2 = w.c2, .c3 = w.c3, .c4 = w.c4, .c2_volumetric = w.c2_volumetric};
   // A zero component stays empty: the assembler then stores no body force at all.
   for (int i = 0; i < 2; ++i)
     if (const Scalar& f = spec.body_force[i]; !f.is_constant() || f.value != 0.0)
@@ -102,6 +103,7 @@ CaseException indefinite(const CaseSpec& spec, const MeshHierarchy& meshes,
   const Weights& w = spec.weights;
   std::ostringstream m;
   m << "the weights c1 = " << w.c1 << ", c2 = " << w.c2 << ", c3 = " << w.c3 << ", c4 = " << w.c4
+    << ", c2_volumetric = " << w.c2_volumetric
     << " make the FOSLS matrix indefinite (the contact term c3 is too large relative to c1 and "
        "c2)";
   if (w.c3_auto) {

@@ -74,6 +74,7 @@ struct Weights {
   /// (assembly/contact_weight.hpp) and `c3_limit` records the limit it was chosen from.
   double c3 = 0.1;
   double c4 = 0.0;
+  double c2_volumetric = 1.0;  ///< docs/method.md §2.2
   bool c3_auto = true;
   double c3_limit = 0.0;  ///< 0 when not computed
   /// ℓ of mesh/length_scale.hpp, set when the case runs: the c1 term is weighted c1 ℓ².

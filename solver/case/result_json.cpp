@@ -217,6 +217,7 @@ json result_json(const CaseSpec& spec, const SolverReport& report, const Contact
                   {"c2", spec.weights.c2},
                   {"c3", spec.weights.c3},
                   {"c4", spec.weights.c4},
+                  {"c2_volumetric", spec.weights.c2_volumetric},
                   {"c3_rule", spec.weights.c3_auto ? "auto" : "given"},
                   {"c3_limit", spec.weights.c3_limit > 0 ? json(spec.weights.c3_limit) : json()},
                   {"length_scale", spec.weights.length_scale}};

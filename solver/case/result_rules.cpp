@@ -195,7 +195,7 @@ ObjectRulePtr mesh_echo_rule() {
 
 ObjectRulePtr weights_echo_rule() {
   std::vector<FieldRule> fields;
-  for (const char* c : {"c1", "c2", "c3", "c4"})
+  for (const char* c : {"c1", "c2", "c3", "c4", "c2_volumetric"})
     fields.push_back(output_field(c, number(), "1", std::string("weight ") + c + " used"));
   fields.push_back(output_field("c3_rule", choice_value({"auto", "given"}), "",
                                 "\"auto\" when c3 was chosen from the mesh, \"given\" when the "

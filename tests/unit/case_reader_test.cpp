@@ -151,7 +151,7 @@ TEST(ReadCase, DefaultsForOptionalFields) {
 TEST(ReadCase, EveryFieldIsRead) {
   json j = valid_case();
   j["body_force"] = {"sin(x)", 2};
-  j["weights"] = {{"c1", 2}, {"c2", 3}, {"c3", 0}, {"c4", 0.25}};
+  j["weights"] = {{"c1", 2}, {"c2", 3}, {"c3", 0}, {"c4", 0.25}, {"c2_volumetric", 2}};
   j["solver"] = {{"method", "pgs"},        {"tolerance", 1e-6},  {"max_iterations", 77},
                  {"smoother", "point"},    {"pre_smoothing", 0}, {"post_smoothing", 0},
                  {"coarse_obstacle", "c"}, {"cycle", "F"}};
@@ -169,6 +169,7 @@ TEST(ReadCase, EveryFieldIsRead) {
   EXPECT_EQ(s.weights.c2, 3.0);
   EXPECT_EQ(s.weights.c3, 0.0);
   EXPECT_EQ(s.weights.c4, 0.25);
+  EXPECT_EQ(s.weights.c2_volumetric, 2.0);
   EXPECT_EQ(s.solver.method, SolverMethod::kPgs);
   EXPECT_EQ(s.solver.tolerance, 1e-6);
   EXPECT_EQ(s.solver.max_iterations, 77);
