@@ -46,7 +46,7 @@ ObjectRulePtr weights_rule() {
                      "weight of the volumetric part ½‖tr(Aσ − ε(u))‖² of the c2 term against "
                      "its deviatoric part (1: the plain L² norm, the default). It moves the "
                      "contact force on a given mesh: 2 for an incompressible body and 0.5 for "
-                     "ν = 0.25 made the force 2–10 times more accurate at every refinement on "
+                     "ν = 0.25 made the force 1.7–10 times more accurate at every refinement on "
                      "the measured bodies (docs/method.md §2.2)"),
   };
   return r;
