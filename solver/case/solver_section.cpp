@@ -42,12 +42,13 @@ ObjectRulePtr weights_rule() {
                      "value that keeps the functional convex on this mesh, at most 0.1 "
                      "(docs/method.md §2.1)"),
       optional_field("c4", number_value(Range::non_negative()), w.c4, "weight of ‖as σ‖²"),
-      optional_field("c2_volumetric", number_value(Range::closed(0.1, 10)), w.c2_volumetric,
-                     "weight of the volumetric part ½‖tr(Aσ − ε(u))‖² of the c2 term against "
-                     "its deviatoric part (1: the plain L² norm, the default). It moves the "
-                     "contact force on a given mesh: 2 for an incompressible body and 0.5 for "
-                     "ν = 0.25 made the force 1.7–10 times more accurate at every refinement on "
-                     "the measured bodies (docs/method.md §2.2)"),
+      optional_field(
+          "c2_volumetric", number_value(Range::closed(0.1, 10)), w.c2_volumetric,
+          "weight of the volumetric part ½‖tr(Aσ − ε(u))‖² of the c2 term against "
+          "its deviatoric part (1: the plain L² norm, the default). It moves the "
+          "contact force on a given mesh: 2 for an incompressible body and 0.5 for "
+          "ν = 0.25–0.3 made the force 1.6–10 times more accurate at every refinement on "
+          "the measured bodies (docs/method.md §2.2)"),
   };
   return r;
 }
