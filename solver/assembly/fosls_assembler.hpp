@@ -26,7 +26,7 @@ struct AssembledProblem {
 /// triangle plus the contact term of its contact edge, if it has one.
 struct FunctionalParts {
   double momentum = 0.0;      ///< C1 ‖div σ + f‖²
-  double constitutive = 0.0;  ///< C2 ‖Aσ − ε(u)‖²
+  double constitutive = 0.0;  ///< C2 ‖Aσ − ε(u)‖² (volumetric part × c2_volumetric)
   double contact = 0.0;       ///< C3 ⟨u·n − g, σ_nn⟩
   double asymmetry = 0.0;     ///< C4 ‖as σ‖²
   std::vector<double> element;
