@@ -22,6 +22,7 @@ int main() {
   using namespace fosls::service;
   fosls::die_with_parent();
   fosls::use_one_malloc_arena();
+  fosls::keep_freed_memory();
   // Nothing a library prints can corrupt the answer: fd 1 now writes to stderr.
   const int protocol_fd = fosls::take_stdout_for_answer();
   try {

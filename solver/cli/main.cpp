@@ -36,6 +36,7 @@ int main(int argc, char** argv) {
   if (!std::getenv("OMP_WAIT_POLICY") && setenv("OMP_WAIT_POLICY", "passive", 1) == 0)
     execv("/proc/self/exe", argv);  // returns only on failure: then run as we are
   use_one_malloc_arena();
+  keep_freed_memory();
   try {
     CLI::App app{"FOSLS solver for 2D frictionless elastic contact (Signorini problems)",
                  "fosls-contact"};

@@ -2,8 +2,19 @@
 
 #include <malloc.h>
 
+#include <limits>
+
 namespace fosls {
 
 bool use_one_malloc_arena() { return mallopt(M_ARENA_MAX, 1) == 1; }
+
+bool keep_freed_memory() {
+  // Blocks below 1 GiB come from the heap, and its top is kept up to 2 GiB (mallopt takes an
+  // int): a larger block is rare enough to keep a mapping of its own.
+  constexpr int kMmapThreshold = 1 << 30;
+  constexpr int kTrimThreshold = std::numeric_limits<int>::max();
+  return mallopt(M_MMAP_THRESHOLD, kMmapThreshold) == 1 &&
+         mallopt(M_TRIM_THRESHOLD, kTrimThreshold) == 1;
+}
 
 }  // namespace fosls

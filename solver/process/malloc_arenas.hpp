@@ -1,6 +1,6 @@
 #pragma once
-// One malloc arena for the whole process, for the programs that solve (fosls-contact,
-// fosls-solve-job). glibc gives each new thread that allocates an arena of its own (up to eight
+// How the programs that solve (fosls-contact, fosls-solve-job) set up malloc. One arena for
+// the whole process: glibc gives each new thread that allocates an arena of its own (up to eight
 // per core), and memory freed in an arena is reused only by allocations made from it: with the
 // OpenMP threads of assembly, factorisation and Galerkin products, a two-thread solve peaked
 // above a one-thread solve of the same case (408 against 369 MiB at 524k unknowns, +11 %;
@@ -12,5 +12,17 @@ namespace fosls {
 
 /// Call at the start of main, before any thread exists. Returns false if glibc refused.
 bool use_one_malloc_arena();
+
+/// Memory a solve frees stays in the process for its next allocations, up to the solve's own
+/// peak, instead of going back to the kernel and coming back page by page: glibc returns every
+/// freed block above its mmap threshold (at most 32 MiB, raised as blocks are freed) and the top
+/// of the heap above twice that, and a solve frees and allocates matrices of the same sizes over
+/// and over (each rebuild of the coarse levels, each adaptive step). Each page that comes back
+/// is a page fault; on Hertz refinements 5 a third of the solve's 118 700 faults were such
+/// re-faults, and the system time fell by a third without them (docs/performance.md). The peak
+/// is unchanged: freed memory is reused, not added to. For the programs that run one solve and
+/// exit; a long-running server should give memory back. Call at the start of main. Returns false
+/// if glibc refused.
+bool keep_freed_memory();
 
 }  // namespace fosls
