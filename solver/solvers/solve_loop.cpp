@@ -280,7 +280,7 @@ bool nested_initial_guess(const BoxQp& qp, const LevelHierarchy& h, const Solver
         xc[i] = std::clamp(xc[i], problems[j].lower[i], problems[j].upper[i]);
     }
     // The coarsest level is solved by pdas on CHOLMOD: a handful of factorisations. (The cycle's
-    // exact coarse solver, a primal active-set method, refactorises once per bound it meets:
+    // exact coarse solver, then a primal active-set method, refactorised once per bound it met:
     // from x = 0 on a coarsest level of 15 000 unknowns with ~100 contact bounds — the rounded
     // punch, whose coarse levels are dropped by the normal-turn rule — it took 6.5 s of a
     // 9.6 s solve.) The initial guess needs no monotone path: it is clipped to the bounds.

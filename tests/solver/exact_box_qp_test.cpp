@@ -3,6 +3,7 @@
 //   minimise ½ δᵀAδ − rᵀδ  subject to  lo ≤ δ ≤ hi,  lo ≤ 0 ≤ hi.
 #include <gtest/gtest.h>
 
+#include <cstdio>
 #include <random>
 
 #include "box_qp_enumeration.hpp"
@@ -26,16 +27,45 @@ TEST(DenseBoxQp, MatchesEnumerationOfActiveSets) {
 }
 
 TEST(SparseBoxQp, MatchesEnumerationOfActiveSets) {
+  // Here every solve ends by primal–dual steps whose active sets settled; the fallback to the
+  // primal method is checked by the next test.
   std::mt19937 rng(11);
+  int by_primal_dual = 0, by_primal = 0;
   for (int trial = 0; trial < 300; ++trial) {
     const RandomBoxQp p = testing::random_box_qp(rng, 1 + trial % 7);
     SparseBoxQpSolver solver(p.A);
     Vector delta;
     EXPECT_TRUE(solver.solve(p.r, p.lo, p.hi, delta));
+    (solver.solved_primal_dual() == 1 ? by_primal_dual : by_primal) += 1;
     const Vector best = testing::enumerate_box_qp(p.A, p.r, p.lo, p.hi);
     EXPECT_LE((delta - best).norm(), 1e-10 * (1.0 + best.norm())) << "trial " << trial;
     EXPECT_TRUE(testing::within(delta, p.lo, p.hi)) << "trial " << trial;
   }
+  std::printf("ended by primal-dual steps: %d, by the primal method: %d\n", by_primal_dual,
+              by_primal);
+  EXPECT_GT(by_primal_dual, 150);
+}
+
+TEST(SparseBoxQp, FallsBackToThePrimalMethodWhenPrimalDualStepsCycle) {
+  // An SPD matrix on which the primal–dual active sets cycle (found by a search over random
+  // 3 × 3 problems): the solve must still end at the exact minimiser, by the primal method.
+  Eigen::MatrixXd a(3, 3);
+  a << 2.4604636436779996, -2.997937478987005, -2.695403457194911,  //
+      -2.997937478987005, 3.8632606740264768, 3.2181822276326146,   //
+      -2.695403457194911, 3.2181822276326146, 3.3429986653379595;
+  const SparseMatrix sparse = a.sparseView();
+  Vector r(3), lo(3), hi(3);
+  r << -0.14216403090123211, -0.8310339591200061, 0.49867660991367335;
+  lo << -0.95977563233322127, -0.5304480608255786, -0.92528623665586618;
+  hi << 0.077530391687385222, 0.39716859109242436, 0.071391235607463827;
+  SparseBoxQpSolver solver(sparse);
+  Vector delta;
+  EXPECT_TRUE(solver.solve(r, lo, hi, delta));
+  EXPECT_EQ(solver.solved_primal_dual(), 0);
+  EXPECT_EQ(solver.primal_dual_steps(), 20);  // the cap
+  const Vector best = testing::enumerate_box_qp(sparse, r, lo, hi);
+  EXPECT_LE((delta - best).norm(), 1e-10 * (1.0 + best.norm()));
+  EXPECT_TRUE(testing::within(delta, lo, hi));
 }
 
 TEST(SparseBoxQp, ReusesItsFactorisationAcrossCallsWithoutChangingTheAnswer) {
