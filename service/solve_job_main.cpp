@@ -17,9 +17,13 @@
 #include "job_process_protocol.hpp"
 #include "process/child_process.hpp"
 #include "process/malloc_arenas.hpp"
+#include "process/solver_environment.hpp"
 
-int main() {
+int main(int /*argc*/, char** argv) {
   using namespace fosls::service;
+  // Sleeping OpenMP waiters and huge pages for malloc's large blocks (solver_environment.hpp);
+  // before anything reads stdin: the restarted program reads the case.
+  fosls::restart_with_solver_environment(argv);
   fosls::die_with_parent();
   fosls::use_one_malloc_arena();
   fosls::keep_freed_memory();

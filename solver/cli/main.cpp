@@ -12,10 +12,7 @@
 // Exit codes: 0 converged, 1 unexpected failure, 2 bad command line or invalid case,
 // 3 solved but not converged (the result is still written).
 
-#include <unistd.h>
-
 #include <CLI/CLI.hpp>
-#include <cstdlib>
 #include <exception>
 #include <iostream>
 
@@ -26,15 +23,12 @@
 #include "cli/schema_command.hpp"
 #include "cli/solve_command.hpp"
 #include "process/malloc_arenas.hpp"
+#include "process/solver_environment.hpp"
 
 int main(int argc, char** argv) {
   using namespace fosls;
-  // OpenMP threads that wait should sleep, not spin: with spinning waiters a solve on two
-  // threads ran 1.35× slower than on one while another process held a core, with sleeping
-  // ones 7 % faster (docs/performance.md). libgomp reads the policy when it is loaded, before
-  // main, so the program starts itself again with it set, unless the caller chose one.
-  if (!std::getenv("OMP_WAIT_POLICY") && setenv("OMP_WAIT_POLICY", "passive", 1) == 0)
-    execv("/proc/self/exe", argv);  // returns only on failure: then run as we are
+  // Sleeping OpenMP waiters and huge pages for malloc's large blocks (solver_environment.hpp).
+  restart_with_solver_environment(argv);
   use_one_malloc_arena();
   keep_freed_memory();
   try {
