@@ -13,8 +13,10 @@ bool keep_freed_memory() {
   // int): a larger block is rare enough to keep a mapping of its own.
   constexpr int kMmapThreshold = 1 << 30;
   constexpr int kTrimThreshold = std::numeric_limits<int>::max();
-  return mallopt(M_MMAP_THRESHOLD, kMmapThreshold) == 1 &&
-         mallopt(M_TRIM_THRESHOLD, kTrimThreshold) == 1;
+  // Each is set even if glibc refuses the other (old versions cap the mmap threshold at 32 MiB).
+  const bool mmap_set = mallopt(M_MMAP_THRESHOLD, kMmapThreshold) == 1;
+  const bool trim_set = mallopt(M_TRIM_THRESHOLD, kTrimThreshold) == 1;
+  return mmap_set && trim_set;
 }
 
 }  // namespace fosls

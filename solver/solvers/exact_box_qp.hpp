@@ -28,9 +28,10 @@ bool solve_dense_box_qp(const Eigen::MatrixXd& A, const Vector& r, const Vector&
 /// with many contact bounds (the rounded punch at refinements 1: 15 120 unknowns, one level)
 /// that was 3.4 s of a 4.2 s solve. So a solve first tries primal–dual active-set steps, which
 /// change many bounds per factorisation; when their active sets settle, the result is the exact
-/// minimiser, feasible and with J(δ) ≤ J(0) = 0 — all the cycle's monotonicity needs of the
-/// coarse correction. Only when they do not settle (primal–dual steps can cycle) or the result
-/// fails those checks in rounding does the primal method run, from δ = 0 as before.
+/// minimiser, feasible (clipped for rounding) and with J(δ) ≤ J(0) = 0 (checked) — all the
+/// cycle's monotonicity needs of the coarse correction. Only when they do not settle
+/// (primal–dual steps can cycle) or the check fails in rounding does the primal method run,
+/// from δ = 0 as before.
 class SparseBoxQpSolver {
  public:
   /// Throws IndefiniteSystemError when A is not positive definite.

@@ -74,8 +74,11 @@ TEST(MallocArenas, AFreedBlockComesBackWithoutPageFaults) {
   constexpr std::size_t kBytes = 64u << 20;
   const long first = faults_of_a_written_block(kBytes);
   const long again = faults_of_a_written_block(kBytes);
-  EXPECT_GT(first, 1000);  // the pages were new
-  EXPECT_LT(again, first / 20) << "first " << first << " faults, again " << again;
+  // With 4 KiB pages the first pass faults 16 384 times, with huge pages (an inherited
+  // GLIBC_TUNABLES, a kernel that gives them always) a few hundred; either way the pages were
+  // new, and kept memory comes back with at most a twentieth of those faults.
+  EXPECT_GT(first, 0);
+  EXPECT_LE(again * 20, first) << "first " << first << " faults, again " << again;
 }
 
 }  // namespace
