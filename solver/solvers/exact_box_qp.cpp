@@ -114,7 +114,10 @@ struct SparseBoxQpSolver::Factor {
 };
 
 SparseBoxQpSolver::SparseBoxQpSolver(const SparseMatrix& A)
-    : A_(A), full_(std::make_unique<Factor>()), last_(std::make_unique<Factor>()) {
+    : A_(A),
+      diagonal_(A.diagonal()),
+      full_(std::make_unique<Factor>()),
+      last_(std::make_unique<Factor>()) {
   full_->ldlt.compute(A_);
   bool ok = full_->ldlt.info() == Eigen::Success;
   if (ok)
@@ -174,7 +177,6 @@ bool SparseBoxQpSolver::solve_primal_dual(const Vector& r, const Vector& lo, con
   // Unchanged sets after a solve are the KKT conditions of the box QP.
   constexpr int kMaxSteps = 20;
   const int n = static_cast<int>(r.size());
-  const Vector diagonal = A_.diagonal();
   std::vector<signed char> state(n, 0), next(n, 0);
   Vector d = Vector::Zero(n), mu = r;
   delta.setZero(n);
@@ -182,9 +184,9 @@ bool SparseBoxQpSolver::solve_primal_dual(const Vector& r, const Vector& lo, con
     for (int i = 0; i < n; ++i) {
       if (lo[i] == hi[i])
         s[i] = 2;
-      else if (is_bounded_above(hi[i]) && mu[i] + diagonal[i] * (delta[i] - hi[i]) > 0)
+      else if (is_bounded_above(hi[i]) && mu[i] + diagonal_[i] * (delta[i] - hi[i]) > 0)
         s[i] = 1;
-      else if (is_bounded_below(lo[i]) && mu[i] + diagonal[i] * (delta[i] - lo[i]) < 0)
+      else if (is_bounded_below(lo[i]) && mu[i] + diagonal_[i] * (delta[i] - lo[i]) < 0)
         s[i] = -1;
       else
         s[i] = 0;

@@ -54,6 +54,7 @@ class SparseBoxQpSolver {
   bool solve_primal_dual(const Vector& r, const Vector& lo, const Vector& hi, Vector& delta);
 
   SparseMatrix A_;
+  Vector diagonal_;  ///< A's diagonal: the primal–dual steps' scale of each DOF
   struct Factor;
   std::unique_ptr<Factor> full_;
   std::unique_ptr<Factor> last_;
