@@ -132,7 +132,7 @@ std::function<void(const httplib::Request&, httplib::Response&)> HttpApi::handle
                          std::string(route.path));
 }
 
-void HttpApi::install(httplib::Server& server) {
+void HttpApi::install(BoundedHttpServer& server) {
   server.set_payload_max_length(options_.max_body_bytes);
   // httplib writes headers and body separately; with Nagle's algorithm the body waits for the
   // client's delayed ACK (~40 ms on Linux) on every keep-alive response.
@@ -147,6 +147,8 @@ void HttpApi::install(httplib::Server& server) {
     on_exception(req, res, e);
   });
   server.set_logger([this](const Request& req, const Response& res) { on_logged(req, res); });
+  server.set_head_refusal_handler([this](const Request& req, const HeadRejection& rejection,
+                                         Response& res) { on_refused_head(req, rejection, res); });
 
   // Built once: they depend only on the program (the rules tables), not on the request.
   contract_ = {{"/v1/openapi.json", dump(openapi_document())}};
@@ -251,12 +253,19 @@ HandlerResponse HttpApi::on_error(const Request& req, Response& res) {
   } else if (res.status == 413) {
     p = problems::payload_too_large(options_.max_body_bytes);
   } else if (res.status == 400) {
+    // What follows a request cpp-httplib could not parse or read is not a request.
+    res.set_header("Connection", "close");
     p = problems::bad_request("the HTTP request is malformed or its body could not be read");
   } else if (res.status == 414) {
     p = problems::uri_too_long();
   }
   send_problem(req, res, p);
   return HandlerResponse::Handled;
+}
+
+void HttpApi::on_refused_head(const Request& req, const HeadRejection& rejection, Response& res) {
+  send_problem(req, res, problems::refused_request_head(rejection.status, rejection.detail));
+  on_logged(req, res);
 }
 
 void HttpApi::on_exception(const Request& req, Response& res, std::exception_ptr error) {

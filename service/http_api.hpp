@@ -14,6 +14,7 @@
 #include <vector>
 
 #include "api_routes.hpp"
+#include "bounded_http_server.hpp"
 #include "case/case_error.hpp"
 #include "event_log.hpp"
 #include "job_store.hpp"
@@ -33,7 +34,7 @@ struct HttpApiOptions {
   int max_json_depth = 64;                ///< deeper nesting is refused before parsing
 };
 
-/// Installs the API on an httplib::Server. Handlers only touch the store and wake workers;
+/// Installs the API on a BoundedHttpServer. Handlers only touch the store and wake workers;
 /// they never solve.
 class HttpApi {
  public:
@@ -42,7 +43,7 @@ class HttpApi {
           EventLog& log, HttpApiOptions options);
 
   /// Registers routes and handlers, and sets the payload limit on `server`.
-  void install(httplib::Server& server);
+  void install(BoundedHttpServer& server);
 
   /// The route template of a path for metrics labels ("/v1/jobs/{id}/result", "static").
   static std::string route_template(const std::string& path);
@@ -67,6 +68,7 @@ class HttpApi {
   httplib::Server::HandlerResponse pre_route(const Request& req, Response& res);
   int expect_continue(const Request& req, Response& res);
   httplib::Server::HandlerResponse on_error(const Request& req, Response& res);
+  void on_refused_head(const Request& req, const HeadRejection& rejection, Response& res);
   void on_exception(const Request& req, Response& res, std::exception_ptr error);
   void on_logged(const Request& req, const Response& res);
 

@@ -18,6 +18,7 @@
 #include <iostream>
 #include <thread>
 
+#include "bounded_http_server.hpp"
 #include "case_job_runner.hpp"
 #include "elastic_thread_pool.hpp"
 #include "event_log.hpp"
@@ -79,7 +80,8 @@ int serve(const ServeOptions& o, const sigset_t& stop_signals) {
               submitted_case_validator(o.worker.job_memory_bytes(), !o.admit_over_budget), metrics,
               log, api_options);
 
-  httplib::Server server;
+  // Request heads are read under limits before cpp-httplib parses them (bounded_http_server.hpp).
+  BoundedHttpServer server;
   // The Debian library is compiled: CPPHTTPLIB_THREAD_POOL_COUNT has no effect, only this.
   const int http_threads = o.http_threads;
   // Grows up to 16 times that while every thread holds a connection, so slow or silent
@@ -89,7 +91,7 @@ int serve(const ServeOptions& o, const sigset_t& stop_signals) {
     return new ElasticThreadPool(http_threads, 16 * http_threads);
   };
   server.set_read_timeout(2);
-  server.set_keep_alive_timeout(2);  // idle keep-alive connections delay shutdown this long
+  server.set_keep_alive_timeout(2);
   server.set_keep_alive_max_count(1000);
   api.install(server);
 

@@ -93,6 +93,19 @@ Problem payload_too_large(std::size_t limit) {
 
 Problem uri_too_long() { return make(414, nullptr, "the request URI is too long"); }
 
+Problem refused_request_head(int status, const std::string& detail) {
+  switch (status) {
+    case 400:
+      return make(400, "malformed-request-head", detail);
+    case 408:
+      return make(408, "request-head-timeout", detail);
+    case 431:
+      return make(431, "header-fields-too-large", detail);
+    default:
+      return make(status, nullptr, detail);
+  }
+}
+
 Problem unsupported_media_type(const std::string& got) {
   return make(415, "unsupported-media-type",
               "send the case with 'Content-Type: application/json' (got '" +

@@ -25,11 +25,14 @@ Problem method_not_allowed(const std::string& method, const std::string& path,
                            const std::string& allowed);  // 405
 /// 409 for the result or VTU of a job that has none (yet or ever).
 Problem job_without_result(const Job& job);
-Problem job_finished(std::int64_t id, JobState state);   // 409, cancel
-Problem job_not_finished(std::int64_t id);               // 409, delete
-Problem length_required(const std::string& why);         // 411
-Problem payload_too_large(std::size_t limit);            // 413
-Problem uri_too_long();                                  // 414
+Problem job_finished(std::int64_t id, JobState state);  // 409, cancel
+Problem job_not_finished(std::int64_t id);              // 409, delete
+Problem length_required(const std::string& why);        // 411
+Problem payload_too_large(std::size_t limit);           // 413
+Problem uri_too_long();                                 // 414
+/// A request head refused while it was read (bounded_http_server.hpp): 400 malformed, 408 too
+/// slow, 414 request line too long, 431 header fields too large or too many.
+Problem refused_request_head(int status, const std::string& detail);
 Problem unsupported_media_type(const std::string& got);  // 415
 Problem invalid_case(std::vector<CaseError> errors);     // 422
 Problem idempotency_key_reused(std::int64_t job_id);     // 422

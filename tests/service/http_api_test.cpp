@@ -115,7 +115,7 @@ class Service {
   SqliteJobStore store_;
   WorkerPool pool_;
   HttpApi api_;
-  httplib::Server server_;
+  BoundedHttpServer server_;
   int port_ = 0;
   std::thread thread_;
 };

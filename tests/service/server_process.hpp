@@ -66,6 +66,7 @@ class ServerProcess {
   ServerProcess& operator=(const ServerProcess&) = delete;
 
   int port() const { return port_; }
+  pid_t pid() const { return pid_; }
 
   /// SIGTERM and wait (SIGKILL after 30 s); returns the exit status (-1 if it was killed).
   int stop() {
