@@ -1,17 +1,34 @@
 #pragma once
-// The routes of the HTTP API as one table (docs/service.md, "API"): the server registers
-// exactly these (HttpApi::install), 405 answers and metrics labels are derived from them, and
-// the OpenAPI document lists exactly these (tested), so a new route is added in one place.
+// The routes of the HTTP API as one table (docs/service.md, "API"): each entry is a method, a
+// path template, its handler in HttpApi and its OpenAPI operation, side by side. The server
+// registers exactly these (HttpApi::install), 405 answers and metrics labels are derived from
+// them, and the OpenAPI document is built from them (openapi.cpp). A new route is one entry
+// here and its handler in HttpApi (docs/architecture.md, "Where to add").
 
+#include <httplib.h>
+
+#include <cstdint>
+#include <nlohmann/json.hpp>
 #include <span>
 #include <string>
 #include <string_view>
+#include <variant>
 
 namespace fosls::service {
 
+class HttpApi;
+
 struct ApiRoute {
+  using PlainHandler = void (HttpApi::*)(const httplib::Request&, httplib::Response&);
+  /// For templates with "{id}": called with the job id parsed from the path (a path whose
+  /// segment is not a job id is answered 404 before).
+  using JobHandler = void (HttpApi::*)(const httplib::Request&, httplib::Response&,
+                                       std::int64_t job_id);
+
   std::string_view method;  ///< "GET", "POST" or "DELETE"
   std::string_view path;    ///< template; "{id}" stands for one path segment
+  std::variant<PlainHandler, JobHandler> handler;
+  nlohmann::json (*operation)();  ///< its OpenAPI 3.1 operation object
 };
 
 std::span<const ApiRoute> api_routes();

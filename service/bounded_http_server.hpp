@@ -2,8 +2,8 @@
 // The HTTP server of fosls-serve: cpp-httplib's Server with its own per-connection loop, so
 // that every request head is read under limits before cpp-httplib parses it. Debian's
 // cpp-httplib 0.11.4 is a compiled library (its CPPHTTPLIB_* macros have no effect) whose
-// head reader keeps any number of 8 KiB field lines: one client streaming them grew the
-// server to 1.45 GB. Its per-connection function is a virtual (`process_and_close_socket`)
+// head reader keeps any number of 8 KiB field lines, so one client streaming them could grow
+// the server without bound. Its per-connection function is a virtual (`process_and_close_socket`)
 // and `process_request(Stream&, …)` is open to subclasses, so this class reads each head into
 // its own HttpConnection with a RequestHeadScanner (bounded, strict RFC 9112 field syntax,
 // a deadline for the whole head) and hands cpp-httplib only heads that passed; a refused head

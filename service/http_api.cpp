@@ -92,50 +92,25 @@ std::string HttpApi::route_template(const std::string& path) {
 
 std::function<void(const httplib::Request&, httplib::Response&)> HttpApi::handler(
     const ApiRoute& route) {
-  using JobHandler = void (HttpApi::*)(const Request&, Response&, std::int64_t);
-  using PlainHandler = void (HttpApi::*)(const Request&, Response&);
-  using Key = std::pair<std::string_view, std::string_view>;
-  static const std::map<Key, PlainHandler> plain = {
-      {{"POST", "/v1/jobs"}, &HttpApi::post_job},
-      {{"GET", "/v1/jobs"}, &HttpApi::list_jobs},
-      {{"GET", "/v1/openapi.json"}, &HttpApi::get_contract},
-      {{"GET", "/v1/schemas/case.json"}, &HttpApi::get_contract},
-      {{"GET", "/v1/schemas/result.json"}, &HttpApi::get_contract},
-      {{"GET", "/healthz"}, &HttpApi::healthz},
-      {{"GET", "/metrics"}, &HttpApi::metrics},
+  if (const auto* plain = std::get_if<ApiRoute::PlainHandler>(&route.handler))
+    return [this, h = *plain](const Request& req, Response& res) { (this->*h)(req, res); };
+  return [this, h = std::get<ApiRoute::JobHandler>(route.handler), pattern = route.path](
+             const Request& req, Response& res) {
+    const std::string text = id_segment(pattern, req.path);
+    if (auto id = parse_job_id(text)) {
+      (this->*h)(req, res, *id);
+    } else {
+      send_problem(
+          req, res,
+          problems::not_found("there is no job '" + text + "' (job ids are positive integers)"));
+    }
   };
-  static const std::map<Key, JobHandler> with_id = {
-      {{"GET", "/v1/jobs/{id}"}, &HttpApi::get_job},
-      {{"DELETE", "/v1/jobs/{id}"}, &HttpApi::delete_job},
-      {{"GET", "/v1/jobs/{id}/result"}, &HttpApi::get_result},
-      {{"GET", "/v1/jobs/{id}/solution.vtu"}, &HttpApi::get_solution},
-      {{"GET", "/v1/jobs/{id}/case"}, &HttpApi::get_case},
-      {{"POST", "/v1/jobs/{id}/cancel"}, &HttpApi::cancel_job},
-  };
-  const Key key{route.method, route.path};
-  if (auto it = plain.find(key); it != plain.end())
-    return [this, h = it->second](const Request& req, Response& res) { (this->*h)(req, res); };
-  if (auto it = with_id.find(key); it != with_id.end())
-    return [this, h = it->second, pattern = route.path](const Request& req, Response& res) {
-      const std::string text = id_segment(pattern, req.path);
-      if (auto id = parse_job_id(text)) {
-        (this->*h)(req, res, *id);
-      } else {
-        send_problem(
-            req, res,
-            problems::not_found("there is no job '" + text + "' (job ids are positive integers)"));
-      }
-    };
-  // A route in the table without a handler is a programming error, found by every test that
-  // starts a server.
-  throw std::logic_error("no handler for " + std::string(route.method) + " " +
-                         std::string(route.path));
 }
 
 void HttpApi::install(BoundedHttpServer& server) {
   server.set_payload_max_length(options_.max_body_bytes);
   // httplib writes headers and body separately; with Nagle's algorithm the body waits for the
-  // client's delayed ACK (~40 ms on Linux) on every keep-alive response.
+  // client's delayed ACK on every keep-alive response (docs/service.md, "HTTP limits").
   server.set_tcp_nodelay(true);
   server.set_pre_routing_handler(
       [this](const Request& req, Response& res) { return pre_route(req, res); });

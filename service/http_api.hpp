@@ -49,6 +49,7 @@ class HttpApi {
   static std::string route_template(const std::string& path);
 
  private:
+  friend std::span<const ApiRoute> api_routes();  // the route table names the handlers
   using Request = httplib::Request;
   using Response = httplib::Response;
 
@@ -72,7 +73,7 @@ class HttpApi {
   void on_exception(const Request& req, Response& res, std::exception_ptr error);
   void on_logged(const Request& req, const Response& res);
 
-  /// The handler of a route of api_routes(); throws std::logic_error for a route without one.
+  /// The handler of a route of api_routes() as httplib calls it (job ids parsed first).
   std::function<void(const Request&, Response&)> handler(const ApiRoute& route);
 
   /// 404 problem for an unknown job id.

@@ -5,6 +5,8 @@
 #include <cstdio>
 #include <ctime>
 
+#include "openapi_builders.hpp"
+
 namespace fosls::service {
 
 std::string_view to_string(JobState state) {
@@ -89,6 +91,54 @@ nlohmann::json job_to_json(const Job& job) {
     j["progress"] = nullptr;
   }
   return j;
+}
+
+nlohmann::json job_json_schema() {
+  using nlohmann::json;
+  using openapi::nullable;
+  using openapi::string_field;
+  json links = {{"type", "object"},
+                {"additionalProperties", false},
+                {"required", {"self", "result", "solution", "cancel", "case"}},
+                {"properties",
+                 {{"self", string_field("this job")},
+                  {"result", string_field("its result JSON")},
+                  {"solution", string_field("its VTU file")},
+                  {"cancel", string_field("POST here to cancel it")},
+                  {"case", string_field("the case as submitted")}}}};
+  json progress = {
+      {"type", "object"},
+      {"additionalProperties", false},
+      {"required", {"iteration", "kkt_residual", "energy"}},
+      {"properties",
+       {{"iteration", {{"type", "integer"}, {"minimum", 0}}},
+        {"kkt_residual", nullable({{"type", "number"}})},
+        {"energy", nullable({{"type", "number"}, {"description", "the scaled functional J"}})}}}};
+  json time = {{"type", "string"}, {"format", "date-time"}};
+  return {
+      {"type", "object"},
+      {"additionalProperties", false},
+      {"required",
+       {"id", "name", "state", "created_at", "started_at", "finished_at", "attempts",
+        "cancel_requested", "progress", "error", "converged", "stop_reason", "links"}},
+      {"properties",
+       {{"id", {{"type", "integer"}, {"minimum", 1}}},
+        {"name", string_field("the case's name")},
+        {"state", {{"enum", {"queued", "running", "succeeded", "failed", "cancelled"}}}},
+        {"created_at", time},
+        {"started_at", nullable(time)},
+        {"finished_at", nullable(time)},
+        {"attempts", {{"type", "integer"}, {"minimum", 0}}},
+        {"cancel_requested", {{"type", "boolean"}}},
+        {"progress", nullable(progress)},
+        {"error", nullable(string_field("why it failed, with JSON pointers for case problems"))},
+        {"converged", nullable({{"type", "boolean"},
+                                {"description",
+                                 "the result's converged; null until a result is stored. A job can "
+                                 "succeed without converging unless the service runs with "
+                                 "--fail-unconverged"}})},
+        {"stop_reason", nullable({{"$ref", openapi::kResultSchema + "#/properties/stop_reason"}})},
+        {"links", links}}}};
 }
 
 std::int64_t now_unix_ms() {

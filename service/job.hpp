@@ -62,6 +62,9 @@ struct Job {
 
 /// The job resource of the HTTP API (docs/service.md, "API").
 nlohmann::json job_to_json(const Job& job);
+/// Its JSON Schema (the OpenAPI document's components.schemas.Job; tests validate real jobs
+/// against it). Beside job_to_json so that a new field is written in one file.
+nlohmann::json job_json_schema();
 
 /// Current wall-clock time as Unix milliseconds.
 std::int64_t now_unix_ms();

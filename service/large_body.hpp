@@ -1,8 +1,8 @@
 #pragma once
-// Large response bodies (a solution VTU is 18.7 MB at 108k triangles) sent without
-// cpp-httplib's own compression: with brotli support built in, cpp-httplib 0.11.4 answers a
-// browser (Accept-Encoding: br) at brotli quality 11, which took 51 s for that VTU; gzip at
-// level 1 (gzip.hpp) takes a fraction of a second (docs/web.md, "Large results").
+// Large response bodies (solution VTU files of many megabytes) sent without cpp-httplib's own
+// compression: with brotli support built in, cpp-httplib 0.11.4 answers a browser
+// (Accept-Encoding: br) at brotli quality 11, which takes minutes on a large VTU; gzip at
+// level 1 (gzip.hpp) a fraction of a second (measurements: docs/service.md, "Storage").
 
 #include <httplib.h>
 

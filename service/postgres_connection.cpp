@@ -143,11 +143,13 @@ SqlRows PostgresConnection::query(const std::string& sql, const std::vector<SqlV
   const int n_rows = PQntuples(r.get());
   const int n_cols = PQnfields(r.get());
   rows.reserve(static_cast<std::size_t>(n_rows));
+  auto names = std::make_shared<std::vector<std::string>>();
+  for (int c = 0; c < n_cols; ++c) names->emplace_back(PQfname(r.get(), c));
   for (int row = 0; row < n_rows; ++row) {
     std::vector<SqlValue> cells;
     cells.reserve(static_cast<std::size_t>(n_cols));
     for (int c = 0; c < n_cols; ++c) cells.push_back(column_value(r.get(), row, c));
-    rows.emplace_back(std::move(cells));
+    rows.emplace_back(names, std::move(cells));
   }
   return rows;
 }

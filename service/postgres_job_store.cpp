@@ -108,7 +108,7 @@ void PostgresJobStore::migrate() {
   hooks.lock = [](SqlConnection& conn) {
     conn.query("SELECT pg_advisory_xact_lock(?1)", {kSchemaLock});
   };
-  migrate_schema(*c, kSteps, hooks, "the PostgreSQL database");
+  migrate_schema(*c, schema_steps(kSteps), hooks, "the PostgreSQL database");
 }
 
 void PostgresJobStore::serialize_submits(SqlConnection& c) {

@@ -13,8 +13,8 @@
 namespace fosls::service {
 
 /// Address space a solve process needs beyond its resident data: shared libraries, thread
-/// stacks, malloc arenas and OpenBLAS buffers (measured: 400–430 MiB of address space above
-/// the peak resident set, for solves from 8 000 to 500 000 unknowns on 2 threads).
+/// stacks, malloc arenas and OpenBLAS buffers (measured with a margin: docs/service.md,
+/// "Isolation").
 inline constexpr std::size_t kSolveAddressSpaceHeadroom = std::size_t{768} << 20;
 
 struct ProcessJobRunnerOptions {

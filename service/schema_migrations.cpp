@@ -16,7 +16,8 @@ int migrate_schema(SqlConnection& connection, const std::vector<SchemaMigration>
       "CREATE TABLE IF NOT EXISTS schema_migrations ("
       "version INTEGER PRIMARY KEY, description TEXT NOT NULL, applied_at BIGINT NOT NULL)");
   int found = static_cast<int>(
-      connection.query("SELECT coalesce(max(version), 0) FROM schema_migrations")[0].int64(0));
+      connection.query("SELECT coalesce(max(version), 0) AS version FROM schema_migrations")[0]
+          .int64("version"));
   if (hooks.legacy_version) found = std::max(found, hooks.legacy_version(connection));
   if (found > latest) {
     throw StoreError(where + " has schema version " + std::to_string(found) +

@@ -1,7 +1,8 @@
 #pragma once
 // Schema versions of a job store, created and migrated by the programs themselves: a list of
 // numbered steps per store, applied in order in one transaction and recorded in the table
-// schema_migrations. A later change (a new column) is one more step at the end of each list.
+// schema_migrations. A later change (a new column) is one more step at the end of the steps
+// both stores share (SqlJobStore::schema_steps).
 
 #include <functional>
 #include <string>

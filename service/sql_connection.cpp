@@ -13,18 +13,17 @@ SqlValue sql_optional(const std::optional<std::string>& value) {
   return value ? SqlValue(*value) : SqlValue();
 }
 
-const SqlValue& SqlRow::at(int column) const {
-  if (column < 0 || static_cast<std::size_t>(column) >= values_.size()) {
-    throw StoreError("result column " + std::to_string(column) + " does not exist");
-  }
-  return values_[static_cast<std::size_t>(column)];
+const SqlValue& SqlRow::at(std::string_view column) const {
+  for (std::size_t i = 0; names_ && i < names_->size() && i < values_.size(); ++i)
+    if ((*names_)[i] == column) return values_[i];
+  throw StoreError("the result has no column '" + std::string(column) + "'");
 }
 
-bool SqlRow::is_null(int column) const {
+bool SqlRow::is_null(std::string_view column) const {
   return std::holds_alternative<std::monostate>(at(column));
 }
 
-std::int64_t SqlRow::int64(int column) const {
+std::int64_t SqlRow::int64(std::string_view column) const {
   const SqlValue& v = at(column);
   if (const auto* i = std::get_if<std::int64_t>(&v)) return *i;
   if (const auto* d = std::get_if<double>(&v)) return static_cast<std::int64_t>(*d);
@@ -36,7 +35,7 @@ std::int64_t SqlRow::int64(int column) const {
   return 0;
 }
 
-double SqlRow::real(int column) const {
+double SqlRow::real(std::string_view column) const {
   const SqlValue& v = at(column);
   if (const auto* d = std::get_if<double>(&v)) return *d;
   if (const auto* i = std::get_if<std::int64_t>(&v)) return static_cast<double>(*i);
@@ -44,7 +43,7 @@ double SqlRow::real(int column) const {
   return std::nan("");
 }
 
-std::string SqlRow::text(int column) const {
+std::string SqlRow::text(std::string_view column) const {
   const SqlValue& v = at(column);
   if (const auto* s = std::get_if<std::string>(&v)) return *s;
   if (const auto* b = std::get_if<SqlBlob>(&v)) return b->bytes;
@@ -53,7 +52,7 @@ std::string SqlRow::text(int column) const {
   return {};
 }
 
-std::optional<std::int64_t> SqlRow::optional_int64(int column) const {
+std::optional<std::int64_t> SqlRow::optional_int64(std::string_view column) const {
   if (is_null(column)) return std::nullopt;
   return int64(column);
 }

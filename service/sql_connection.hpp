@@ -9,6 +9,7 @@
 #include <memory>
 #include <optional>
 #include <string>
+#include <string_view>
 #include <variant>
 #include <vector>
 
@@ -25,20 +26,27 @@ using SqlValue = std::variant<std::monostate, std::int64_t, double, std::string,
 /// A parameter that is NULL when absent.
 SqlValue sql_optional(const std::optional<std::string>& value);
 
-/// One result row, read by column index. Reading NULL gives 0, NaN or "" (check is_null).
+/// The column names of a result, shared by its rows.
+using SqlColumnNames = std::shared_ptr<const std::vector<std::string>>;
+
+/// One result row, read by column name (as the statement's select list or RETURNING clause
+/// names it; give expressions a name with AS). Reading NULL gives 0, NaN or "" (check is_null).
+/// A name the row does not have throws StoreError.
 class SqlRow {
  public:
-  explicit SqlRow(std::vector<SqlValue> values) : values_(std::move(values)) {}
+  SqlRow(SqlColumnNames names, std::vector<SqlValue> values)
+      : names_(std::move(names)), values_(std::move(values)) {}
 
-  bool is_null(int column) const;
-  std::int64_t int64(int column) const;
-  double real(int column) const;
+  bool is_null(std::string_view column) const;
+  std::int64_t int64(std::string_view column) const;
+  double real(std::string_view column) const;
   /// Text, or the bytes of a blob.
-  std::string text(int column) const;
-  std::optional<std::int64_t> optional_int64(int column) const;
+  std::string text(std::string_view column) const;
+  std::optional<std::int64_t> optional_int64(std::string_view column) const;
 
  private:
-  const SqlValue& at(int column) const;
+  const SqlValue& at(std::string_view column) const;
+  SqlColumnNames names_;
   std::vector<SqlValue> values_;
 };
 

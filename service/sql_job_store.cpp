@@ -9,10 +9,10 @@ namespace fosls::service {
 
 namespace {
 
+// The columns a Job is read from (read_job), in every statement that returns jobs.
 constexpr const char* kJobColumns =
     "id, name, state, created_at, started_at, finished_at, attempts, progress_iteration, "
     "progress_kkt_residual, progress_energy, error, cancel_requested, converged, stop_reason";
-constexpr int kJobColumnCount = 14;
 
 std::string select_job_sql(const std::string& where) {
   return std::string("SELECT ") + kJobColumns + " FROM jobs " + where;
@@ -27,34 +27,47 @@ std::vector<SqlValue> lease_params(const Lease& lease) {
   return {lease.job_id, static_cast<std::int64_t>(lease.attempt), lease.worker_id};
 }
 
-Job read_job(const SqlRow& row, int first = 0) {
+Job read_job(const SqlRow& row) {
   Job job;
-  job.id = row.int64(first + 0);
-  job.name = row.text(first + 1);
+  job.id = row.int64("id");
+  job.name = row.text("name");
   // The CHECK constraint keeps the column to the five known words.
-  job.state = parse_job_state(row.text(first + 2)).value_or(JobState::kFailed);
-  job.created_at_ms = row.int64(first + 3);
-  job.started_at_ms = row.optional_int64(first + 4);
-  job.finished_at_ms = row.optional_int64(first + 5);
-  job.attempts = static_cast<int>(row.int64(first + 6));
-  if (!row.is_null(first + 7)) {
+  job.state = parse_job_state(row.text("state")).value_or(JobState::kFailed);
+  job.created_at_ms = row.int64("created_at");
+  job.started_at_ms = row.optional_int64("started_at");
+  job.finished_at_ms = row.optional_int64("finished_at");
+  job.attempts = static_cast<int>(row.int64("attempts"));
+  if (!row.is_null("progress_iteration")) {
     JobProgress p;
-    p.iteration = static_cast<int>(row.int64(first + 7));
-    // NaN and infinities are stored as NULL.
-    p.kkt_residual = row.is_null(first + 8) ? std::nan("") : row.real(first + 8);
-    p.energy = row.is_null(first + 9) ? std::nan("") : row.real(first + 9);
+    p.iteration = static_cast<int>(row.int64("progress_iteration"));
+    // NaN and infinities are stored as NULL, which real() reads as NaN.
+    p.kkt_residual = row.real("progress_kkt_residual");
+    p.energy = row.real("progress_energy");
     job.progress = p;
   }
-  job.error = row.text(first + 10);
-  job.cancel_requested = row.int64(first + 11) != 0;
-  if (!row.is_null(first + 12)) job.convergence.converged = row.int64(first + 12) != 0;
-  job.convergence.stop_reason = row.text(first + 13);
+  job.error = row.text("error");
+  job.cancel_requested = row.int64("cancel_requested") != 0;
+  if (!row.is_null("converged")) job.convergence.converged = row.int64("converged") != 0;
+  job.convergence.stop_reason = row.text("stop_reason");
   return job;
 }
 
 constexpr const char* kFinishedStates = "('succeeded', 'failed', 'cancelled')";
 
+// Steps after SQLite's version 3 and PostgreSQL's version 2, where both schemas are the same;
+// each text must run in both dialects (docs/service.md lists the versions).
+const std::vector<SchemaMigration> kSharedSteps = {};
+
 }  // namespace
+
+std::vector<SchemaMigration> SqlJobStore::schema_steps(std::vector<SchemaMigration> own) {
+  int version = own.empty() ? 0 : own.back().version;
+  for (SchemaMigration step : kSharedSteps) {
+    step.version = ++version;
+    own.push_back(std::move(step));
+  }
+  return own;
+}
 
 SqlJobStore::SqlJobStore(std::function<SqlConnectionHandle()> acquire)
     : acquire_(std::move(acquire)) {}
@@ -74,15 +87,15 @@ SubmitOutcome SqlJobStore::submit(const NewJob& job, std::size_t max_queued) {
     const SqlRows existing = c->query("SELECT id, body_hash FROM jobs WHERE idempotency_key = ?1",
                                       {*job.idempotency_key});
     if (!existing.empty()) {
-      out.kind = existing[0].text(1) == job.body_hash ? SubmitOutcome::Kind::kReplayed
-                                                      : SubmitOutcome::Kind::kKeyConflict;
-      out.job = find_on(*c, existing[0].int64(0));
+      out.kind = existing[0].text("body_hash") == job.body_hash ? SubmitOutcome::Kind::kReplayed
+                                                                : SubmitOutcome::Kind::kKeyConflict;
+      out.job = find_on(*c, existing[0].int64("id"));
       tx.commit();
       return out;
     }
   }
   const std::int64_t queued =
-      c->query("SELECT count(*) FROM jobs WHERE state = 'queued'")[0].int64(0);
+      c->query("SELECT count(*) AS n FROM jobs WHERE state = 'queued'")[0].int64("n");
   if (static_cast<std::size_t>(queued) >= max_queued) {
     out.kind = SubmitOutcome::Kind::kQueueFull;
     return out;  // rolls back: nothing was written
@@ -104,13 +117,13 @@ std::optional<std::string> SqlJobStore::result_json(std::int64_t id) {
   const SqlRows rows =
       connection()->query("SELECT result_json FROM job_results WHERE job_id = ?1", {id});
   if (rows.empty()) return std::nullopt;
-  return rows[0].text(0);
+  return rows[0].text("result_json");
 }
 
 std::optional<std::string> SqlJobStore::case_json(std::int64_t id) {
   const SqlRows rows = connection()->query("SELECT case_json FROM jobs WHERE id = ?1", {id});
   if (rows.empty()) return std::nullopt;
-  return rows[0].text(0);
+  return rows[0].text("case_json");
 }
 
 std::optional<std::string> SqlJobStore::vtu(std::int64_t id) {
@@ -118,8 +131,8 @@ std::optional<std::string> SqlJobStore::vtu(std::int64_t id) {
       connection()->query("SELECT vtu, vtu_encoding FROM job_results WHERE job_id = ?1", {id});
   if (rows.empty()) return std::nullopt;
   // Rows written before compression was introduced are kept as they were ('identity').
-  if (rows[0].text(1) == "gzip") return gzip_decompress(rows[0].text(0));
-  return rows[0].text(0);
+  if (rows[0].text("vtu_encoding") == "gzip") return gzip_decompress(rows[0].text("vtu"));
+  return rows[0].text("vtu");
 }
 
 JobPage SqlJobStore::list(const JobListQuery& query) {
@@ -222,7 +235,7 @@ std::optional<ClaimedJob> SqlJobStore::claim_next(const ClaimRequest& request) {
   tx.commit();
   ClaimedJob claimed;
   claimed.job = read_job(rows[0]);
-  claimed.case_json = rows[0].text(kJobColumnCount);
+  claimed.case_json = rows[0].text("case_json");
   claimed.lease = Lease{claimed.job.id, claimed.job.attempts, request.worker_id};
   return claimed;
 }
@@ -235,7 +248,8 @@ LeaseStatus SqlJobStore::renew_lease(const Lease& lease, std::chrono::millisecon
                               std::string(kLeaseHolder) + " RETURNING cancel_requested",
                           params);
   if (rows.empty()) return LeaseStatus::kLost;
-  return rows[0].int64(0) != 0 ? LeaseStatus::kCancelRequested : LeaseStatus::kHeld;
+  return rows[0].int64("cancel_requested") != 0 ? LeaseStatus::kCancelRequested
+                                                : LeaseStatus::kHeld;
 }
 
 void SqlJobStore::update_progress(const Lease& lease, const JobProgress& progress) {
@@ -337,7 +351,7 @@ RecoveryReport SqlJobStore::recover(int max_attempts, bool only_expired) {
   const std::vector<SqlValue> limit = {static_cast<std::int64_t>(max_attempts)};
   auto ids = [](const SqlRows& rows) {
     std::vector<std::int64_t> out;
-    for (const SqlRow& row : rows) out.push_back(row.int64(0));
+    for (const SqlRow& row : rows) out.push_back(row.int64("id"));
     std::sort(out.begin(), out.end());
     return out;
   };
@@ -383,14 +397,15 @@ int SqlJobStore::delete_finished_before(std::int64_t unix_ms) {
 std::map<JobState, std::int64_t> SqlJobStore::count_by_state() {
   std::map<JobState, std::int64_t> counts;
   for (JobState s : kAllJobStates) counts[s] = 0;
-  for (const SqlRow& row : connection()->query("SELECT state, count(*) FROM jobs GROUP BY state")) {
-    if (auto s = parse_job_state(row.text(0))) counts[*s] = row.int64(1);
+  for (const SqlRow& row :
+       connection()->query("SELECT state, count(*) AS n FROM jobs GROUP BY state")) {
+    if (auto s = parse_job_state(row.text("state"))) counts[*s] = row.int64("n");
   }
   return counts;
 }
 
 std::int64_t SqlJobStore::count_not_converged() {
-  return connection()->query("SELECT count(*) FROM jobs WHERE converged = 0")[0].int64(0);
+  return connection()->query("SELECT count(*) AS n FROM jobs WHERE converged = 0")[0].int64("n");
 }
 
 void SqlJobStore::ping() { connection()->query("SELECT 1"); }

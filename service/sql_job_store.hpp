@@ -7,6 +7,7 @@
 #include <string>
 
 #include "job_store.hpp"
+#include "schema_migrations.hpp"
 #include "sql_connection.hpp"
 
 namespace fosls::service {
@@ -41,6 +42,12 @@ class SqlJobStore : public JobStore {
  protected:
   /// `acquire` lends a connection to one call.
   explicit SqlJobStore(std::function<SqlConnectionHandle()> acquire);
+
+  /// A store's schema: its own steps (`own`, which differ by dialect up to where the two
+  /// schemas agree), then the steps both stores share, written once in sql_job_store.cpp in
+  /// SQL both dialects run and numbered on from the last of `own`. A new column is one shared
+  /// step.
+  static std::vector<SchemaMigration> schema_steps(std::vector<SchemaMigration> own);
 
   SqlConnectionHandle connection() { return acquire_(); }
 

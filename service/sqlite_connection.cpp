@@ -87,11 +87,17 @@ SqlRows SqliteConnection::query(const std::string& sql, const std::vector<SqlVal
   } reset{stmt};
   for (std::size_t i = 0; i < params.size(); ++i) bind(stmt, static_cast<int>(i + 1), params[i]);
   SqlRows rows;
+  SqlColumnNames names;
   for (;;) {
     const int rc = sqlite3_step(&stmt);
     if (rc == SQLITE_DONE) break;
     if (rc != SQLITE_ROW) fail(rc, std::string("running '") + sqlite3_sql(&stmt) + "'");
     const int columns = sqlite3_column_count(&stmt);
+    if (!names) {
+      auto list = std::make_shared<std::vector<std::string>>();
+      for (int c = 0; c < columns; ++c) list->emplace_back(sqlite3_column_name(&stmt, c));
+      names = std::move(list);
+    }
     std::vector<SqlValue> values(static_cast<std::size_t>(columns));
     for (int c = 0; c < columns; ++c) {
       auto& v = values[static_cast<std::size_t>(c)];
@@ -116,7 +122,7 @@ SqlRows SqliteConnection::query(const std::string& sql, const std::vector<SqlVal
           break;  // NULL
       }
     }
-    rows.emplace_back(std::move(values));
+    rows.emplace_back(names, std::move(values));
   }
   return rows;
 }

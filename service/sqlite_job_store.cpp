@@ -85,17 +85,17 @@ void SqliteJobStore::migrate() {
   SqliteConnection& c = thread_connection();
   SchemaHooks hooks;
   hooks.legacy_version = [](SqlConnection& conn) {
-    return static_cast<int>(conn.query("PRAGMA user_version")[0].int64(0));
+    return static_cast<int>(conn.query("PRAGMA user_version")[0].int64("user_version"));
   };
   // Older programs (and tools) read the version from the file header; keep it in step.
   hooks.after_steps = [](SqlConnection& conn, int version) {
     conn.exec("PRAGMA user_version = " + std::to_string(version));
   };
-  migrate_schema(c, kSteps, hooks, "database '" + path_ + "'");
+  migrate_schema(c, schema_steps(kSteps), hooks, "database '" + path_ + "'");
   // A file created before incremental auto-vacuum keeps its free pages forever; converting it
   // rewrites the file once (VACUUM, outside any transaction; it needs as much free disk as
   // the file's size). New files are created with it (SqliteConnection).
-  if (c.query("PRAGMA auto_vacuum")[0].int64(0) != 2) {
+  if (c.query("PRAGMA auto_vacuum")[0].int64("auto_vacuum") != 2) {
     c.exec("PRAGMA auto_vacuum=INCREMENTAL");
     c.exec("VACUUM");
   }

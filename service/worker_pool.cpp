@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <cstdio>
 #include <exception>
+#include <optional>
 #include <random>
 #include <string>
 
@@ -174,49 +175,100 @@ bool WorkerPool::with_retries(const char* what, std::int64_t job_id,
   }
 }
 
+namespace {
+
+/// The progress reports of one run, written to the store at most every `interval` (the solver
+/// may iterate thousands of times a second); the last one is written when the run ends.
+class ProgressWriter {
+ public:
+  ProgressWriter(JobStore& store, const Lease& lease, EventLog& log,
+                 std::chrono::milliseconds interval)
+      : store_(store), lease_(lease), log_(log), interval_(interval) {}
+
+  void report(const JobProgress& progress) {
+    last_ = progress;
+    const auto now = Clock::now();
+    if (written_ && now - *written_ < interval_) return;
+    written_ = now;
+    try {
+      store_.update_progress(lease_, progress);
+    } catch (const std::exception& e) {
+      // Progress is advisory; a busy store must not fail the solve.
+      log_.write("store_error",
+                 {{"job_id", lease_.job_id}, {"step", "progress"}, {"error", e.what()}});
+    }
+  }
+
+  /// The last report, if the throttle held it back; best effort: the final state matters, the
+  /// last progress figure does not.
+  void flush() {
+    if (!last_) return;
+    try {
+      store_.update_progress(lease_, *last_);
+    } catch (const std::exception&) {
+    }
+  }
+
+ private:
+  using Clock = std::chrono::steady_clock;
+  JobStore& store_;
+  const Lease& lease_;
+  EventLog& log_;
+  std::chrono::milliseconds interval_;
+  std::optional<Clock::time_point> written_;
+  std::optional<JobProgress> last_;
+};
+
+}  // namespace
+
 void WorkerPool::run_job(const ClaimedJob& claimed) {
-  const Job& job = claimed.job;
-  const Lease& lease = claimed.lease;
-  const int attempt = lease.attempt;
+  using Clock = std::chrono::steady_clock;
+  const Clock::time_point started = Clock::now();
+  const auto cancel = register_job(claimed);
+  ProgressWriter progress(store_, claimed.lease, log_, options_.progress_interval);
+  JobRunContext context{*cancel, [&](const JobProgress& p) { progress.report(p); }};
+  JobRunOutcome outcome = solve(claimed, context);
+  const double seconds = std::chrono::duration<double>(Clock::now() - started).count();
+
+  const RunEnd end = unregister_job(claimed.job.id);
+  if (end.lease_lost) {
+    // Another worker has (or had) this job now; whatever this run produced is not stored.
+    --busy_;
+    log_.write("job_transition", {{"job_id", claimed.job.id},
+                                  {"from", "running"},
+                                  {"to", "abandoned"},
+                                  {"attempt", claimed.lease.attempt},
+                                  {"seconds", seconds},
+                                  {"stored", false},
+                                  {"reason", "lease lost"}});
+    return;
+  }
+  progress.flush();
+  const nlohmann::json transition = record_outcome(claimed.lease, outcome, end, seconds);
+  --busy_;
+  log_.write("job_transition", transition);
+}
+
+std::shared_ptr<std::atomic<bool>> WorkerPool::register_job(const ClaimedJob& claimed) {
   auto cancel = std::make_shared<std::atomic<bool>>(false);
   {
     std::lock_guard lock(mutex_);
-    ActiveJob active{lease, cancel, early_cancels_.erase(job.id) > 0};
+    ActiveJob active{claimed.lease, cancel, early_cancels_.erase(claimed.job.id) > 0};
     if (active.user_cancel || stopping_) cancel->store(true);
-    active_.emplace(job.id, active);
+    active_.emplace(claimed.job.id, active);
   }
   ++busy_;
-  log_.write("job_transition",
-             {{"job_id", job.id}, {"from", "queued"}, {"to", "running"}, {"attempt", attempt}});
+  log_.write("job_transition", {{"job_id", claimed.job.id},
+                                {"from", "queued"},
+                                {"to", "running"},
+                                {"attempt", claimed.lease.attempt}});
+  return cancel;
+}
 
-  // Throttled progress: the solver may iterate thousands of times a second, the database
-  // needs to hear about it at most every progress_interval.
-  using Clock = std::chrono::steady_clock;
-  const Clock::time_point started = Clock::now();
-  Clock::time_point last_write = Clock::time_point::min();
-  std::optional<JobProgress> last_progress;
-  JobRunContext context{*cancel, [&](const JobProgress& p) {
-                          last_progress = p;
-                          const auto now = Clock::now();
-                          if (last_write != Clock::time_point::min() &&
-                              now - last_write < options_.progress_interval) {
-                            return;
-                          }
-                          last_write = now;
-                          try {
-                            store_.update_progress(lease, p);
-                          } catch (const std::exception& e) {
-                            // Progress is advisory; a busy store must not fail the solve.
-                            log_.write(
-                                "store_error",
-                                {{"job_id", job.id}, {"step", "progress"}, {"error", e.what()}});
-                          }
-                        }};
-
+JobRunOutcome WorkerPool::solve(const ClaimedJob& claimed, const JobRunContext& context) {
   JobRunOutcome outcome;
   try {
-    const nlohmann::json case_json = nlohmann::json::parse(claimed.case_json);
-    outcome = runner_(case_json, context);
+    outcome = runner_(nlohmann::json::parse(claimed.case_json), context);
   } catch (const std::exception& e) {
     outcome.kind = JobRunOutcome::Kind::kFailed;
     outcome.error = std::string("internal error while solving: ") + e.what();
@@ -227,92 +279,79 @@ void WorkerPool::run_job(const ClaimedJob& claimed) {
     outcome.kind = JobRunOutcome::Kind::kFailed;
     outcome.error = "internal error while solving (unknown exception)";
   }
-  const double seconds = std::chrono::duration<double>(Clock::now() - started).count();
+  return outcome;
+}
 
-  bool user_cancel = false;
-  bool stopping = false;
-  bool lease_lost = false;
-  {
-    std::lock_guard lock(mutex_);
-    user_cancel = active_[job.id].user_cancel;
-    lease_lost = active_[job.id].lease_lost;
-    stopping = stopping_;
-    active_.erase(job.id);
-  }
-  if (lease_lost) {
-    // Another worker has (or had) this job now; whatever this run produced is not stored.
-    --busy_;
-    log_.write("job_transition", {{"job_id", job.id},
-                                  {"from", "running"},
-                                  {"to", "abandoned"},
-                                  {"attempt", attempt},
-                                  {"seconds", seconds},
-                                  {"stored", false},
-                                  {"reason", "lease lost"}});
-    return;
-  }
-  if (last_progress) {
-    try {
-      store_.update_progress(lease, *last_progress);
-    } catch (const std::exception&) {
-      // the final state below matters, the last progress figure does not
-    }
-  }
+WorkerPool::RunEnd WorkerPool::unregister_job(std::int64_t job_id) {
+  std::lock_guard lock(mutex_);
+  const ActiveJob& active = active_[job_id];
+  const RunEnd end{active.user_cancel, active.lease_lost, stopping_};
+  active_.erase(job_id);
+  return end;
+}
 
-  std::string to;
+nlohmann::json WorkerPool::record_outcome(const Lease& lease, JobRunOutcome& outcome,
+                                          const RunEnd& end, double seconds) {
+  nlohmann::json fields = {{"job_id", lease.job_id},
+                           {"from", "running"},
+                           {"attempt", lease.attempt},
+                           {"seconds", seconds}};
   bool stored = false;
   std::string store_error;
-  nlohmann::json convergence_fields;
   if (outcome.kind == JobRunOutcome::Kind::kSucceeded) {
-    SolveRecord record;
-    record.convergence = convergence_of_result(outcome.result_json);
-    record.result_json = std::move(outcome.result_json);
-    record.vtu = std::move(outcome.vtu);
-    if (options_.fail_unconverged && record.convergence.converged == false)
-      record.error = unconverged_error(record.convergence);
-    const JobState state = record.error.empty() ? JobState::kSucceeded : JobState::kFailed;
-    to = to_string(state);
-    if (record.convergence.converged) {
-      convergence_fields = {{"converged", *record.convergence.converged},
-                            {"stop_reason", record.convergence.stop_reason}};
-    }
-    stored = with_retries(
-        "store result", job.id, [&] { return store_.complete_with_result(lease, record); },
-        store_error);
-    if (!stored && !store_error.empty()) {
-      // For example a VTU beyond SQLite's size limit: say so rather than stay "running".
-      outcome.kind = JobRunOutcome::Kind::kFailed;
-      outcome.error = "the solve finished but its result could not be stored: " + store_error;
-    } else {
-      metrics_.record_run(state, seconds);
-      metrics_.record_stop_reason(record.convergence.stop_reason);
-      if (state == JobState::kFailed) convergence_fields["error"] = record.error;
-    }
-  } else if (outcome.kind == JobRunOutcome::Kind::kCancelled && stopping && !user_cancel) {
+    stored = store_result(lease, outcome, seconds, fields);
+  } else if (outcome.kind == JobRunOutcome::Kind::kCancelled && end.stopping && !end.user_cancel) {
     // Interrupted by shutdown, not by its user: nothing is lost, it runs again next start.
-    to = "queued";
+    fields["to"] = "queued";
     stored = with_retries(
-        "requeue", job.id, [&] { return store_.requeue(lease); }, store_error);
+        "requeue", lease.job_id, [&] { return store_.requeue(lease); }, store_error);
   } else if (outcome.kind == JobRunOutcome::Kind::kCancelled) {
-    to = "cancelled";
+    fields["to"] = "cancelled";
     stored = with_retries(
-        "store cancel", job.id, [&] { return store_.complete_cancelled(lease); }, store_error);
+        "store cancel", lease.job_id, [&] { return store_.complete_cancelled(lease); },
+        store_error);
     metrics_.record_run(JobState::kCancelled, seconds);
   }
   if (outcome.kind == JobRunOutcome::Kind::kFailed) {
-    to = "failed";
+    fields["to"] = "failed";
+    fields["error"] = outcome.error;
     stored = with_retries(
-        "store failure", job.id, [&] { return store_.complete_failed(lease, outcome.error); },
+        "store failure", lease.job_id, [&] { return store_.complete_failed(lease, outcome.error); },
         store_error);
     metrics_.record_run(JobState::kFailed, seconds);
   }
-  --busy_;
+  fields["stored"] = stored;
+  return fields;
+}
 
-  nlohmann::json fields = {{"job_id", job.id},   {"from", "running"},  {"to", to},
-                           {"attempt", attempt}, {"seconds", seconds}, {"stored", stored}};
-  if (outcome.kind == JobRunOutcome::Kind::kFailed) fields["error"] = outcome.error;
-  if (convergence_fields.is_object()) fields.update(convergence_fields);
-  log_.write("job_transition", fields);
+bool WorkerPool::store_result(const Lease& lease, JobRunOutcome& outcome, double seconds,
+                              nlohmann::json& fields) {
+  SolveRecord record;
+  record.convergence = convergence_of_result(outcome.result_json);
+  record.result_json = std::move(outcome.result_json);
+  record.vtu = std::move(outcome.vtu);
+  if (options_.fail_unconverged && record.convergence.converged == false)
+    record.error = unconverged_error(record.convergence);
+  const JobState state = record.error.empty() ? JobState::kSucceeded : JobState::kFailed;
+  fields["to"] = to_string(state);
+  if (record.convergence.converged) {
+    fields["converged"] = *record.convergence.converged;
+    fields["stop_reason"] = record.convergence.stop_reason;
+  }
+  std::string store_error;
+  const bool stored = with_retries(
+      "store result", lease.job_id, [&] { return store_.complete_with_result(lease, record); },
+      store_error);
+  if (!stored && !store_error.empty()) {
+    // For example a VTU beyond SQLite's size limit: say so rather than stay "running".
+    outcome.kind = JobRunOutcome::Kind::kFailed;
+    outcome.error = "the solve finished but its result could not be stored: " + store_error;
+    return false;
+  }
+  metrics_.record_run(state, seconds);
+  metrics_.record_stop_reason(record.convergence.stop_reason);
+  if (state == JobState::kFailed) fields["error"] = record.error;
+  return stored;
 }
 
 }  // namespace fosls::service

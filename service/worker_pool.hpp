@@ -84,8 +84,30 @@ class WorkerPool {
     bool lease_lost = false;  ///< the store gave the attempt to someone else
   };
 
+  /// What the pool knew about a run when it ended.
+  struct RunEnd {
+    bool user_cancel = false;
+    bool lease_lost = false;
+    bool stopping = false;
+  };
+
   void run_worker(int index);
+  /// Registers, solves, unregisters and records one claimed job (the steps below).
   void run_job(const ClaimedJob& claimed);
+  /// Makes the job cancellable through this pool; its cancel flag is set at once when a cancel
+  /// came before the worker or the pool is stopping.
+  std::shared_ptr<std::atomic<bool>> register_job(const ClaimedJob& claimed);
+  /// The runner's outcome; any exception becomes a failed outcome.
+  JobRunOutcome solve(const ClaimedJob& claimed, const JobRunContext& context);
+  RunEnd unregister_job(std::int64_t job_id);
+  /// Writes the outcome to the store (with retries) and counts it; returns the fields of the
+  /// job_transition log line.
+  nlohmann::json record_outcome(const Lease& lease, JobRunOutcome& outcome, const RunEnd& end,
+                                double seconds);
+  /// The succeeded (or, under fail_unconverged, failed) result; a result the store refuses
+  /// turns `outcome` into a failure to be stored instead.
+  bool store_result(const Lease& lease, JobRunOutcome& outcome, double seconds,
+                    nlohmann::json& fields);
   /// Renews the lease of every running job until shutdown; stops a job whose cancel was
   /// requested (through any process) or whose lease was lost.
   void run_heartbeat();

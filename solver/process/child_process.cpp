@@ -188,109 +188,149 @@ std::string ChildResult::describe() const {
   return "unknown end";
 }
 
-ChildResult run_child(const ChildOptions& options) {
-  if (options.argv.empty()) throw std::invalid_argument("run_child: no program given");
-  Pipe in, out, err;
+namespace {
+
+/// One started child with the pipes to it: run_child's steps.
+class RunningChild {
+ public:
+  /// Spawns the child with its stdin, stdout and stderr on pipes and applies the limits.
+  explicit RunningChild(const ChildOptions& options);
+
+  /// Kills the child (and its group) once it was cancelled, passed its deadline or wrote too
+  /// much; what killed it is what the result says.
+  void enforce_limits();
+  /// Writes input and reads output for up to one poll step. True once the child is reaped.
+  bool exchange_io();
+  ChildResult finish();
+
+ private:
+  bool try_reap();
+  void write_input();
+
+  const ChildOptions& options_;
+  Pipe in_, out_, err_;
+  pid_t pid_ = -1;
+  Clock::time_point started_, deadline_;
+  std::optional<ChildResult::End> killed_;
+  std::size_t written_ = 0, output_bytes_ = 0;
+  int status_ = 0;
+  ChildResult result_;
+};
+
+RunningChild::RunningChild(const ChildOptions& options) : options_(options) {
   FileActions actions;
-  actions.dup2(in.read.get(), STDIN_FILENO);
-  actions.dup2(out.write.get(), STDOUT_FILENO);
-  actions.dup2(err.write.get(), STDERR_FILENO);
+  actions.dup2(in_.read.get(), STDIN_FILENO);
+  actions.dup2(out_.write.get(), STDOUT_FILENO);
+  actions.dup2(err_.write.get(), STDERR_FILENO);
   SpawnAttributes attributes;
   std::vector<std::string> argv = options.argv, env = child_environment(options.environment);
   std::vector<char*> argv_p = pointers(argv), env_p = pointers(env);
 
-  const auto started = Clock::now();
-  pid_t pid = -1;
-  const int rc = ::posix_spawn(&pid, argv[0].c_str(), actions.get(), attributes.get(),
+  started_ = Clock::now();
+  const int rc = ::posix_spawn(&pid_, argv[0].c_str(), actions.get(), attributes.get(),
                                argv_p.data(), env_p.data());
   if (rc != 0) throw std::runtime_error("cannot start " + argv[0] + ": " + std::strerror(rc));
   // The child reads all its input before it does anything, so limits set now apply to all of
   // its work.
-  apply_limits(pid, options.limits);
-  in.read.reset();
-  out.write.reset();
-  err.write.reset();
-  set_nonblocking(in.write.get());
-  set_nonblocking(out.read.get());
-  set_nonblocking(err.read.get());
+  apply_limits(pid_, options.limits);
+  in_.read.reset();
+  out_.write.reset();
+  err_.write.reset();
+  set_nonblocking(in_.write.get());
+  set_nonblocking(out_.read.get());
+  set_nonblocking(err_.read.get());
+  if (options.input.empty()) in_.write.reset();
+  deadline_ =
+      options.limits.wall.count() > 0 ? started_ + options.limits.wall : Clock::time_point::max();
+}
 
-  ChildResult result;
-  std::size_t written = 0, output_bytes = 0;
-  if (options.input.empty()) in.write.reset();
-  const auto deadline =
-      options.limits.wall.count() > 0 ? started + options.limits.wall : Clock::time_point::max();
-  std::optional<ChildResult::End> killed;
+void RunningChild::enforce_limits() {
+  if (killed_) return;
+  if (options_.cancel && options_.cancel->load(std::memory_order_relaxed))
+    killed_ = ChildResult::End::kCancelled;
+  else if (Clock::now() >= deadline_)
+    killed_ = ChildResult::End::kTimedOut;
+  else if (options_.limits.max_output_bytes > 0 && output_bytes_ > options_.limits.max_output_bytes)
+    killed_ = ChildResult::End::kOutputTooLarge;
+  if (killed_) {
+    kill_group(pid_);
+    in_.write.reset();
+  }
+}
+
+bool RunningChild::exchange_io() {
+  std::vector<pollfd> fds;
+  if (in_.write.get() >= 0) fds.push_back({in_.write.get(), POLLOUT, 0});
+  if (out_.read.get() >= 0) fds.push_back({out_.read.get(), POLLIN, 0});
+  if (err_.read.get() >= 0) fds.push_back({err_.read.get(), POLLIN, 0});
+  // Both outputs closed: the child is exiting (or closed them and lingers).
+  if (fds.empty()) return try_reap();
+  ::poll(fds.data(), fds.size(), static_cast<int>(kPollStep.count()));
   auto on_stdout = [&](const char* data, std::size_t n) {
-    output_bytes += n;
-    if (options.on_output)
-      options.on_output(std::string_view(data, n));
+    output_bytes_ += n;
+    if (options_.on_output)
+      options_.on_output(std::string_view(data, n));
     else
-      result.output.append(data, n);
+      result_.output.append(data, n);
   };
   auto on_stderr = [&](const char* data, std::size_t n) {
-    result.errors.append(data, n);
-    if (result.errors.size() > 2 * kErrorTail)
-      result.errors.erase(0, result.errors.size() - kErrorTail);
+    result_.errors.append(data, n);
+    if (result_.errors.size() > 2 * kErrorTail)
+      result_.errors.erase(0, result_.errors.size() - kErrorTail);
   };
+  for (const pollfd& p : fds) {
+    if (p.revents == 0) continue;
+    if (p.fd == in_.write.get()) {
+      write_input();
+    } else if (p.fd == out_.read.get()) {
+      if (!drain(p.fd, on_stdout)) out_.read.reset();
+    } else if (p.fd == err_.read.get()) {
+      if (!drain(p.fd, on_stderr)) err_.read.reset();
+    }
+  }
+  return false;
+}
 
-  int status = 0;
-  bool reaped = false;
-  while (!reaped) {
-    if (!killed) {
-      if (options.cancel && options.cancel->load(std::memory_order_relaxed))
-        killed = ChildResult::End::kCancelled;
-      else if (Clock::now() >= deadline)
-        killed = ChildResult::End::kTimedOut;
-      else if (options.limits.max_output_bytes > 0 &&
-               output_bytes > options.limits.max_output_bytes)
-        killed = ChildResult::End::kOutputTooLarge;
-      if (killed) {
-        kill_group(pid);
-        in.write.reset();
-      }
-    }
-    std::vector<pollfd> fds;
-    if (in.write.get() >= 0) fds.push_back({in.write.get(), POLLOUT, 0});
-    if (out.read.get() >= 0) fds.push_back({out.read.get(), POLLIN, 0});
-    if (err.read.get() >= 0) fds.push_back({err.read.get(), POLLIN, 0});
-    if (fds.empty()) {
-      // Both outputs closed: the child is exiting (or closed them and lingers).
-      const pid_t w = ::waitpid(pid, &status, WNOHANG);
-      if (w == pid || (w < 0 && errno != EINTR)) {
-        reaped = true;
-        break;
-      }
-      std::this_thread::sleep_for(std::chrono::milliseconds(2));
-      continue;
-    }
-    ::poll(fds.data(), fds.size(), static_cast<int>(kPollStep.count()));
-    for (const pollfd& p : fds) {
-      if (p.revents == 0) continue;
-      if (p.fd == in.write.get()) {
-        const ssize_t n =
-            ::write(p.fd, options.input.data() + written, options.input.size() - written);
-        if (n > 0) written += static_cast<std::size_t>(n);
-        if ((n < 0 && errno != EAGAIN && errno != EINTR) || written == options.input.size())
-          in.write.reset();  // done, or the child stopped reading (EPIPE)
-      } else if (p.fd == out.read.get()) {
-        if (!drain(p.fd, on_stdout)) out.read.reset();
-      } else if (p.fd == err.read.get()) {
-        if (!drain(p.fd, on_stderr)) err.read.reset();
-      }
-    }
+void RunningChild::write_input() {
+  const ssize_t n =
+      ::write(in_.write.get(), options_.input.data() + written_, options_.input.size() - written_);
+  if (n > 0) written_ += static_cast<std::size_t>(n);
+  if ((n < 0 && errno != EAGAIN && errno != EINTR) || written_ == options_.input.size())
+    in_.write.reset();  // done, or the child stopped reading (EPIPE)
+}
+
+bool RunningChild::try_reap() {
+  const pid_t w = ::waitpid(pid_, &status_, WNOHANG);
+  if (w == pid_ || (w < 0 && errno != EINTR)) return true;
+  std::this_thread::sleep_for(std::chrono::milliseconds(2));
+  return false;
+}
+
+ChildResult RunningChild::finish() {
+  result_.seconds = std::chrono::duration<double>(Clock::now() - started_).count();
+  if (result_.errors.size() > kErrorTail)
+    result_.errors.erase(0, result_.errors.size() - kErrorTail);
+  if (killed_) {
+    result_.end = *killed_;
+  } else if (WIFEXITED(status_)) {
+    result_.end = ChildResult::End::kExited;
+    result_.exit_code = WEXITSTATUS(status_);
+  } else if (WIFSIGNALED(status_)) {
+    result_.end = ChildResult::End::kSignaled;
+    result_.signal = WTERMSIG(status_);
   }
-  result.seconds = std::chrono::duration<double>(Clock::now() - started).count();
-  if (result.errors.size() > kErrorTail) result.errors.erase(0, result.errors.size() - kErrorTail);
-  if (killed) {
-    result.end = *killed;
-  } else if (WIFEXITED(status)) {
-    result.end = ChildResult::End::kExited;
-    result.exit_code = WEXITSTATUS(status);
-  } else if (WIFSIGNALED(status)) {
-    result.end = ChildResult::End::kSignaled;
-    result.signal = WTERMSIG(status);
-  }
-  return result;
+  return std::move(result_);
+}
+
+}  // namespace
+
+ChildResult run_child(const ChildOptions& options) {
+  if (options.argv.empty()) throw std::invalid_argument("run_child: no program given");
+  RunningChild child(options);
+  do {
+    child.enforce_limits();
+  } while (!child.exchange_io());
+  return child.finish();
 }
 
 void die_with_parent() {

@@ -3,10 +3,9 @@
 // the whole process: glibc gives each new thread that allocates an arena of its own (up to eight
 // per core), and memory freed in an arena is reused only by allocations made from it: with the
 // OpenMP threads of assembly, factorisation and Galerkin products, a two-thread solve peaked
-// above a one-thread solve of the same case (408 against 369 MiB at 524k unknowns, +11 %;
-// 1 511 against 1 460 MiB at 2.1M, +3.5 %). The hot loops allocate only small vectors (served
-// by glibc's per-thread cache without the arena's lock), so sharing one arena cost no
-// measurable time (docs/performance.md).
+// above a one-thread solve of the same case. The hot loops allocate only small vectors (served
+// by glibc's per-thread cache without the arena's lock), so sharing one arena costs no
+// measurable time (measurements: docs/performance.md, "One malloc arena").
 
 namespace fosls {
 
@@ -18,11 +17,10 @@ bool use_one_malloc_arena();
 /// freed block above its mmap threshold (at most 32 MiB, raised as blocks are freed) and the top
 /// of the heap above twice that, and a solve frees and allocates matrices of the same sizes over
 /// and over (each rebuild of the coarse levels, each adaptive step). Each page that comes back
-/// is a page fault; on Hertz refinements 5 a third of the solve's 118 700 faults were such
-/// re-faults, and the system time fell by a third without them (docs/performance.md). The peak
-/// is unchanged: freed memory is reused, not added to. For the programs that run one solve and
-/// exit; a long-running server should give memory back. Call at the start of main. Returns false
-/// if glibc refused.
+/// is a page fault, and such re-faults were a large part of a solve's system time
+/// (docs/performance.md). The peak is unchanged: freed memory is reused, not added to. For the
+/// programs that run one solve and exit; a long-running server should give memory back. Call at the
+/// start of main. Returns false if glibc refused.
 bool keep_freed_memory();
 
 }  // namespace fosls

@@ -2,14 +2,13 @@
 // The environment the programs that solve (fosls-contact, fosls-solve-job) want from their
 // first instruction on. Two settings are read by libraries as they load, before main runs:
 //
-// - OMP_WAIT_POLICY=passive: OpenMP threads that wait sleep instead of spinning. With spinning
-//   waiters a solve on two threads ran 1.35× slower than on one while another process held a
-//   core, with sleeping ones 7 % faster (docs/performance.md).
+// - OMP_WAIT_POLICY=passive: OpenMP threads that wait sleep instead of spinning: spinning
+//   waiters made a two-thread solve slower than a one-thread one while another process held a
+//   core (docs/performance.md).
 // - glibc.malloc.hugetlb=1 in GLIBC_TUNABLES: malloc asks for transparent huge pages (2 MiB)
 //   for its large blocks. A solve's matrices and vectors are touched page by page when first
-//   written; with 4 KiB pages a Hertz solve of 1.74 M unknowns took 310 000 page faults, with
-//   huge pages 4 800, and ran 9–24 % faster (fewer faults and fewer TLB misses in the sparse
-//   products; docs/performance.md). The kernel must allow it ("madvise" or "always" in
+//   written: huge pages make far fewer page faults and TLB misses in the sparse products
+//   (measurements: docs/performance.md). The kernel must allow it ("madvise" or "always" in
 //   /sys/kernel/mm/transparent_hugepage/enabled); otherwise the setting does nothing.
 //
 // A value the caller set is kept: the caller can turn either off.
