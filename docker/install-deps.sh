@@ -4,6 +4,7 @@
 #
 #   docker/install-deps.sh           # everything: build, tests, web tests, load tests
 #   docker/install-deps.sh --build   # only what compiling and the C++ tests need (Docker)
+#   docker/install-deps.sh --container  # what docker/build-image.sh and test-image.sh need
 #   docker/install-deps.sh --check   # list what is missing; exit 1 if anything is
 set -euo pipefail
 
@@ -21,13 +22,20 @@ tool_packages+=(python3-jsonschema)
 # The gmsh program of the own-mesh workflow in docs/case-format.md (its test runs it).
 tool_packages+=(gmsh)
 
+# Building and running the image without Docker or an image registry (docker/build-image.sh):
+# podman with runc, mmdebstrap for the Debian base image, podman-compose for the cluster,
+# netavark + aardvark-dns (+ iptables, which netavark runs) so that the compose services find
+# each other by name.
+container_packages=(podman runc mmdebstrap podman-compose netavark aardvark-dns iptables curl python3)
+
 check_only=0
 case "${1:-}" in
   --build) packages=("${build_packages[@]}") ;;
+  --container) packages=("${container_packages[@]}") ;;
   --check) packages=("${build_packages[@]}" "${tool_packages[@]}") check_only=1 ;;
   "") packages=("${build_packages[@]}" "${tool_packages[@]}") ;;
   *)
-    echo "usage: $0 [--build | --check]" >&2
+    echo "usage: $0 [--build | --container | --check]" >&2
     exit 2
     ;;
 esac
