@@ -98,11 +98,10 @@ compose_containers() { # SERVICE -> container names
     --filter "label=com.docker.compose.service=$1" --format '{{.Names}}' | sort
 }
 
-# count_transitions LOG FROM TO: job_transition lines of a service log from FROM to TO.
-count_transitions() {
+# transition_jobs LOG FROM TO: the job ids of a service log's job_transition lines FROM -> TO.
+transition_jobs() {
   python3 - "$@" <<'PY'
 import json, sys
-count = 0
 for line in open(sys.argv[1], errors="replace"):
     try:
         event = json.loads(line)
@@ -110,8 +109,7 @@ for line in open(sys.argv[1], errors="replace"):
         continue
     if isinstance(event, dict) and event.get("event") == "job_transition" \
             and event.get("from") == sys.argv[2] and event.get("to") == sys.argv[3]:
-        count += 1
-print(count)
+        print(event["job_id"])
 PY
 }
 
