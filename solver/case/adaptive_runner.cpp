@@ -154,11 +154,13 @@ nlohmann::json adaptivity_json(const CaseSolution& solution, const AdaptivitySpe
           std::isfinite(s.algebraic_error) ? nlohmann::json(s.algebraic_error) : nlohmann::json()},
          {"marked", s.marked},
          {"time_s", s.time_s}});
-  return {{"theta", spec.theta},
-          {"max_dofs", spec.max_dofs},
-          {"target", spec.target},
-          {"stop_reason", solution.stop_reason},
-          {"steps", steps}};
+  nlohmann::json a = {{"theta", spec.theta},
+                      {"max_dofs", spec.max_dofs},
+                      {"target", spec.target},
+                      {"stop_reason", solution.stop_reason},
+                      {"steps", steps}};
+  add_adaptive_summary(a, solution, spec);
+  return a;
 }
 
 }  // namespace fosls

@@ -72,4 +72,9 @@ CaseSolution solve_case_levels(MeshHierarchy meshes, const ProblemData& data, co
 /// The result's `adaptivity` object (docs/result-format.md).
 nlohmann::json adaptivity_json(const CaseSolution& solution, const AdaptivitySpec& spec);
 
+/// Adds estimator_reduction, last_force_change and stop_message to an adaptivity object
+/// (adaptive_summary.cpp).
+void add_adaptive_summary(nlohmann::json& adaptivity, const CaseSolution& solution,
+                          const AdaptivitySpec& spec);
+
 }  // namespace fosls

@@ -134,6 +134,7 @@ Obstacle read_obstacle(const json& j) {
   Obstacle o;
   const std::string type = j["type"];
   const Point moved = j.contains("displacement") ? read_point(j["displacement"]) : Point::Zero();
+  o.displacement = moved;
   if (type == "plane") {
     o.kind = Obstacle::Kind::kPlane;
     o.point = read_point(j["point"]) + moved;

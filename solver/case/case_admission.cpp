@@ -4,6 +4,7 @@
 #include <array>
 #include <cstdio>
 
+#include "case/early_group_check.hpp"
 #include "case/mesh_factory.hpp"
 #include "mesh/coarse_mesh_estimate.hpp"
 #include "mesh/geometry_checks.hpp"
@@ -11,12 +12,6 @@
 namespace fosls {
 
 namespace {
-
-std::string quoted_list(const std::vector<std::string>& names) {
-  std::string s;
-  for (const auto& g : names) s += (s.empty() ? "'" : ", '") + g + "'";
-  return s;
-}
 
 std::string bytes_text(double bytes) {
   char text[32];
@@ -51,8 +46,7 @@ std::vector<CaseError> check_against_groups(const CaseSpec& spec,
   std::array<bool, 2> held = {false, false};  // some group prescribes u_x, u_y
   for (const auto& [name, bc] : spec.boundary) {
     if (std::find(group_names.begin(), group_names.end(), name) == group_names.end())
-      errors.push_back({"/boundary/" + name, "the mesh has no boundary group '" + name +
-                                                 "'; its groups are " + quoted_list(group_names)});
+      errors.push_back(unknown_group_problem(name, group_names));
     dirichlet |= bc.type == BoundaryCondition::Type::kDirichlet;
     for (int c = 0; c < 2; ++c)
       held[c] |= bc.type == BoundaryCondition::Type::kDirichlet && bc.prescribed[c];

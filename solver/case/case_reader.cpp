@@ -1,7 +1,9 @@
 #include "case/case_reader.hpp"
 
 #include "case/case_sections.hpp"
+#include "case/early_group_check.hpp"
 #include "case/rule_checker.hpp"
+#include "case/units.hpp"
 
 namespace fosls {
 
@@ -13,6 +15,9 @@ ObjectRulePtr case_rule(const CaseReadOptions& options) {
   r->fields = {
       optional_field("name", name_value(options.limits.max_name_length, "the name"), defaults.name,
                      "a label copied to the result"),
+      optional_field("units", object_value(units_rule()), nullptr,
+                     "the units the case's numbers are in, named in the outputs (absent: not "
+                     "declared; the numbers are used as they are either way)"),
       required_field("mesh", object_value(mesh_rule(options)), "the mesh of the body"),
       required_field("material", object_value(material_rule()),
                      "the material (mu and lambda, or E and nu)"),
@@ -44,10 +49,14 @@ CaseReadResult read_case(const nlohmann::json& j, const CaseReadOptions& options
   RuleChecker checker(options);
   checker.check_object(j, *case_rule(options), "");
   result.errors = checker.take_errors();
-  if (!result.errors.empty()) return result;
+  if (!result.errors.empty()) {
+    add_unknown_group_problems(j, options, result.errors);  // all problems in one round
+    return result;
+  }
 
   CaseSpec spec;
   spec.name = j.value("name", spec.name);
+  if (j.contains("units")) spec.units = read_units_section(j["units"]);
   spec.mesh = read_mesh_section(j["mesh"]);
   spec.material = read_material_section(j["material"]);
   if (j.contains("body_force")) spec.body_force = read_scalar_pair(j["body_force"]);

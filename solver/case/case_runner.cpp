@@ -11,6 +11,7 @@
 #include "case/case_admission.hpp"
 #include "case/expression.hpp"
 #include "case/mesh_factory.hpp"
+#include "case/result_annotations.hpp"
 #include "case/result_json.hpp"
 #include "case/solver_methods.hpp"
 #include "core/indefinite_system.hpp"
@@ -200,7 +201,8 @@ RunOutput run_point(const CaseSpec& spec, const RunControl& control, const CaseL
   out.cancelled = solution.report.cancelled;
   if (control.want_vtu)
     out.vtu = write_vtu(disc.assembler(), problem, solution.full, solution.parts, solution.contact,
-                        solution.generation);
+                        solution.generation,
+                        control.vtu_ascii ? VtuEncoding::kAscii : VtuEncoding::kBinary);
   const auto t_end = Clock::now();
   ProblemSize size;
   size.levels = disc.num_levels();
@@ -218,6 +220,8 @@ RunOutput run_point(const CaseSpec& spec, const RunControl& control, const CaseL
   out.result =
       result_json(used, solution.report, solution.contact, solution.parts, size, timing, memory);
   if (spec.adaptivity) out.result["adaptivity"] = adaptivity_json(solution, *spec.adaptivity);
+  annotate_result(out.result, spec, disc.meshes().finest(), solution.contact,
+                  largest_strain(disc.assembler(), problem, solution.full));
   out.solution = std::move(solution.x);
   return out;
 }

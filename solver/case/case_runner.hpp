@@ -27,6 +27,8 @@ struct RunControl {
   const std::atomic<bool>* cancel = nullptr;
   /// Whether to produce the VTU text.
   bool want_vtu = true;
+  /// Its arrays as ASCII text instead of base64 binary (post/vtu_writer.hpp).
+  bool vtu_ascii = false;
   /// Limits of the mesher process (gmsh runs in a child process; see mesh/gmsh_mesh.hpp).
   MesherLimits mesher;
   /// Continuation: the solution of a case on the same mesh to start from (instead of the

@@ -10,6 +10,7 @@
 #include <string>
 #include <vector>
 
+#include "case/units.hpp"
 #include "mesh/geometry_spec.hpp"
 #include "solvers/solve_loop.hpp"
 
@@ -50,6 +51,9 @@ struct Obstacle {
   Point center = Point::Zero();  ///< circle
   double radius = 0.0;           ///< circle (the body lies outside the circle)
   Scalar gap;                    ///< gap: g(x, y) measured along the body normal
+  /// The obstacle's rigid displacement, already added to point and center (a prescribed
+  /// indentation: result_warnings.hpp tells it from an initial overlap).
+  Point displacement = Point::Zero();
 };
 
 enum class ContactDirection { kBodyNormal, kObstacleNormal };
@@ -112,6 +116,7 @@ struct CaseSpec {
   SolverOptions solver;  ///< the case's `solver` section (method, tolerance, smoothing, ...)
   std::optional<AdaptivitySpec> adaptivity;  ///< absent: uniform refinement only
   std::optional<SweepSpec> sweep;
+  UnitsSpec units;  ///< the case's `units`; none declared by default (units.hpp)
   /// With a sweep: the case at each value, in order (without a sweep of their own).
   std::vector<CaseSpec> sweep_points;
 };

@@ -11,12 +11,7 @@ namespace {
 
 using nlohmann::json;
 
-std::string short_number(double v) {
-  std::ostringstream s;
-  s.precision(3);
-  s << v;
-  return s.str();
-}
+std::string short_number(double v) { return sentence_number(v, 3); }
 
 double relative_kkt(const SolverReport& report) {
   return report.initial_kkt > 0 ? report.final_kkt / report.initial_kkt : 0.0;
@@ -148,28 +143,32 @@ std::string convergence_message(const SolverReport& report, const SolverOptions&
          "case (a too fine mesh for the method, or a contact zone the mesh does not resolve)";
 }
 
-std::vector<std::string> result_warnings(const SolverReport& report, const SolverOptions& options) {
-  std::vector<std::string> warnings;
+std::vector<ResultWarning> result_warnings(const SolverReport& report,
+                                           const SolverOptions& options) {
+  std::vector<ResultWarning> warnings;
   if (const StopReason why = stop_reason(report);
       why == StopReason::kMaxIterations || why == StopReason::kTimeLimit)
-    warnings.push_back(convergence_message(report, options));
+    warnings.push_back({why == StopReason::kTimeLimit ? "time_limit" : "not_converged",
+                        convergence_message(report, options)});
   if (report.converged_by == ConvergedBy::kRoundingLevel)
     warnings.push_back(
-        "the KKT residual stopped falling at " + short_number(relative_kkt(report)) +
-        " of its initial value, within " + short_number(kRoundingLevelFactor) +
-        " times the level that rounding allows, before the tolerance " +
-        short_number(options.tolerance) +
-        " (solver.tolerance); the solve stopped there as converged (docs/method.md §5.2). "
-        "Either the start was already close to the solution (an adaptive step's or a sweep "
-        "point's), or the tolerance is probably below what double precision can show for this "
-        "problem");
+        {"rounding_level",
+         "the KKT residual stopped falling at " + short_number(relative_kkt(report)) +
+             " of its initial value, within " + short_number(kRoundingLevelFactor) +
+             " times the level that rounding allows, before the tolerance " +
+             short_number(options.tolerance) +
+             " (solver.tolerance); the solve stopped there as converged (docs/method.md §5.2). "
+             "Either the start was already close to the solution (an adaptive step's or a sweep "
+             "point's), or the tolerance is probably below what double precision can show for this "
+             "problem"});
   if (report.cycle.safeguard_reductions > 0)
     warnings.push_back(
-        "coarse corrections were shortened " + std::to_string(report.cycle.safeguard_reductions) +
-        " times to stay feasible: on a curved contact boundary the coarse levels' contact "
-        "normals differ from the finest level's, so a coarse correction can overshoot the "
-        "obstacle and is cut back. This is expected there and needs no action: it costs "
-        "convergence speed, not accuracy");
+        {"coarse_corrections_shortened",
+         "coarse corrections were shortened " + std::to_string(report.cycle.safeguard_reductions) +
+             " times to stay feasible: on a curved contact boundary the coarse levels' contact "
+             "normals differ from the finest level's, so a coarse correction can overshoot the "
+             "obstacle and is cut back. This is expected there and needs no action: it costs "
+             "convergence speed, not accuracy"});
   return warnings;
 }
 
@@ -198,7 +197,7 @@ json result_json(const CaseSpec& spec, const SolverReport& report, const Contact
   r["active_bounds"] = report.active;
   r["active"] = report.active;
   if (const std::string m = convergence_message(report, options); !m.empty()) r["message"] = m;
-  r["warnings"] = result_warnings(report, options);
+  add_warnings(r, result_warnings(report, options));
   r["history"] = history_json(report.history);
   r["solver_statistics"] = statistics_json(report);
   r["contact"] = contact_json(contact, spec);

@@ -9,6 +9,7 @@
 #include "assembly/fosls_assembler.hpp"
 #include "case/case_spec.hpp"
 #include "case/result_rules.hpp"
+#include "case/result_warnings.hpp"
 #include "post/contact_output.hpp"
 #include "solvers/solve_loop.hpp"
 
@@ -40,8 +41,9 @@ StopReason stop_reason(const SolverReport& report);
 /// converged.
 std::string convergence_message(const SolverReport& report, const SolverOptions& options);
 
-/// The warnings of a result, each saying what happened and what it means.
-std::vector<std::string> result_warnings(const SolverReport& report, const SolverOptions& options);
+/// The solver's warnings of a result, each saying what happened and what it means.
+std::vector<ResultWarning> result_warnings(const SolverReport& report,
+                                           const SolverOptions& options);
 
 /// The whole result JSON.
 nlohmann::json result_json(const CaseSpec& spec, const SolverReport& report,

@@ -4,6 +4,7 @@
 
 #include "case/result_rules.hpp"
 
+#include "case/result_warnings.hpp"
 #include "case/solver_methods.hpp"
 
 namespace fosls {
@@ -69,14 +70,58 @@ ObjectRulePtr zone_rule() {
   return object_rule(
       "the contact zone", "zone",
       {output_field("edges", count(), "1", "contact edges in contact (pressure > 0)"),
-       output_field("length", number(), "L", "their total length (the contact width in 2D)"),
+       output_field("length", number(), "L",
+                    "their total length: an upper bound of the contact width, since the contact "
+                    "front lies inside the outermost of them"),
+       output_field("width", number(), "L",
+                    "the contact width (for Hertz, 2a): the zone's length along the boundary "
+                    "with each contact front where the pressure profile reaches zero, "
+                    "interpolated from the two outermost loaded edges as c √(a − x); the number "
+                    "the CLI and the web page show (docs/result-format.md, \"the contact "
+                    "width\")"),
        output_field("s_start", where, "L",
                     "arc length `s` at the start of the first edge in contact; null without one"),
        output_field("s_end", where, "L", "arc length `s` at the end of the last edge in contact"),
        output_field("peak_pressure", number(), "S",
                     "the largest edge pressure (0 without contact)"),
        output_field("peak_location", one_of_value({point_value(), null_value()}, "[x, y] or null"),
-                    "L", "midpoint [x, y] of the edge with the peak pressure")});
+                    "L", "midpoint [x, y] of the edge with the peak pressure"),
+       output_field("end_edge_length", number(), "L",
+                    "mean length of the edges at the ends of the zone: each contact front lies "
+                    "within about one such edge, so `length` is resolved to about ± this at "
+                    "each end (0 without contact)")});
+}
+
+ObjectRulePtr shape_rule() {
+  return object_rule(
+      "the contact boundary's shape", "contact_shape",
+      {output_field("type", choice_value({"none", "line", "arc", "other"}), "",
+                    "the vertices of the contact edges lie on a straight line, on one circular "
+                    "arc, or neither (each to 1e-6 of their extent); none without contact edges"),
+       optional_field("center", point_value(), nullptr, "arc: its centre [x, y] (unit L)"),
+       optional_field("radius", number(), nullptr, "arc: its radius (unit L)")});
+}
+
+ObjectRulePtr units_echo_rule() {
+  ValueRule name = one_of_value({text(), null_value()}, "a string or null");
+  return object_rule(
+      "the units", "units_echo",
+      {output_field("declared", boolean_value(), "", "the case has a units section"),
+       output_field("length", name, "", "units.length of the case (L); null when not declared"),
+       output_field("stress", name, "", "units.stress of the case (S); null when not declared"),
+       output_field("force_per_thickness", name, "",
+                    "the unit of S·L, a force per unit thickness: \"N/mm\" for MPa and mm, "
+                    "\"N/m\" for Pa and m; null when not declared")});
+}
+
+ObjectRulePtr warning_rule() {
+  return object_rule(
+      "a warning", "warning",
+      {output_field("code", choice_value(warning_codes()), "",
+                    "what kind of warning, for programs (docs/result-format.md, \"Warnings\")"),
+       output_field("message", text(), "", "the sentence, as in warnings"),
+       output_field("review", boolean_value(), "",
+                    "the answer may be physically empty or wrong although it converged")});
 }
 
 ObjectRulePtr sweep_point_rule(ValueRule reasons) {
@@ -86,12 +131,16 @@ ObjectRulePtr sweep_point_rule(ValueRule reasons) {
        output_field("force", point_value(), "S·L", "contact.force at this point"),
        output_field("peak_pressure", number(), "S", "contact.zone.peak_pressure at this point"),
        output_field("contact_length", number(), "L", "contact.zone.length at this point"),
+       output_field("contact_width", number(), "L", "contact.zone.width at this point"),
        output_field("converged", boolean_value(), "", "this point converged"),
        output_field("stop_reason", std::move(reasons), "", "why this point's iteration stopped"),
        output_field("converged_by", converged_by_value(), "",
                     "the test this point's solve met, as stopping.converged_by"),
        output_field("iterations", count(), "1",
-                    "finest-level iterations of this point (from the previous point's solution)")});
+                    "finest-level iterations of this point (from the previous point's solution)"),
+       output_field("warning_codes", list_value(choice_value(warning_codes()), "codes"), "",
+                    "the codes of this point's warnings (warning_details.code), e.g. no_contact "
+                    "at an indentation that does not reach the body")});
 }
 
 ObjectRulePtr sweep_rule(ValueRule reasons) {
@@ -131,7 +180,14 @@ ObjectRulePtr contact_rule() {
        output_field("zone", object_value(zone_rule()), "", "where the body touches the obstacle"),
        output_field("direction", choice_value({"body_normal", "obstacle_normal"}), "",
                     "the constraint direction (obstacle_normal when any contact group uses it)"),
-       output_field("obstacles", obstacles, "", "the obstacle type of each contact group")});
+       output_field("obstacles", obstacles, "", "the obstacle type of each contact group"),
+       output_field("shape", object_value(shape_rule()), "",
+                    "the shape of the contact boundary (a circular arc against a plane is a "
+                    "Hertz problem: the web page offers the comparison by this)"),
+       output_field("plane_normal", one_of_value({point_value(), null_value()}, "[x, y] or null"),
+                    "1",
+                    "the unit normal (from the obstacle into the body) of the plane obstacle "
+                    "when every contact group has a plane with this normal; null otherwise")});
 }
 
 ObjectRulePtr functional_rule() {
@@ -258,7 +314,9 @@ ObjectRulePtr adaptivity_result_rule() {
       "the adaptive run", "adaptivity_result",
       {output_field("theta", number(), "1", "adaptivity.theta used"),
        output_field("max_dofs", count(), "1", "adaptivity.max_dofs used"),
-       output_field("target", number(), "1", "adaptivity.target used"),
+       output_field("target", number(), "1",
+                    "adaptivity.target used: the loop stops once the estimator J^½ has fallen "
+                    "to target times its first value (a relative reduction, not an accuracy)"),
        output_field("stop_reason",
                     choice_value({"steps", "max_dofs", "target", "not_converged", "time_limit",
                                   "cancelled"}),
@@ -267,7 +325,17 @@ ObjectRulePtr adaptivity_result_rule() {
                     "max_dofs, the estimator reached target (or vanished), a solve did not "
                     "converge, solver.time_limit_s ran out, or the job was cancelled"),
        output_field("steps", list_value(object_value(adaptive_step_rule()), "one per solve"), "",
-                    "every solve of the loop, the last one being the result's")});
+                    "every solve of the loop, the last one being the result's"),
+       output_field("estimator_reduction", number(), "1",
+                    "the last step's estimator J^½ over the first step's: the quantity target "
+                    "is compared with (a reduction of the estimator, not an accuracy)"),
+       output_field("last_force_change",
+                    one_of_value({number_value(), null_value()}, "a number or null"), "1",
+                    "|F_k − F_(k−1)| / |F_k| of the contact force in the last step: about how "
+                    "much one more step would change it (null with one step or a zero force)"),
+       output_field("stop_message", text(), "",
+                    "why the loop stopped, in words, with the estimator's reduction and what "
+                    "target means (the CLI prints it)")});
 }
 
 ObjectRulePtr memory_rule() {
@@ -336,8 +404,16 @@ ObjectRulePtr result_rule() {
        optional_field("message", text(), nullptr,
                       "why the solve did not converge or was cancelled (also in warnings)"),
        output_field("warnings", list_value(text(), "list of sentences"), "",
-                    "what the user should know: non-convergence, shortened coarse corrections, "
-                    "each with what it means"),
+                    "what the user should know (no contact, an initial overlap, a load the "
+                    "contact cannot hold, a coarsely resolved contact zone, implausible units, "
+                    "non-convergence, ...), each with what it means: the messages of "
+                    "warning_details, in the same order"),
+       output_field("warning_details", list_value(object_value(warning_rule()), "one per warning"),
+                    "", "the warnings with their codes (docs/result-format.md, \"Warnings\")"),
+       output_field("review_required", boolean_value(), "",
+                    "a warning says that the answer may be physically empty or wrong although "
+                    "it converged (a warning with review true); fosls-contact solve then exits "
+                    "with code 4"),
        output_field("history", list_value(object_value(history_rule()), "one per iteration"), "",
                     "the initial iterate and every iteration"),
        output_field("solver_statistics", object_value(statistics_rule()), "",
@@ -346,6 +422,9 @@ ObjectRulePtr result_rule() {
                     "the contact output (empty arrays when the case has no contact group)"),
        output_field("functional", object_value(functional_rule()), "",
                     "the FOSLS functional at the solution and its parts"),
+       output_field("units", object_value(units_echo_rule()), "",
+                    "the units the case declared (its numbers are used as they are either "
+                    "way)"),
        output_field("material", object_value(material_echo_rule()), "",
                     "the material as used (μ, λ)"),
        output_field("mesh", object_value(mesh_echo_rule()), "", "the mesh as given"),

@@ -5,6 +5,7 @@
 #include <cstdlib>
 
 #include "case/expression.hpp"
+#include "case/units.hpp"
 
 namespace fosls {
 
@@ -116,7 +117,7 @@ bool RuleChecker::usable(const json& object, const std::string& pointer,
 bool RuleChecker::check_number(const json& j, const ValueRule& rule, const std::string& pointer) {
   const bool integer = rule.kind == ValueKind::kInteger;
   if (!j.is_number()) {
-    error(pointer, "expected " + value_noun(rule) + ", got " + describe_value(j));
+    error(pointer, "expected " + value_noun(rule) + ", got " + describe_value(j) + unit_hint(j));
     return false;
   }
   const double v = j.get<double>();
@@ -188,7 +189,7 @@ bool RuleChecker::check_scalar(const json& j, const ValueRule& rule, const std::
   }
   if (auto reason =
           check_expression(j.get<std::string>(), static_cast<std::size_t>(rule.range.hi))) {
-    error(pointer, *reason);
+    error(pointer, *reason + unit_hint(j));
     return false;
   }
   return true;

@@ -1,10 +1,18 @@
 #include "case/sweep_runner.hpp"
 
+#include "case/result_warnings.hpp"
+
 namespace fosls {
 
 namespace {
 
 using nlohmann::json;
+
+json warning_codes_of(const json& r) {
+  json codes = json::array();
+  for (const auto& w : r["warning_details"]) codes.push_back(w["code"]);
+  return codes;
+}
 
 /// What a force–indentation (or any parameter) curve needs of one point.
 json point_json(double value, const json& r) {
@@ -13,10 +21,12 @@ json point_json(double value, const json& r) {
           {"force", contact["force"]},
           {"peak_pressure", contact["zone"]["peak_pressure"]},
           {"contact_length", contact["zone"]["length"]},
+          {"contact_width", contact["zone"]["width"]},
           {"converged", r["converged"]},
           {"stop_reason", r["stop_reason"]},
           {"converged_by", r["stopping"]["converged_by"]},
-          {"iterations", r["iterations"]}};
+          {"iterations", r["iterations"]},
+          {"warning_codes", warning_codes_of(r)}};
 }
 
 }  // namespace
@@ -27,7 +37,7 @@ RunOutput run_sweep(const CaseSpec& spec, const RunControl& control,
   RunOutput last;
   Vector previous;
   std::string first_failure;  // stop_reason of the first point that did not converge
-  std::vector<std::string> warnings;
+  std::vector<ResultWarning> warnings;
   const std::size_t n = spec.sweep_points.size();
   for (std::size_t i = 0; i < n; ++i) {
     RunControl point_control = control;
@@ -39,9 +49,10 @@ RunOutput run_sweep(const CaseSpec& spec, const RunControl& control,
     points.push_back(point_json(value, last.result));
     if (!last.result["converged"].get<bool>()) {
       if (first_failure.empty()) first_failure = last.result["stop_reason"];
-      warnings.push_back("sweep point " + std::to_string(i) + " (" + spec.sweep->pointer + " = " +
-                         json(value).dump() + ") did not converge: " +
-                         last.result.value("message", std::string("no message")));
+      warnings.push_back({"sweep_point_not_converged",
+                          "sweep point " + std::to_string(i) + " (" + spec.sweep->pointer + " = " +
+                              json(value).dump() + ") did not converge: " +
+                              last.result.value("message", std::string("no message"))});
     }
     previous = std::move(last.solution);
   }
@@ -52,7 +63,7 @@ RunOutput run_sweep(const CaseSpec& spec, const RunControl& control,
   if (!first_failure.empty() && !r.contains("message"))
     r["message"] = std::to_string(warnings.size()) + " of " + std::to_string(n) +
                    " sweep points did not converge (see warnings and sweep.points)";
-  for (auto& w : warnings) r["warnings"].push_back(std::move(w));
+  add_warnings(r, warnings);
   r["sweep"] = {{"pointer", spec.sweep->pointer}, {"points", std::move(points)}};
   last.solution = std::move(previous);
   return last;

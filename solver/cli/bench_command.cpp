@@ -130,7 +130,7 @@ nlohmann::json run_isolated(const nlohmann::json& case_json, int threads) {
                // The physical answer per level, so that a mesh-convergence study is one command.
                {"force", r["contact"]["force"]},
                {"peak_pressure", r["contact"]["zone"]["peak_pressure"]},
-               {"contact_width", r["contact"]["zone"]["length"]},
+               {"contact_width", r["contact"]["zone"]["width"]},
                {"estimator", r["functional"]["estimator"]}};
       }
     } catch (const std::exception& e) {

@@ -17,6 +17,7 @@
 #include "case/case_runner.hpp"
 #include "cli/case_file.hpp"
 #include "cli/exit_codes.hpp"
+#include "cli/result_summary.hpp"
 
 namespace fosls {
 
@@ -27,6 +28,7 @@ struct SolveOptions {
   std::string out_path;
   std::string vtu_path;
   std::string msh_path;  ///< --msh: the coarse mesh from this file instead of the case's source
+  std::string vtu_format = "binary";  ///< --vtu-format: binary (base64) or ascii
   bool quiet = false;
 };
 
@@ -96,82 +98,12 @@ bool output_folder_ok(const std::string& option, const std::string& path) {
   return true;
 }
 
-std::string g(double v, int digits = 4) {
-  char text[32];
-  std::snprintf(text, sizeof text, "%.*g", digits, v);
-  return text;
-}
-
-/// The answer an engineer looks for: force, peak pressure, contact zone, estimator.
-void print_summary(const nlohmann::json& r) {
-  const auto& c = r["contact"];
-  const auto& z = c["zone"];
-  std::cerr << "  force on the body   F = (" << g(c["force"][0]) << ", " << g(c["force"][1])
-            << ") per unit thickness (the obstacle's force on the body)\n";
-  if (c["x"].empty()) {
-    std::cerr << "  contact             none: the case has no contact group\n";
-  } else if (z["edges"] == 0) {
-    std::cerr << "  contact zone        no edge in contact (" << c["x"].size()
-              << " contact edges)\n";
-  } else {
-    std::cerr << "  peak pressure       p_max = " << g(z["peak_pressure"]) << " at ("
-              << g(z["peak_location"][0]) << ", " << g(z["peak_location"][1]) << ")\n"
-              << "  contact zone        " << z["edges"].get<int>() << " of " << c["x"].size()
-              << " contact edges, width " << g(z["length"]) << " (s from " << g(z["s_start"])
-              << " to " << g(z["s_end"]) << ")\n";
-  }
-  std::cerr << "  error estimator     J^1/2 = " << g(r["functional"]["estimator"], 3)
-            << " (scaled units)\n";
-}
-
-/// One line per point of a sweep: the curve in the terminal.
-void print_sweep(const nlohmann::json& sweep) {
-  std::cerr << "  sweep of " << sweep["pointer"].get<std::string>() << ":\n"
-            << "    value          F_x            F_y            p_max          width          "
-               "iterations\n";
-  for (const auto& p : sweep["points"]) {
-    std::cerr << "    ";
-    for (const nlohmann::json& v :
-         {p["value"], p["force"][0], p["force"][1], p["peak_pressure"], p["contact_length"]}) {
-      const std::string text = g(v);
-      std::cerr << text << std::string(text.size() < 15 ? 15 - text.size() : 1, ' ');
-    }
-    std::cerr << p["iterations"].get<int>()
-              << (p["converged"].get<bool>()
-                      ? ""
-                      : "  NOT converged (" + p["stop_reason"].get<std::string>() + ")")
-              << '\n';
-  }
-}
-
-/// What the summary line adds when the discretisation rule or the rounding level stopped the
-/// solve.
-std::string stopped_by(const nlohmann::json& r) {
-  if (!r.contains("stopping")) return "";
-  if (r["stopping"]["converged_by"] == "rounding_level")
-    return "; stopped where the residual stalled at its rounding level (see the warning)";
-  if (r["stopping"]["converged_by"] != "algebraic_error") return "";
-  return "; stopped at the discretisation error: algebraic error " +
-         g(r["stopping"]["algebraic_error"], 2) + " <= " + g(r["stopping"]["fraction"], 2) +
-         " x J^1/2, J^1/2 = " + g(r["stopping"]["estimator"], 2);
-}
-
-/// Reports the outcome and picks the exit code: 0 when converged, 3 when not. Warnings are
-/// printed even with --quiet.
+/// Reports the outcome and picks the exit code (result_exit_code). Warnings are printed even
+/// with --quiet.
 int report(const nlohmann::json& r, const SolveOptions& o) {
   for (const auto& w : r["warnings"]) std::cerr << "warning: " << w.get<std::string>() << '\n';
-  const bool converged = r.value("converged", false);
-  if (!o.quiet) {
-    const std::string what = converged ? "converged in " : "NOT converged: stopped after ";
-    std::cerr << what << r["iterations"].get<int>() << " iterations (" << r["levels"].get<int>()
-              << " levels, " << r["dofs"].get<long long>() << " unknowns, "
-              << g(r["timing"]["total_s"], 3) << " s; relative KKT residual "
-              << g(r["relative_kkt_residual"], 2) << ", tolerance " << g(r["tolerance"], 2)
-              << stopped_by(r) << ")\n";
-    print_summary(r);
-    if (r.contains("sweep")) print_sweep(r["sweep"]);
-  }
-  return converged ? kExitOk : kExitNotConverged;
+  if (!o.quiet) print_result_summary(std::cerr, r);
+  return result_exit_code(r);
 }
 
 /// --msh FILE: the case's mesh source becomes mesh.msh_file (its size and refinements stay).
@@ -210,6 +142,7 @@ int run_solve(const SolveOptions& o) {
 
     RunControl control;
     control.want_vtu = !o.vtu_path.empty();
+    control.vtu_ascii = o.vtu_format == "ascii";
     control.on_iteration = [&progress](const IterationRecord& r) { progress.update(r); };
     if (read.spec->adaptivity)
       control.on_step = [&progress](int step, long long dofs) { progress.start_step(step, dofs); };
@@ -247,6 +180,9 @@ void add_solve_command(CLI::App& app, int& exit_code) {
   cmd->add_option("CASE", o->case_path, "Case JSON file (- reads standard input)")->required();
   cmd->add_option("--out,-o", o->out_path, "Write the result JSON here instead of stdout");
   cmd->add_option("--vtu", o->vtu_path, "Write the solution as a VTK unstructured grid here");
+  cmd->add_option("--vtu-format", o->vtu_format,
+                  "How the VTU's arrays are written: binary (base64, the default) or ascii")
+      ->check(CLI::IsMember({"binary", "ascii"}));
   cmd->add_option("--msh", o->msh_path,
                   "Use this gmsh mesh file (ASCII 4.1) as the coarse mesh instead of the case's "
                   "mesh source");

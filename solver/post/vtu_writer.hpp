@@ -1,6 +1,7 @@
 #pragma once
-// VTK XML unstructured grid (.vtu, ASCII) of a solution for ParaView. The arrays it writes are
-// listed, with their units and meaning, by vtu_arrays() (documented in docs/result-format.md).
+// VTK XML unstructured grid (.vtu) of a solution for ParaView: binary (base64, inline) by
+// default, ASCII on request. The arrays it writes are listed, with their units and meaning, by
+// vtu_arrays() (documented in docs/result-format.md).
 
 #include <span>
 #include <string>
@@ -23,10 +24,16 @@ struct VtuArray {
 /// Every array write_vtu writes, in the order of the file.
 std::span<const VtuArray> vtu_arrays();
 
+/// How the arrays are written: "binary" is base64 of a UInt32 byte count followed by the
+/// little-endian values (VTK's inline binary format, exact doubles, about 40 % of the ASCII
+/// size); "ascii" is text with 12 significant digits.
+enum class VtuEncoding { kBinary, kAscii };
+
 /// `generation`: per triangle, the bisections that separate it from its coarse-mesh ancestor
 /// (a red refinement counts as two).
 std::string write_vtu(const FoslsAssembler& assembler, const AssembledProblem& problem,
                       const Vector& x_full, const FunctionalParts& functional,
-                      const ContactResult& contact, const std::vector<int>& generation);
+                      const ContactResult& contact, const std::vector<int>& generation,
+                      VtuEncoding encoding = VtuEncoding::kBinary);
 
 }  // namespace fosls

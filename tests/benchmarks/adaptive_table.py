@@ -48,7 +48,7 @@ def solve(program, case, workdir):
         json.dump(case, f)
     cpu0 = children_cpu_s()
     run = subprocess.run([program, "solve", path, "--out", out], capture_output=True, text=True)
-    if run.returncode not in (0, 3):
+    if run.returncode not in (0, 3, 4):
         sys.exit(f"{case['name']}: fosls-contact exited {run.returncode}: {run.stderr}")
     with open(out) as f:
         result = json.load(f)

@@ -7,8 +7,8 @@
   the server, answers with a status the document lists for it; every job the server returns
   is valid for the document's Job schema, every result for the result schema.
 - GET /v1/jobs/{id}/case returns the submitted case.
-- The Python example client of docs/service.md runs against the server: a valid case prints
-  its answer, an invalid one lists its JSON pointers.
+- The Python client (clients/python/fosls_client.py) runs against the server: a valid case
+  prints its answer, an invalid one lists its JSON pointers.
 """
 import argparse
 import json
@@ -157,17 +157,8 @@ def check_operations(server, source, doc, failures):
                         failures.append(f"{method.upper()} {concrete}: {error.message}")
 
 
-def client_code(source):
-    """The Python example client of docs/service.md (its first python block)."""
-    text = (source / "docs/service.md").read_text()
-    match = re.search(r"```python\n(.*?)```", text, re.S)
-    assert match, "docs/service.md has no python block"
-    return match.group(1)
-
-
 def check_client(server, source, folder, failures):
-    client = folder / "client.py"
-    client.write_text(client_code(source))
+    client = source / "clients/python/fosls_client.py"
     good = folder / "good.json"
     good.write_text(json.dumps(small_case(source, "from-the-client")))
     bad_case = small_case(source, "bad")

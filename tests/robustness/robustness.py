@@ -60,7 +60,7 @@ def solve_once(binary, case, method, workdir, plain):
     run = subprocess.run([binary, "solve", path, "--out", out, "--quiet"],
                          capture_output=True, text=True)
     wall = time.monotonic() - start
-    if run.returncode not in (0, 3):
+    if run.returncode not in (0, 3, 4):
         return {"error": (run.stderr or run.stdout).strip().splitlines()[-1:]}
     with open(out) as f:
         result = json.load(f)

@@ -49,3 +49,9 @@ target_compile_definitions(cluster_integration_test PRIVATE
 add_dependencies(cluster_integration_test fosls-serve fosls-worker)
 gtest_discover_tests(cluster_integration_test PROPERTIES LABELS integration TIMEOUT 400
                      DISCOVERY_TIMEOUT 60)
+
+# The docs name only routes the server has (README.md and docs/*.md against api_routes()).
+add_executable(doc_routes_test ${SERVICE_TEST_DIR}/doc_routes_test.cpp)
+target_link_libraries(doc_routes_test PRIVATE fosls_service GTest::gtest_main)
+target_include_directories(doc_routes_test PRIVATE ${PROJECT_SOURCE_DIR}/service)
+gtest_discover_tests(doc_routes_test PROPERTIES LABELS unit TIMEOUT 60 DISCOVERY_TIMEOUT 60)

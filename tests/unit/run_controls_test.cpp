@@ -167,7 +167,10 @@ TEST(RunControls, APressureIsTheTractionAlongTheInwardNormal) {
   traction["boundary"]["top"] = {{"type", "neumann"}, {"traction", {0, -0.01}}};
   const CaseReadResult read = read_case(j), read_traction = read_case(traction);
   ASSERT_TRUE(read.spec && read_traction.spec);
-  const RunOutput out = run_case(*read.spec), out_traction = run_case(*read_traction.spec);
+  RunControl ascii;  // point_array reads the VTU's text
+  ascii.vtu_ascii = true;
+  const RunOutput out = run_case(*read.spec, ascii),
+                  out_traction = run_case(*read_traction.spec, ascii);
   ASSERT_EQ(out.result["converged"], true);
   const std::vector<double> u = point_array(out.vtu, "u");
   ASSERT_FALSE(u.empty());
@@ -184,8 +187,8 @@ TEST(RunControls, APressureIsTheTractionAlongTheInwardNormal) {
   // On the right side the outward normal is +x: the pressure is the traction [−p, 0] there.
   j["boundary"]["right"] = {{"type", "pressure"}, {"pressure", 0.01}};
   traction["boundary"]["right"] = {{"type", "neumann"}, {"traction", {-0.01, 0}}};
-  const RunOutput both = run_case(*read_case(j).spec);
-  const RunOutput both_traction = run_case(*read_case(traction).spec);
+  const RunOutput both = run_case(*read_case(j).spec, ascii);
+  const RunOutput both_traction = run_case(*read_case(traction).spec, ascii);
   EXPECT_EQ(point_array(both.vtu, "u"), point_array(both_traction.vtu, "u"));
   EXPECT_NE(point_array(both.vtu, "u"), u);
 }

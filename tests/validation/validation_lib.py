@@ -38,9 +38,9 @@ def solve(binary, case, vtu=False, allow_unconverged=False):
             json.dump(case, f)
         cmd = [binary, "solve", case_path, "--out", out_path, "--quiet"]
         if vtu:
-            cmd += ["--vtu", vtu_path]
+            cmd += ["--vtu", vtu_path, "--vtu-format", "ascii"]
         proc = subprocess.run(cmd, capture_output=True, text=True)
-        if proc.returncode not in (0, 3) or not os.path.exists(out_path):
+        if proc.returncode not in (0, 3, 4) or not os.path.exists(out_path):
             raise SolveError("%s exited with %d: %s" % (" ".join(cmd), proc.returncode,
                                                         proc.stderr.strip()))
         if proc.returncode == 3 and not allow_unconverged:

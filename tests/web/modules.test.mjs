@@ -9,7 +9,7 @@ import { fileURLToPath } from 'node:url';
 import { dirname, join } from 'node:path';
 
 import { locateJson, rangeForPointer, lineOfOffset, splitPointer } from '../../web/app/json_locations.js';
-import { contactModulus, hertzContact, hertzForCase, hertzPressure, lameParameters } from '../../web/app/hertz.js';
+import { contactModulus, hertzContact, hertzForResult, hertzPressure, lameParameters } from '../../web/app/hertz.js';
 import { parseVtu } from '../../web/app/vtu.js';
 import { autoMagnification, colourAt, colourScale, maxDisplacement } from '../../web/app/mesh_view.js';
 import { MESH_FIELDS, probeSummary } from '../../web/app/mesh_fields.js';
@@ -86,20 +86,23 @@ test('Hertz: a, p0 and the pressure integrate to the force', () => {
   assert.equal(hertzPressure(1.01 * h.a, h), 0);
 });
 
-test('Hertz applies to the shipped hertz case only', () => {
-  const caseJson = JSON.parse(hertzText);
-  const result = { name: 'hertz', contact: { force: [0, -0.25] } };
-  const h = hertzForCase(caseJson, result);
-  assert.equal(h.F, 0.25);
-  assert.equal(h.R, 1);
-  assert.equal(hertzForCase({ ...caseJson, name: 'disk' }, result), null);
-  assert.equal(hertzForCase(caseJson, { contact: { force: [0, 0] } }), null);
-  const circle = structuredClone(caseJson);
-  circle.boundary.contact.obstacle = { type: 'circle', center: [0, -1], radius: 1 };
-  assert.equal(hertzForCase(circle, result), null);
-  const bigger = structuredClone(caseJson);
-  bigger.mesh.builtin.radius = 2;
-  assert.equal(hertzForCase(bigger, result).R, 2);
+test('Hertz is offered by geometry: an arc against a plane, whatever the name', () => {
+  const result = {
+    name: 'a roller',
+    material: { mu: 1, lambda: 1 },
+    contact: { force: [0, 0.25], shape: { type: 'arc', center: [0, 2], radius: 2 }, plane_normal: [0, 1] },
+  };
+  const h = hertzForResult(result);
+  assert.equal(h.R, 2);
+  assert.ok(Math.abs(h.Estar - 8 / 3) < 1e-12);
+  assert.ok(Math.abs(h.a - Math.sqrt((4 * 0.25 * 2) / (Math.PI * (8 / 3)))) < 1e-12);
+  // The normal force along the plane's normal, not |F_y|, on a tilted plane.
+  const tilted = { ...result, contact: { ...result.contact, force: [0.6, 0.8], plane_normal: [0.6, 0.8] } };
+  assert.ok(Math.abs(hertzForResult(tilted).F - 1) < 1e-12);
+  assert.equal(hertzForResult({ ...result, contact: { ...result.contact, shape: { type: 'line' } } }), null);
+  assert.equal(hertzForResult({ ...result, contact: { ...result.contact, plane_normal: null } }), null, 'a circle or gap obstacle');
+  assert.equal(hertzForResult({ ...result, contact: { ...result.contact, force: [0, 0] } }), null, 'no contact');
+  assert.equal(hertzForResult({ ...result, material: { mu: 1, lambda: 'inf' } }).Estar, 4);
 });
 
 const twoTriangles = `<?xml version="1.0"?>
@@ -161,11 +164,28 @@ test('the VTU reader returns points, triangles, point and cell data', () => {
   assert.ok(Math.abs(maxDisplacement(mesh) - Math.hypot(0.001, 0.002)) < 1e-15);
 });
 
+/** The same two triangles with every array in VTK's inline binary format (base64 of a UInt32 byte count and the values). */
+function binaryTwoTriangles() {
+  const types = { Float64: Float64Array, Int32: Int32Array, UInt8: Uint8Array };
+  return twoTriangles.replace(/<DataArray type="(\w+)"([^>]*) format="ascii">\n([\s\S]*?)<\/DataArray>/g, (all, type, attrs, text) => {
+    const values = new types[type](text.trim().split(/\s+/).map(Number));
+    const bytes = Buffer.concat([Buffer.from(new Uint32Array([values.byteLength]).buffer), Buffer.from(values.buffer)]);
+    return `<DataArray type="${type}"${attrs} format="binary">\n${bytes.toString('base64')}\n</DataArray>`;
+  });
+}
+
+test('the VTU reader reads inline binary arrays as their ASCII values', () => {
+  const binary = binaryTwoTriangles();
+  assert.ok(binary.includes('format="binary"') && !binary.includes('format="ascii"'));
+  assert.deepEqual(parseVtu(binary), parseVtu(twoTriangles));
+});
+
 test('the VTU reader says what is wrong with a broken file', () => {
   assert.throws(() => parseVtu('<html></html>'), /no <Piece>/);
   assert.throws(() => parseVtu(twoTriangles.replace('0 2 3', '0 2 7')), /names point 7/);
   assert.throws(() => parseVtu(twoTriangles.replace('0.5\n1.5e-3\n', '0.5\n')), /von_mises/);
-  assert.throws(() => parseVtu(twoTriangles.replace('Name="u" NumberOfComponents="3" format="ascii"', 'Name="u" NumberOfComponents="3" format="binary"')), /not ASCII/);
+  assert.throws(() => parseVtu(twoTriangles.replace('Name="u" NumberOfComponents="3" format="ascii"', 'Name="u" NumberOfComponents="3" format="appended"')), /neither ASCII nor inline binary/);
+  assert.throws(() => parseVtu(binaryTwoTriangles().replace(/(Name="u"[^>]*>\n)(\S{8})/, '$1AAAAAAAA')), /header announces 0 bytes|expected 4 × 3/);
 });
 
 test('magnification makes the largest displacement about 8 % of the diagonal, never below 1', () => {
@@ -192,21 +212,6 @@ test('signed fields with both signs get the diverging map, symmetric about 0', (
   assert.deepEqual(colourScale({ min: -0.01, max: 0.3 }, true), { map: 'coolwarm', min: -0.3, max: 0.3 });
   assert.deepEqual(colourScale({ min: 0.01, max: 0.3 }, true), { map: 'viridis', min: 0.01, max: 0.3 });
   assert.deepEqual(colourScale({ min: -0.1, max: 0.02 }, false), { map: 'viridis', min: -0.1, max: 0.02 });
-});
-
-test('the Hertz comparison can be rebuilt from a result alone', async () => {
-  const { caseFromResult, hertzForCase } = await import('../../web/app/hertz.js');
-  const result = {
-    name: 'hertz',
-    material: { mu: 1, lambda: 'inf' },
-    mesh: { builtin: 'hertz', params: { radius: 2, contact_fraction: 0.5, grading: 9 } },
-    contact: { force: [0, 0.02], obstacles: { contact: 'plane' }, x: [0], pressure: [0.1] },
-  };
-  const h = hertzForCase(caseFromResult(result), result);
-  assert.equal(h.R, 2);
-  assert.equal(h.Estar, 4);
-  assert.ok(Math.abs(h.a - Math.sqrt((4 * 0.02 * 2) / (Math.PI * 4))) < 1e-12);
-  assert.equal(caseFromResult({ name: 'x' }), null);
 });
 
 test('the mesh fields: each σ component, u per triangle, and their units', () => {
@@ -268,8 +273,8 @@ test('CSV of the contact boundary and of a sweep', () => {
   const contact = { x: [-0.1, 0.1], y: [0, 0], s: [0.9, 1.1], length: [0.2, 0.2], pressure: [0.5, 0], gap: [0, 0.01], active: [true, false] };
   assert.equal(contactCsv(contact), 'x,y,s,length,pressure,gap,active\n-0.1,0,0.9,0.2,0.5,0,1\n0.1,0,1.1,0.2,0,0.01,0\n');
   assert.equal(contactCsv({ x: [] }), 'x,y,s,length,pressure,gap,active\n');
-  const sweep = { pointer: '/a/b', points: [{ value: 1, force: [0, 2.5], peak_pressure: 3, contact_length: 0.4, converged: false, stop_reason: 'max_iterations', iterations: 200 }] };
-  assert.equal(sweepCsv(sweep), '/a/b,force_x,force_y,peak_pressure,contact_length,converged,stop_reason,iterations\n1,0,2.5,3,0.4,0,"max_iterations",200\n');
+  const sweep = { pointer: '/a/b', points: [{ value: 1, force: [0, 2.5], peak_pressure: 3, contact_width: 0.35, contact_length: 0.4, converged: false, stop_reason: 'max_iterations', iterations: 200 }] };
+  assert.equal(sweepCsv(sweep), '/a/b,force_x,force_y,peak_pressure,contact_width,contact_length,converged,stop_reason,iterations\n1,0,2.5,3,0.35,0.4,0,"max_iterations",200\n');
 });
 
 test('adaptive steps: the force change is relative to the later step, none on the first', () => {

@@ -220,6 +220,8 @@ test('submitting the hertz case shows pressure with the Hertz curve, residuals a
   assert.match(note, new RegExp(`a = ${Number(a.toPrecision(4))}`.replace('.', '\\.')), note);
   const numbers = await page.locator('#key-numbers').innerText();
   assert.match(numbers, /Hertz 2a = /);
+  // One contact width everywhere: the page shows the result's contact.zone.width.
+  assert.match(numbers, new RegExp(`Contact width\\s+${fmt(result.contact.zone.width).replace('.', '\\.')} \\(Hertz 2a`), numbers);
   assert.match(numbers, new RegExp(`DOFs\\s+${result.dofs}`));
   assert.match(numbers, new RegExp(`Iterations\\s+${result.iterations}`));
   assert.match(await page.locator('#mesh-caption').innerText(), /magnified ×\d+/);
@@ -467,6 +469,33 @@ test('a solve stopped by max_iterations gets its own badge, not the success colo
   await page.locator('#job-summary', { hasText: /^Did not converge/ }).waitFor();
 });
 
+test('a converged answer without contact is flagged for review, with its warning', async () => {
+  const row = await submitHertzVariant('upside_down', 1, (c) => {
+    c.boundary.contact.obstacle.normal = [0, -1];
+  });
+  await row.locator('.state-succeeded').waitFor();
+  await page.locator('#job-summary', { hasText: /^Converged in \d+ iterations, but the answer needs review/ }).waitFor();
+  const warning = page.locator('#job-warnings li.review[data-code="no_contact"]');
+  await warning.waitFor();
+  assert.match(await warning.innerText(), /^Check this answer: no contact/);
+  assert.equal(await page.locator('#hertz-note').innerText(), '', 'no Hertz curve without a force');
+});
+
+test('declared units label the numbers and Hertz is offered by geometry, not by name', async () => {
+  const row = await submitHertzVariant('a roller in mm', 1, (c) => {
+    c.units = { length: 'mm', stress: 'MPa' };
+  });
+  await row.locator('.state-succeeded').waitFor();
+  await page.locator('#hertz-note', { hasText: /Dashed red: plane-strain Hertz/ }).waitFor();
+  const jobId = Number(await row.getAttribute('data-job-id'));
+  const result = await (await fetch(`${server.url}/v1/jobs/${jobId}/result`)).json();
+  const numbers = await page.locator('#key-numbers').innerText();
+  assert.ok(numbers.includes(`${fmt(result.contact.force[1])} N/mm`), numbers);
+  assert.ok(numbers.includes(`${fmt(result.contact.zone.width)} mm (Hertz 2a`), numbers);
+  assert.ok(numbers.includes(`${fmt(result.contact.zone.peak_pressure)} MPa (Hertz p0`), numbers);
+  assert.match(await page.locator('#legend-label').innerText(), /in MPa; here μ = |in mm/);
+});
+
 test('a sweep shows the force of every point against the swept value', async () => {
   const row = await submitHertzVariant('swept_hertz', 1, (c) => {
     c.boundary.top.displacement = [0, -0.004];
@@ -480,7 +509,7 @@ test('a sweep shows the force of every point against the swept value', async () 
   assert.match(await page.locator('#sweep-note').innerText(), /^3 points of \/boundary\/top\/displacement\/1.*all converged/);
   const csv = await page.locator('#download-sweep-csv').evaluate(async (a) => (await fetch(a.href)).text());
   const lines = csv.trim().split('\n');
-  assert.equal(lines[0], '/boundary/top/displacement/1,force_x,force_y,peak_pressure,contact_length,converged,stop_reason,iterations');
+  assert.equal(lines[0], '/boundary/top/displacement/1,force_x,force_y,peak_pressure,contact_width,contact_length,converged,stop_reason,iterations');
   const result = await (await fetch(`${server.url}/v1/jobs/${await row.getAttribute('data-job-id')}/result`)).json();
   assert.deepEqual(lines.slice(1).map((l) => Number(l.split(',')[2])), result.sweep.points.map((p) => p.force[1]));
 });
@@ -501,7 +530,8 @@ test('a second job is drawn over the first: pressure and gap, and the sweep curv
   await page.locator('#compare-job').selectOption(String(sweptId));
   await page.waitForFunction(() => document.querySelector('#sweep-plot')?.dataset.comparePoints === '3');
   const pressure = page.locator('#pressure-plot');
-  assert.equal(await pressure.getAttribute('data-series'), `pressure|gap|job ${sweptId} pressure|job ${sweptId} gap`);
+  // The Hertz curve comes with the geometry (a half disk on a plane), whatever the job's name.
+  assert.equal(await pressure.getAttribute('data-series'), `pressure|gap|Hertz pressure (plane strain)|job ${sweptId} pressure|job ${sweptId} gap`);
   assert.equal(await pressure.getAttribute('data-compare-points'), String(otherResult.contact.x.length));
   await expectPixels('#pressure-plot', '#e67e22', 50, 'the compared pressure');
   await expectPixels('#sweep-plot', '#e67e22', 50, 'the compared sweep curve');
@@ -513,7 +543,7 @@ test('a second job is drawn over the first: pressure and gap, and the sweep curv
   assert.ok(!offered.includes(await row.getAttribute('data-job-id')) && offered.includes(''), `${offered}`);
   await page.locator('#compare-job').selectOption('');
   await page.waitForFunction(() => document.querySelector('#pressure-plot')?.dataset.comparePoints === '0');
-  assert.equal(await pressure.getAttribute('data-series'), 'pressure|gap');
+  assert.equal(await pressure.getAttribute('data-series'), 'pressure|gap|Hertz pressure (plane strain)');
 });
 
 test("a job's case reopens in the editor exactly as it was submitted", async () => {

@@ -18,7 +18,7 @@ export function contactCsv(contact) {
 /** One row per sweep point, in the order solved. */
 export function sweepCsv(sweep) {
   const rows = (sweep?.points ?? []).map((p) => [
-    p.value, p.force?.[0], p.force?.[1], p.peak_pressure, p.contact_length, p.converged ? 1 : 0, p.stop_reason, p.iterations,
+    p.value, p.force?.[0], p.force?.[1], p.peak_pressure, p.contact_width, p.contact_length, p.converged ? 1 : 0, p.stop_reason, p.iterations,
   ]);
-  return csv([sweep?.pointer ?? 'value', 'force_x', 'force_y', 'peak_pressure', 'contact_length', 'converged', 'stop_reason', 'iterations'], rows);
+  return csv([sweep?.pointer ?? 'value', 'force_x', 'force_y', 'peak_pressure', 'contact_width', 'contact_length', 'converged', 'stop_reason', 'iterations'], rows);
 }

@@ -43,43 +43,29 @@ export function hertzPressure(x, { a, p0 }) {
   return r > 0 ? p0 * Math.sqrt(r) : 0;
 }
 
-/**
- * The parts of a case that hertzForCase reads, rebuilt from a result (which carries the
- * material, the builtin mesh and the obstacle type of each contact group), for jobs this
- * browser did not submit. Null when the result lacks them.
- */
-export function caseFromResult(result) {
-  if (!result?.material || !result?.mesh?.builtin || !result?.contact?.obstacles) return null;
-  const boundary = {};
-  for (const [group, type] of Object.entries(result.contact.obstacles))
-    boundary[group] = { type: 'contact', obstacle: { type } };
-  return {
-    name: result.name,
-    mesh: { builtin: { name: result.mesh.builtin, ...(result.mesh.params ?? {}) } },
-    material: result.material,
-    boundary,
-  };
+/** Lamé parameters {mu, lambda} from a result's material echo ({mu, lambda: number | "inf"}). */
+function resultLame(material) {
+  const mu = material?.mu;
+  const lambda = material?.lambda === 'inf' ? Infinity : material?.lambda;
+  return typeof mu === 'number' && mu > 0 && (lambda === Infinity || (typeof lambda === 'number' && lambda >= 0))
+    ? { mu, lambda }
+    : null;
 }
 
 /**
- * The Hertz comparison for a case and its result, or null when it does not apply: the case
- * name contains "hertz", the mesh is the builtin "hertz" half disk (radius R, default 1) and a
- * contact boundary has a plane obstacle. F = |force_y| of the result.
+ * The Hertz comparison for a result, or null when it does not apply. Offered by geometry, not
+ * by name: the contact boundary is one circular arc (`contact.shape.type` "arc", radius R) and
+ * every contact group has a plane obstacle with one normal ν (`contact.plane_normal`); the load
+ * is the normal force F = |F·ν| of the result.
  */
-export function hertzForCase(caseJson, result) {
-  if (!caseJson || !result?.contact) return null;
-  const name = String(caseJson.name ?? result.name ?? '');
-  if (!name.toLowerCase().includes('hertz')) return null;
-  const builtin = caseJson.mesh?.builtin;
-  const builtinName = typeof builtin === 'string' ? builtin : builtin?.name;
-  if (builtinName !== 'hertz') return null;
-  const R = typeof builtin === 'object' && typeof builtin.radius === 'number' ? builtin.radius : 1;
-  const planeContact = Object.values(caseJson.boundary ?? {}).some(
-    (bc) => bc?.type === 'contact' && bc?.obstacle?.type === 'plane',
-  );
-  if (!planeContact) return null;
-  const lame = lameParameters(caseJson.material);
-  const F = Math.abs(result.contact.force?.[1] ?? NaN);
+export function hertzForResult(result) {
+  const contact = result?.contact;
+  const shape = contact?.shape;
+  const normal = contact?.plane_normal;
+  if (shape?.type !== 'arc' || !Array.isArray(normal) || !Array.isArray(contact.force)) return null;
+  const R = shape.radius;
+  const lame = resultLame(result.material);
+  const F = Math.abs(contact.force[0] * normal[0] + contact.force[1] * normal[1]);
   if (!lame || !(F > 0) || !(R > 0)) return null;
   return { F, R, ...hertzContact(F, R, lame) };
 }

@@ -6,16 +6,14 @@ import * as api from './api.js';
 import { adaptiveRows, renderStepTable } from './adaptive_steps.js';
 import { contactCsv, sweepCsv } from './csv_export.js';
 import { fmt, seconds } from './format.js';
-import { MESH_FIELDS, UNITS } from './mesh_fields.js';
+import { MESH_FIELDS, UNITS, resultUnits } from './mesh_fields.js';
 import { autoMagnification, colourGradientCss, colourScale } from './mesh_view.js';
 import { valueRange } from './mesh_drawing.js';
 
 const $ = (id) => document.getElementById(id);
 
-function contactWidth(contact) {
-  const xs = (contact?.x ?? []).filter((_, i) => contact.active?.[i]);
-  return xs.length ? Math.max(...xs) - Math.min(...xs) : 0;
-}
+/** " mm" after a number when the case declared its units, else "". */
+const unitSuffix = (units, id) => (units.declared ? ` ${units[id]}` : '');
 
 function addNumber(dl, term, value, title) {
   const dt = document.createElement('dt');
@@ -33,25 +31,35 @@ export function renderSummary(job, view) {
   const r = view.result;
   const contact = r.contact ?? { x: [], s: [], pressure: [], active: [], force: [0, 0] };
   const summary = $('job-summary');
-  summary.className = r.converged ? 'ok' : 'error';
-  summary.textContent = r.converged
-    ? `Converged in ${r.iterations} iterations (${r.method ?? 'solver'}).`
-    : `Did not converge: ${(r.message ?? `stopped after ${r.iterations} iterations`).replace(/\.$/, '')}.`;
+  const review = r.converged && r.review_required;
+  summary.className = review ? 'review' : r.converged ? 'ok' : 'error';
+  summary.textContent = review
+    ? `Converged in ${r.iterations} iterations, but the answer needs review: see the warnings below.`
+    : r.converged
+      ? `Converged in ${r.iterations} iterations (${r.method ?? 'solver'}).`
+      : `Did not converge: ${(r.message ?? `stopped after ${r.iterations} iterations`).replace(/\.$/, '')}.`;
 
+  const units = resultUnits(r);
   const dl = $('key-numbers');
   dl.innerHTML = '';
   const force = contact.force ?? [NaN, NaN];
-  addNumber(dl, 'Contact force (Fx, Fy)', `${fmt(force[0])}, ${fmt(force[1])}`, 'per unit thickness');
+  addNumber(dl, 'Contact force (Fx, Fy)', `${fmt(force[0])}, ${fmt(force[1])}${unitSuffix(units, 'F')}`,
+    units.declared ? `per ${units.L} of thickness (plane strain)` : 'per unit thickness (plane strain; the case declares no units)');
   const hasContact = (contact.x?.length ?? 0) > 0;
-  const width = contactWidth(contact);
+  // The one definition of the contact width: contact.zone.width of the result (docs/result-format.md).
+  const zone = contact.zone ?? {};
+  const width = zone.width ?? NaN;
+  const widthText = `${fmt(width)}${unitSuffix(units, 'L')}`;
   addNumber(
     dl,
     'Contact width',
-    !hasContact ? '— (no contact boundary)' : view.hertz ? `${fmt(width)} (Hertz 2a = ${fmt(2 * view.hertz.a)})` : fmt(width),
-    'x extent of the midpoints of the active contact edges',
+    !hasContact ? '— (no contact boundary)' : view.hertz ? `${widthText} (Hertz 2a = ${fmt(2 * view.hertz.a)})` : widthText,
+    'contact.zone.width: the zone\'s length along the boundary, each front where the pressure reaches zero' +
+      (zone.end_edge_length ? ` (edges of ${fmt(zone.end_edge_length, 3)} at the zone\'s ends; the loaded edges span ${fmt(zone.length)})` : ''),
   );
-  const pmax = hasContact ? Math.max(...contact.pressure) : NaN;
-  addNumber(dl, 'Peak pressure', view.hertz ? `${fmt(pmax)} (Hertz p0 = ${fmt(view.hertz.p0)})` : fmt(pmax));
+  const pmax = hasContact ? zone.peak_pressure ?? Math.max(...contact.pressure) : NaN;
+  const pmaxText = `${fmt(pmax)}${unitSuffix(units, 'S')}`;
+  addNumber(dl, 'Peak pressure', view.hertz ? `${pmaxText} (Hertz p0 = ${fmt(view.hertz.p0)})` : pmaxText);
   addNumber(dl, 'Iterations', `${r.iterations}${r.converged ? '' : ' (not converged)'}`);
   addNumber(dl, 'Final KKT residual', fmt(r.final_kkt_residual, 3));
   addNumber(dl, 'Levels', String(r.levels));
@@ -67,9 +75,18 @@ export function renderSummary(job, view) {
 
   const warnings = $('job-warnings');
   warnings.innerHTML = '';
-  for (const w of r.warnings ?? []) {
+  // warning_details carries each warning's code and whether it questions the answer.
+  const details = r.warning_details ?? (r.warnings ?? []).map((message) => ({ message }));
+  for (const w of details) {
     const li = document.createElement('li');
-    li.textContent = w;
+    if (w.code) li.dataset.code = w.code;
+    if (w.review) {
+      li.className = 'review';
+      const strong = document.createElement('strong');
+      strong.textContent = 'Check this answer: ';
+      li.append(strong);
+    }
+    li.append(w.message);
     warnings.append(li);
   }
 
@@ -110,7 +127,7 @@ export function drawCharts(view, plots) {
     pressureBox.dataset.points = '0';
     note.textContent = '';
   } else {
-    view.charts.push(plots.boundaryPlot(pressureBox, contact, { hertz: view.hertz, abscissa, compare }));
+    view.charts.push(plots.boundaryPlot(pressureBox, contact, { hertz: view.hertz, abscissa, compare, units: resultUnits(view.result) }));
     note.textContent = view.hertz
       ? `Dashed red: plane-strain Hertz pressure for F = |Fy| = ${fmt(view.hertz.F)}, ` +
         `R = ${fmt(view.hertz.R)}, E* = ${fmt(view.hertz.Estar)}: a = ${fmt(view.hertz.a)}, p0 = ${fmt(view.hertz.p0)}` +
@@ -160,10 +177,12 @@ function drawAdaptivity(view, plots) {
     ' The mesh below is the last step\'s (colour by refinement generation or the error indicator).';
 }
 
-/** The colour bar's words for a unit id, with the case's μ when the unit is a stress. */
+/** The colour bar's words for a unit id (the declared unit when the case has one), with the case's μ when the unit is a stress. */
 function unitText(unit, result) {
+  const units = resultUnits(result);
+  const name = unit in units ? units[unit] : UNITS[unit];
   const mu = result.material?.mu;
-  return unit === 'S' && typeof mu === 'number' ? `${UNITS.S}; here μ = ${fmt(mu)}` : UNITS[unit];
+  return unit === 'S' && typeof mu === 'number' ? `${name}; here μ = ${fmt(mu)}` : name;
 }
 
 /** Colours the mesh viewer by the chosen field and writes the colour bar and caption. */

@@ -1,7 +1,7 @@
 // The page: wires the case editor, the job list and the job view to the service's API.
 import * as api from './api.js';
 import { CaseEditor } from './case_editor.js';
-import { caseFromResult, hertzForCase } from './hertz.js';
+import { hertzForResult } from './hertz.js';
 import { parseVtu } from './vtu.js';
 import { fmt, setStatus } from './format.js';
 import { MESH_FIELDS } from './mesh_fields.js';
@@ -298,8 +298,8 @@ function showJob(job) {
 async function loadResult(job) {
   const view = state.view;
   try {
-    const [resultResponse, vtuResponse, caseResponse] =
-      await Promise.all([api.getResult(job.id), api.getSolution(job.id), api.getCase(job.id), plotsReady]);
+    const [resultResponse, vtuResponse] =
+      await Promise.all([api.getResult(job.id), api.getSolution(job.id), plotsReady]);
     if (state.view !== view) return;  // another job was chosen meanwhile
     if (!resultResponse.ok) {
       $('job-summary').textContent = `The result cannot be loaded: ${api.problemMessage(resultResponse)}`;
@@ -307,8 +307,8 @@ async function loadResult(job) {
       return;
     }
     view.result = resultResponse.body;
-    // The case gives the Hertz comparison its radius and material; the result echoes them too.
-    view.hertz = hertzForCase(caseResponse.ok ? caseResponse.body : caseFromResult(view.result), view.result);
+    // Offered by the contact boundary's shape: an arc against a plane (docs/web.md).
+    view.hertz = hertzForResult(view.result);
     view.mesh = null;
     view.meshError = null;
     if (vtuResponse.ok) {

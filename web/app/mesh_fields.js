@@ -11,6 +11,16 @@ export const UNITS = {
   bisections: 'bisections from the coarse-mesh triangle (a uniform refinement counts as two)',
 };
 
+/**
+ * The unit names of a result: those the case declared (`result.units`: "mm", "MPa", "N/mm"),
+ * or the words of UNITS when it declared none.
+ */
+export function resultUnits(result) {
+  const u = result?.units;
+  if (u?.declared) return { declared: true, L: u.length, S: u.stress, F: u.force_per_thickness };
+  return { declared: false, L: UNITS.L, S: UNITS.S, F: 'per unit thickness' };
+}
+
 const cellArray = (name) => (mesh) => mesh.cellData[name]?.values ?? null;
 
 /** Component k of a cell array with several components (σ is stored row by row). */

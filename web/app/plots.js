@@ -70,7 +70,9 @@ function sortedAlong(contact, abscissa, field) {
  * [−1.2a, 1.2a] clipped to the data range; with `compare` ({label, contact}) a second job's
  * pressure and gap are drawn dashed over the first.
  */
-export function boundaryPlot(container, contact, { hertz = null, abscissa = 'x', compare = null } = {}) {
+export function boundaryPlot(container, contact, { hertz = null, abscissa = 'x', compare = null, units = null } = {}) {
+  // The case's declared units in the axis labels (" (mm)"), nothing when it declared none.
+  const inUnit = (id) => (units?.declared ? ` (${units[id]})` : '');
   const [x, p] = sortedAlong(contact, abscissa, 'pressure');
   const tables = [[x, p, sortedAlong(contact, abscissa, 'gap')[1]]];
   const value = (u, v) => sci(v);
@@ -106,9 +108,9 @@ export function boundaryPlot(container, contact, { hertz = null, abscissa = 'x',
     scales: { x: { time: false } },
     series: series.map((s, i) => (i === 0 ? s : { ...s, spanGaps: true })),
     axes: [
-      { label: abscissa === 'x' ? 'x (contact edge midpoints)' : 'arc length s', size: 46 },
-      { label: 'contact pressure', size: 64, values: (u, vals) => vals.map(sci) },
-      { label: 'gap', scale: 'gap', side: 1, size: 64, grid: { show: false }, values: (u, vals) => vals.map(sci) },
+      { label: (abscissa === 'x' ? 'x (contact edge midpoints)' : 'arc length s') + inUnit('L'), size: 46 },
+      { label: `contact pressure${inUnit('S')}`, size: 64, values: (u, vals) => vals.map(sci) },
+      { label: `gap${inUnit('L')}`, scale: 'gap', side: 1, size: 64, grid: { show: false }, values: (u, vals) => vals.map(sci) },
     ],
     legend: { live: false },
   };

@@ -1,6 +1,8 @@
-// Reads the ASCII VTK XML UnstructuredGrid that fosls-serve writes (solution.vtu): points,
-// triangles, point data (u) and cell data (sigma, von_mises, functional). Plain string
-// scanning rather than DOMParser, so the same code runs in the browser and under node.
+// Reads the VTK XML UnstructuredGrid that fosls-serve writes (solution.vtu): points,
+// triangles, point data (u, ...) and cell data (sigma, von_mises, functional). Arrays may be
+// ASCII or inline binary (format="binary": base64 of a UInt32 or UInt64 byte count and the
+// little-endian values, as one stream). Plain string scanning rather than DOMParser, so the
+// same code runs in the browser and under node.
 
 const dataArrayPattern = /<DataArray\b([^>]*?)(\/>|>([\s\S]*?)<\/DataArray>)/g;
 const attributePattern = /([A-Za-z_:][\w:.-]*)\s*=\s*"([^"]*)"/g;
@@ -18,16 +20,50 @@ function section(xml, tag) {
   return close < 0 ? '' : xml.slice(open.index + open[0].length, close);
 }
 
-function arrays(xml) {
+const binaryTypes = {
+  Float64: [Float64Array, 8], Float32: [Float32Array, 4], Int32: [Int32Array, 4], UInt32: [Uint32Array, 4],
+  Int64: [BigInt64Array, 8], UInt64: [BigUint64Array, 8], UInt8: [Uint8Array, 1], Int8: [Int8Array, 1],
+};
+
+function base64Bytes(text) {
+  const binary = atob(text.replace(/\s+/g, ''));
+  const bytes = new Uint8Array(binary.length);
+  for (let i = 0; i < binary.length; i++) bytes[i] = binary.charCodeAt(i);
+  return bytes;
+}
+
+/** The values of an inline binary array (little-endian, as fosls-contact writes). */
+function binaryValues(text, type, headerType, name) {
+  const kind = binaryTypes[type];
+  if (!kind) throw new Error(`DataArray "${name}": unsupported binary type ${type}`);
+  const bytes = base64Bytes(text);
+  const headerSize = headerType === 'UInt64' ? 8 : 4;
+  if (bytes.length < headerSize) throw new Error(`DataArray "${name}": binary data without its header`);
+  const view = new DataView(bytes.buffer);
+  const size = headerSize === 8 ? Number(view.getBigUint64(0, true)) : view.getUint32(0, true);
+  if (size > bytes.length - headerSize || size % kind[1] !== 0) {
+    throw new Error(`DataArray "${name}": the header announces ${size} bytes, ${bytes.length - headerSize} follow`);
+  }
+  const values = new kind[0](bytes.buffer.slice(headerSize, headerSize + size));
+  return kind[0] === BigInt64Array || kind[0] === BigUint64Array ? Float64Array.from(values, Number) : Float64Array.from(values);
+}
+
+function arrayList(xml, headerType) {
   const out = [];
   for (const m of xml.matchAll(dataArrayPattern)) {
     const attrs = attributes(m[1]);
-    if ((attrs.format ?? 'ascii') !== 'ascii') {
-      throw new Error(`DataArray "${attrs.Name ?? '?'}" is not ASCII (format="${attrs.format}")`);
-    }
+    const format = attrs.format ?? 'ascii';
+    const name = attrs.Name ?? '';
     const text = (m[3] ?? '').trim();
-    const values = text === '' ? new Float64Array(0) : Float64Array.from(text.split(/\s+/), Number);
-    out.push({ name: attrs.Name ?? '', components: Number(attrs.NumberOfComponents ?? 1), values });
+    let values;
+    if (format === 'binary') {
+      values = binaryValues(text, attrs.type, headerType, name);
+    } else if (format === 'ascii') {
+      values = text === '' ? new Float64Array(0) : Float64Array.from(text.split(/\s+/), Number);
+    } else {
+      throw new Error(`DataArray "${name || '?'}" is neither ASCII nor inline binary (format="${format}")`);
+    }
+    out.push({ name, components: Number(attrs.NumberOfComponents ?? 1), values });
   }
   return out;
 }
@@ -38,6 +74,10 @@ function arrays(xml) {
  * saying what is missing or inconsistent.
  */
 export function parseVtu(xml) {
+  const file = /<VTKFile\b([^>]*)>/.exec(xml);
+  if (file && / compressor=/.test(file[1])) throw new Error('compressed VTU data are not supported');
+  const headerType = attributes(file?.[1] ?? '').header_type ?? 'UInt32';
+  const arrays = (part) => arrayList(part, headerType);
   const piece = /<Piece\b([^>]*)>/.exec(xml);
   if (!piece) throw new Error('not a VTK UnstructuredGrid file (no <Piece>)');
   const pieceAttrs = attributes(piece[1]);

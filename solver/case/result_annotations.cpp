@@ -1,0 +1,71 @@
+#include "case/result_annotations.hpp"
+
+#include "case/result_warnings.hpp"
+#include "case/units.hpp"
+#include "post/contact_shape.hpp"
+#include "post/contact_width.hpp"
+
+namespace fosls {
+
+namespace {
+
+using nlohmann::json;
+
+json shape_json(const ContactShape& shape) {
+  switch (shape.kind) {
+    case ContactShape::Kind::kNone:
+      return {{"type", "none"}};
+    case ContactShape::Kind::kLine:
+      return {{"type", "line"}};
+    case ContactShape::Kind::kArc:
+      return {{"type", "arc"},
+              {"center", {shape.center.x(), shape.center.y()}},
+              {"radius", shape.radius}};
+    case ContactShape::Kind::kOther:
+      break;
+  }
+  return {{"type", "other"}};
+}
+
+/// The unit normal of the plane obstacle when every contact group has a plane with the same
+/// normal (what Hertz against a rigid plane needs), else null.
+json plane_normal(const CaseSpec& spec) {
+  std::optional<Point> normal;
+  for (const auto& [name, bc] : spec.boundary) {
+    if (bc.type != BoundaryCondition::Type::kContact) continue;
+    if (bc.obstacle.kind != Obstacle::Kind::kPlane) return nullptr;
+    if (normal && (*normal - bc.obstacle.normal).norm() > 1e-12) return nullptr;
+    normal = bc.obstacle.normal;
+  }
+  return normal ? json({normal->x(), normal->y()}) : json(nullptr);
+}
+
+double extent(const Mesh& mesh) {
+  Point lo = mesh.vertex(0), hi = mesh.vertex(0);
+  for (const Point& p : mesh.vertices()) lo = lo.cwiseMin(p), hi = hi.cwiseMax(p);
+  return (hi - lo).norm();
+}
+
+}  // namespace
+
+void annotate_result(json& result, const CaseSpec& spec, const Mesh& finest,
+                     const ContactResult& contact, const StrainPeak& strain) {
+  result["units"] = units_json(spec.units);
+  json& c = result["contact"];
+  c["shape"] = shape_json(contact_shape(finest, contact));
+  c["plane_normal"] = plane_normal(spec);
+  c["zone"]["width"] = contact_width(finest, contact);
+  c["zone"]["end_edge_length"] = zone_end_edge_length(contact);
+
+  std::vector<ResultWarning> warnings;
+  const std::string units = implausible_units(
+      spec.units, youngs_modulus(spec.material.mu, spec.material.lambda), extent(finest));
+  if (!units.empty()) warnings.push_back({"units_implausible", units, true});
+  if (auto w = tangential_load_warning(spec)) warnings.push_back(std::move(*w));
+  for (auto& w : contact_warnings(spec, finest, contact)) warnings.push_back(std::move(w));
+  if (auto w = large_strain_warning(strain.strain, strain.largest, strain.where))
+    warnings.push_back(std::move(*w));
+  add_warnings(result, warnings);
+}
+
+}  // namespace fosls

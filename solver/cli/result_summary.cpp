@@ -1,0 +1,122 @@
+#include "cli/result_summary.hpp"
+
+#include <cstdio>
+#include <string>
+
+#include "cli/exit_codes.hpp"
+
+namespace fosls {
+
+namespace {
+
+using nlohmann::json;
+
+std::string g(const json& v, int digits = 4) {
+  if (!v.is_number()) return "-";
+  char text[32];
+  std::snprintf(text, sizeof text, "%.*g", digits, v.get<double>());
+  return text;
+}
+
+/// " mm" after a length when the case declared units, else "".
+std::string unit(const json& r, const char* which) {
+  const json& u = r.value("units", json::object());
+  const json& name = u.value(which, json());
+  return name.is_string() ? " " + name.get<std::string>() : "";
+}
+
+std::string thickness(const json& r) {
+  const std::string force = unit(r, "force_per_thickness");
+  if (force.empty())
+    return "per unit thickness (stress unit x length unit of the case; no units declared)";
+  return force.substr(1) + " (per" + unit(r, "length") + " of thickness)";
+}
+
+void print_contact(std::ostream& out, const json& r) {
+  const auto& c = r["contact"];
+  const auto& z = c["zone"];
+  const std::string L = unit(r, "length"), S = unit(r, "stress");
+  out << "  force on the body   F = (" << g(c["force"][0]) << ", " << g(c["force"][1]) << ") "
+      << thickness(r) << ", the obstacle's force on the body\n";
+  if (c["x"].empty()) {
+    out << "  contact             none: the case has no contact group\n";
+  } else if (z["edges"] == 0) {
+    out << "  contact zone        NO edge in contact (" << c["x"].size()
+        << " contact edges): see the warning\n";
+  } else {
+    out << "  peak pressure       p_max = " << g(z["peak_pressure"]) << S << " at ("
+        << g(z["peak_location"][0]) << ", " << g(z["peak_location"][1]) << ")" << L << "\n"
+        << "  contact zone        " << z["edges"].get<int>() << " of " << c["x"].size()
+        << " contact edges, width " << g(z["width"]) << L
+        << " (loaded edges from s = " << g(z["s_start"]) << " to " << g(z["s_end"]) << ", edges of "
+        << g(z["end_edge_length"], 3) << L << " at its ends)\n";
+  }
+}
+
+/// Why an adaptive run stopped, and what its target means.
+void print_adaptivity(std::ostream& out, const json& a) {
+  const auto& steps = a["steps"];
+  if (steps.empty()) return;
+  out << "  adaptive run        " << steps.size() << " solves, " << steps.front()["dofs"] << " to "
+      << steps.back()["dofs"] << " unknowns; "
+      << a.value("stop_message", "stopped: " + a["stop_reason"].get<std::string>()) << '\n';
+}
+
+void print_sweep(std::ostream& out, const json& sweep) {
+  out << "  sweep of " << sweep["pointer"].get<std::string>() << ":\n"
+      << "    value          F_x            F_y            p_max          width          "
+         "iterations\n";
+  for (const auto& p : sweep["points"]) {
+    out << "    ";
+    for (const json& v :
+         {p["value"], p["force"][0], p["force"][1], p["peak_pressure"], p["contact_width"]}) {
+      const std::string text = g(v);
+      out << text << std::string(text.size() < 15 ? 15 - text.size() : 1, ' ');
+    }
+    out << p["iterations"].get<int>()
+        << (p["converged"].get<bool>()
+                ? ""
+                : "  NOT converged (" + p["stop_reason"].get<std::string>() + ")");
+    for (const auto& code : p.value("warning_codes", json::array()))
+      out << "  [" << code.get<std::string>() << "]";
+    out << '\n';
+  }
+}
+
+/// What the outcome line adds when the discretisation rule or the rounding level stopped the
+/// solve.
+std::string stopped_by(const json& r) {
+  if (!r.contains("stopping")) return "";
+  if (r["stopping"]["converged_by"] == "rounding_level")
+    return "; stopped where the residual stalled at its rounding level (see the warning)";
+  if (r["stopping"]["converged_by"] != "algebraic_error") return "";
+  return "; stopped at the discretisation error: algebraic error " +
+         g(r["stopping"]["algebraic_error"], 2) + " <= " + g(r["stopping"]["fraction"], 2) +
+         " x J^1/2, J^1/2 = " + g(r["stopping"]["estimator"], 2);
+}
+
+}  // namespace
+
+void print_result_summary(std::ostream& out, const json& r) {
+  const bool converged = r.value("converged", false);
+  const std::string what = converged ? "converged in " : "NOT converged: stopped after ";
+  out << what << r["iterations"].get<int>() << " iterations (" << r["levels"].get<int>()
+      << " levels, " << r["dofs"].get<long long>() << " unknowns, " << g(r["timing"]["total_s"], 3)
+      << " s; relative KKT residual " << g(r["relative_kkt_residual"], 2) << ", tolerance "
+      << g(r["tolerance"], 2) << stopped_by(r) << ")\n";
+  print_contact(out, r);
+  out << "  error estimator     J^1/2 = " << g(r["functional"]["estimator"], 3)
+      << " (scaled units)\n";
+  if (r.contains("adaptivity")) print_adaptivity(out, r["adaptivity"]);
+  if (r.contains("sweep")) print_sweep(out, r["sweep"]);
+  if (converged && r.value("review_required", false))
+    out << "REVIEW: converged, but the warnings above say the answer may be physically empty or "
+           "wrong (exit code 4)\n";
+}
+
+int result_exit_code(const json& r) {
+  if (!r.value("converged", false)) return kExitNotConverged;
+  return r.value("review_required", false) ? kExitReviewRequired : kExitOk;
+}
+
+}  // namespace fosls
