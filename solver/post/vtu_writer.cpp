@@ -17,7 +17,12 @@ namespace {
 const std::vector<VtuArray>& array_table() {
   static const std::vector<VtuArray> table = {
       {"u", true, {"x", "y", "z"}, "L", "displacement (z = 0: plane strain)"},
-      {"contact_boundary", true, {}, "1", "1 at the vertices of contact edges, 0 elsewhere"},
+      {"contact_boundary",
+       true,
+       {},
+       "1",
+       "1 at the vertices of contact edges, 0 elsewhere",
+       "UInt8"},
       {"contact_pressure",
        true,
        {},
@@ -36,33 +41,43 @@ const std::vector<VtuArray>& array_table() {
        "S",
        "stress tensor at the vertex, row by row: the mean over the vertex's triangles of each "
        "triangle's (linear) RT0 stress evaluated at the vertex, weighted by the triangles' "
-       "areas (nodal averaging, for smooth plots; the cell array sigma is the discrete field)"},
+       "areas (nodal averaging, for smooth plots; the cell array sigma is the discrete field)",
+       "Float32"},
       {"von_mises_nodal",
        true,
        {},
        "S",
        "von Mises stress at the vertex: the area-weighted mean of each adjacent triangle's von "
        "Mises stress at the vertex (computed before averaging, so it is not lowered where the "
-       "triangles' stresses differ)"},
+       "triangles' stresses differ)",
+       "Float32"},
       {"sigma",
        false,
        {"xx", "xy", "yx", "yy"},
        "S",
        "stress tensor at the centroid, row by row (each row is an RT0 field, so σ_xy and σ_yx "
-       "differ by the discretisation error)"},
-      {"von_mises", false, {}, "S", "von Mises stress at the centroid (plane strain: σ_zz from λ)"},
+       "differ by the discretisation error)",
+       "Float32"},
+      {"von_mises",
+       false,
+       {},
+       "S",
+       "von Mises stress at the centroid (plane strain: σ_zz from λ)",
+       "Float32"},
       {"functional",
        false,
        {},
        "scaled",
        "the triangle's share of the FOSLS functional J (its error indicator η_T², which "
-       "drives adaptive refinement), in the scaled units of the result's functional"},
+       "drives adaptive refinement), in the scaled units of the result's functional",
+       "Float32"},
       {"generation",
        false,
        {},
        "1",
        "refinement level of the triangle: bisections from its coarse-mesh ancestor (a uniform "
-       "refinement counts as two)"},
+       "refinement counts as two)",
+       "Int32"},
   };
   return table;
 }
@@ -110,8 +125,19 @@ void write_array(std::ostream& o, const std::string& name, const std::vector<dou
                  VtuEncoding encoding) {
   const VtuArray& a = info(name);
   const std::size_t n = a.components.empty() ? 1 : a.components.size();
-  write_data_array(o, "Float64", " Name=\"" + std::string(a.name) + "\"" + component_attributes(a),
-                   values, n, encoding);
+  const std::string attributes = " Name=\"" + std::string(a.name) + "\"" + component_attributes(a);
+  const std::string type = encoding == VtuEncoding::kAscii ? "Float64" : a.binary_type;
+  auto as = [&values](auto zero) {
+    return std::vector<decltype(zero)>(values.begin(), values.end());
+  };
+  if (type == "Float32")
+    write_data_array(o, "Float32", attributes, as(0.0f), n, encoding);
+  else if (type == "UInt8")
+    write_data_array(o, "UInt8", attributes, as(std::uint8_t{0}), n, encoding);
+  else if (type == "Int32")
+    write_data_array(o, "Int32", attributes, as(std::int32_t{0}), n, encoding);
+  else
+    write_data_array(o, "Float64", attributes, values, n, encoding);
 }
 
 /// Plane strain: σ_zz = κ tr σ with κ = λ/(2(λ+μ)), which is ½ for λ = ∞.
@@ -204,14 +230,15 @@ std::string write_vtu(const FoslsAssembler& assembler, const AssembledProblem& p
   write_data_array(o, "Int32", " Name=\"connectivity\"", connectivity, 3, encoding);
   write_data_array(o, "Int32", " Name=\"offsets\"", offsets, 1, encoding);
   write_data_array(o, "UInt8", " Name=\"types\"", types, 1, encoding);
-  o << "</Cells>\n<PointData Vectors=\"u\" Scalars=\"contact_pressure\" Tensors=\"sigma_nodal\">\n";
+  // No Tensors attribute: VTK's takes 9 (or 6) components, σ has 4 (it warned on every read).
+  o << "</Cells>\n<PointData Vectors=\"u\" Scalars=\"contact_pressure\">\n";
   write_array(o, "u", u, encoding);
   write_array(o, "contact_boundary", on_contact, encoding);
   write_array(o, "contact_pressure", pressure, encoding);
   write_array(o, "gap", gap, encoding);
   write_array(o, "sigma_nodal", stress.sigma_nodal, encoding);
   write_array(o, "von_mises_nodal", stress.von_mises_nodal, encoding);
-  o << "</PointData>\n<CellData Tensors=\"sigma\" Scalars=\"von_mises\">\n";
+  o << "</PointData>\n<CellData Scalars=\"von_mises\">\n";
   write_array(o, "sigma", stress.sigma, encoding);
   write_array(o, "von_mises", stress.von_mises, encoding);
   write_array(o, "functional", functional.element, encoding);

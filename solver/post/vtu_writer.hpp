@@ -19,6 +19,9 @@ struct VtuArray {
   std::vector<const char*> components;  ///< component names; empty for a scalar
   const char* unit;                     ///< "L" (length), "S" (stress), "1", ...
   const char* meaning;
+  /// The VTK type of the binary form: Float32 for the stresses and the functional (7 digits
+  /// are all a plot shows), UInt8 and Int32 for flags and counts; the ASCII form is Float64.
+  const char* binary_type = "Float64";
 };
 
 /// Every array write_vtu writes, in the order of the file.
