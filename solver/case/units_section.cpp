@@ -62,10 +62,6 @@ ObjectRulePtr units_rule() {
                      "the unit of every stress of the case: mu, lambda, E, tractions, pressures "
                      "(body forces are then in stress per length)"),
   };
-  r->notes =
-      "changes no number: fosls-contact computes in the units the numbers are in, and the "
-      "declaration names them in the outputs (forces per unit thickness in stress × length, "
-      "e.g. N/mm for MPa and mm) and lets the plausibility check of the modulus use them";
   return r;
 }
 

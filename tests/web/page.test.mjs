@@ -479,6 +479,10 @@ test('a converged answer without contact is flagged for review, with its warning
   await warning.waitFor();
   assert.match(await warning.innerText(), /^Check this answer: no contact/);
   assert.equal(await page.locator('#hertz-note').innerText(), '', 'no Hertz curve without a force');
+  const top = await page.locator('#job-summary').boundingBox();
+  const list = await page.locator('#job-warnings').boundingBox();
+  await page.screenshot({ path: join(screenshots, 'review.png'), fullPage: true,
+    clip: { x: list.x - 12, y: top.y - 48, width: list.width + 24, height: list.y + list.height - top.y + 60 } });
 });
 
 test('declared units label the numbers and Hertz is offered by geometry, not by name', async () => {
