@@ -6,6 +6,7 @@
 
 #include <gtest/gtest.h>
 
+#include <fstream>
 #include <string>
 #include <vector>
 
@@ -188,6 +189,18 @@ TEST(ResultWarnings, TheShippedExamplesNeedNoReview) {
     for (const char* code :
          {"no_contact", "initial_penetration", "units_implausible", "tangential_load_frictionless"})
       EXPECT_FALSE(has(r, code)) << name << ": " << r["warnings"];
+  }
+}
+
+TEST(ResultWarnings, TheWalkthroughsCasesAreValidAndNeedNoReview) {
+  for (const char* name : {"steel_roller", "rubber_seal"}) {
+    std::ifstream in(std::string(FOSLS_SOURCE_DIR) + "/docs/walkthrough/" + name + ".json");
+    json j = json::parse(in);
+    j["mesh"]["refinements"] = 1;
+    const json r = solve(j);
+    EXPECT_TRUE(r["converged"].get<bool>()) << name;
+    EXPECT_FALSE(r["review_required"].get<bool>()) << name << ": " << r["warnings"];
+    EXPECT_EQ(r["units"]["force_per_thickness"], "N/mm") << name;
   }
 }
 
