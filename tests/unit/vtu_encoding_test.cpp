@@ -13,6 +13,7 @@
 #include <string>
 #include <vector>
 
+#include "../uniaxial_case.hpp"
 #include "case/case_reader.hpp"
 #include "case/case_runner.hpp"
 
@@ -83,21 +84,6 @@ std::map<std::string, Array> arrays(const std::string& vtu) {
   return out;
 }
 
-/// A block pressed onto a plane, held by rollers: a uniform uniaxial stress.
-json uniaxial_case() {
-  return {{"name", "uniaxial"},
-          {"mesh", {{"builtin", "square"}, {"size", 0.25}, {"refinements", 2}}},
-          {"material", {{"mu", 1}, {"lambda", 1}}},
-          {"boundary",
-           {{"top", {{"type", "dirichlet"}, {"displacement", {nullptr, -0.01}}}},
-            {"left", {{"type", "dirichlet"}, {"displacement", {0, nullptr}}}},
-            {"right", {{"type", "neumann"}, {"traction", {0, 0}}}},
-            {"bottom",
-             {{"type", "contact"},
-              {"obstacle", {{"type", "plane"}, {"point", {0, 0}}, {"normal", {0, 1}}}}}}}},
-          {"solver", {{"method", "pdas"}, {"tolerance", 1e-12}}}};
-}
-
 std::string vtu(const json& j, bool ascii) {
   RunControl control;
   control.vtu_ascii = ascii;
@@ -105,7 +91,7 @@ std::string vtu(const json& j, bool ascii) {
 }
 
 TEST(VtuEncoding, BinaryHoldsTheAsciiValuesInTheDocumentedTypes) {
-  json j = uniaxial_case();
+  json j = testing::uniaxial_case();
   j["mesh"] = {{"builtin", "hertz"}, {"size", 0.2}, {"refinements", 1}};
   j["boundary"] = {{"top", {{"type", "dirichlet"}, {"displacement", {0, -0.01}}}},
                    {"contact",
@@ -146,7 +132,7 @@ TEST(VtuEncoding, BinaryHoldsTheAsciiValuesInTheDocumentedTypes) {
 }
 
 TEST(VtuEncoding, NodalStressesOfAUniformStressAreThatStress) {
-  const auto a = arrays(vtu(uniaxial_case(), false));
+  const auto a = arrays(vtu(testing::uniaxial_case(), false));
   const auto& nodal = a.at("sigma_nodal").values;
   const auto& cells = a.at("sigma").values;
   ASSERT_EQ(nodal.size() % 4, 0u);
