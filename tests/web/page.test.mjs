@@ -445,6 +445,8 @@ test('an adaptive run shows its steps: the log–log plot, the table and the ada
   assert.equal(Number(await canvas.getAttribute('data-max')), Math.max(...generation));
   assert.ok(Math.max(...generation) > Math.min(...generation), 'graded: the generations differ');
   assert.match(await page.locator('#legend-label').innerText(), /^refinement generation, in bisections from the coarse-mesh triangle/);
+  // Why the loop stopped, and that the target is a reduction of J^½, not an accuracy.
+  assert.match(await page.locator('#adaptivity-note').innerText(), /It stopped: the \d+ refinement steps were made .*not the relative accuracy of the force/);
   // The adaptive section and the mesh under it, in page coordinates.
   const shot = await page.evaluate(() => {
     const top = document.querySelector('#adaptivity-section').getBoundingClientRect();

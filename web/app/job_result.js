@@ -67,7 +67,7 @@ export function renderSummary(job, view) {
   const adaptivity = r.adaptivity;
   if (adaptivity) {
     addNumber(dl, 'Adaptive steps', `${adaptivity.steps?.length ?? 0} (stopped: ${adaptivity.stop_reason ?? '—'})`,
-      `Dörfler marking θ = ${adaptivity.theta}; the numbers here are the last step's`);
+      `Dörfler marking θ = ${adaptivity.theta}; the numbers here are the last step's. ${adaptivity.stop_message ?? ''}`);
   }
   addNumber(dl, 'Active contact edges', `${contact.active?.filter(Boolean).length ?? 0} of ${contact.active?.length ?? 0}`);
   addNumber(dl, 'Time', `${seconds(r.timing?.total_s)} (solve ${seconds(r.timing?.solve_s)})`,
@@ -174,7 +174,9 @@ function drawAdaptivity(view, plots) {
   $('adaptivity-note').textContent =
     `${rows.length} solves from ${first.dofs} to ${last.dofs} unknowns; J^½ fell from ${fmt(first.estimator)} to ${fmt(last.estimator)}` +
     (rows.length > 1 ? ` and the force changed by ${fmt(100 * last.forceChange, 2)} % in the last step.` : '.') +
-    ' The mesh below is the last step\'s (colour by refinement generation or the error indicator).';
+    ' The mesh below is the last step\'s (colour by refinement generation or the error indicator).' +
+    // Why the loop stopped and what adaptivity.target means (a reduction of J^½, not an accuracy).
+    (view.result.adaptivity.stop_message ? ` ${view.result.adaptivity.stop_message.replace(/^stopped/, 'It stopped')}.` : '');
 }
 
 /** The colour bar's words for a unit id (the declared unit when the case has one), with the case's μ when the unit is a stress. */
