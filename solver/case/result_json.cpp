@@ -4,6 +4,7 @@
 #include <sstream>
 
 #include "case/solver_methods.hpp"
+#include "solvers/rounding_level_stop.hpp"
 
 namespace fosls {
 

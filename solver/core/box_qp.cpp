@@ -76,4 +76,10 @@ bool BoxQp::feasible(const Vector& x) const {
   return true;
 }
 
+std::vector<char> BoxQp::active_set(const Vector& x) const {
+  std::vector<char> a(x.size(), 0);
+  for (int i = 0; i < x.size(); ++i) a[i] = is_at_bound(x[i], lower[i], upper[i]);
+  return a;
+}
+
 }  // namespace fosls

@@ -6,6 +6,7 @@
 #include <Eigen/Sparse>
 #include <limits>
 #include <utility>
+#include <vector>
 
 namespace fosls {
 
@@ -44,6 +45,8 @@ struct BoxQp {
   double rounding_level(const Vector& x) const;
   /// Whether lower ≤ x ≤ upper holds exactly.
   bool feasible(const Vector& x) const;
+  /// The active set of x: 1 for the bounded DOFs at their bound (is_at_bound), else 0.
+  std::vector<char> active_set(const Vector& x) const;
 };
 
 /// The columns [begin, end) of share `share` of `shares` when a compressed sparse matrix with

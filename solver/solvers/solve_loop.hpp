@@ -1,7 +1,9 @@
 #pragma once
-// The solve loop shared by every method: it owns the stopping rule (KKT residual relative to
-// the initial iterate's), the norms, the history and the observer; the methods are steps.
+// The solve loop shared by every method: it owns the stopping criteria (stopping_criterion.hpp),
+// the norms, the history and the observer; the methods are iteration steps (iteration_step.hpp),
+// the nested iteration a start (nested_iteration.hpp).
 
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -9,6 +11,7 @@
 #include "core/level_hierarchy.hpp"
 #include "solvers/iteration_record.hpp"
 #include "solvers/multilevel_cycle.hpp"
+#include "solvers/stopping_criterion.hpp"
 
 namespace fosls {
 
@@ -19,25 +22,11 @@ enum class SolverMethod {
   kPgs,    ///< single-level projected Gauss–Seidel (pointwise or patch)
 };
 
-const char* method_name(SolverMethod m);
-
 /// When a solve has converged (docs/method.md §5.1).
 enum class StoppingRule {
   kKktResidual,     ///< kkt_k ≤ tolerance · kkt_0
   kDiscretisation,  ///< that, or the algebraic error ≤ discretisation_fraction · J^½
 };
-
-/// Which test a converged solve met. kRoundingLevel: the KKT residual stalled within a small
-/// factor of the level that rounding in r = b − A x allows (BoxQp::rounding_level) before it
-/// reached the tolerance.
-enum class ConvergedBy { kNone, kKktResidual, kAlgebraicError, kRoundingLevel };
-
-/// A solve whose KKT residual has stalled within this factor of the rounding level has converged
-/// as far as double precision can tell (docs/method.md §5.2).
-constexpr double kRoundingLevelFactor = 10.0;
-
-/// "kkt_residual", "algebraic_error", "rounding_level" or "none" (result JSON's converged_by).
-const char* converged_by_name(ConvergedBy c);
 
 struct SolverOptions {
   SolverMethod method = SolverMethod::kMmg;
@@ -118,5 +107,11 @@ bool chain_is_definite(const SparseMatrix& A, const GalerkinChain& chain, int ma
 /// definite throws IndefiniteSystemError.
 SolverReport solve_box_qp(const BoxQp& qp, const LevelHierarchy& hierarchy,
                           const SolverOptions& options, const SolverObserver& observer, Vector& x);
+
+/// solve_box_qp on the Galerkin chain of the hierarchy (formed here when null, for mmg and
+/// tnnmg), without the definiteness check: the nested iteration's coarse solves.
+SolverReport solve_with_chain(const BoxQp& qp, const LevelHierarchy& hierarchy,
+                              const SolverOptions& options, const SolverObserver& observer,
+                              Vector& x, std::shared_ptr<GalerkinChain> chain);
 
 }  // namespace fosls

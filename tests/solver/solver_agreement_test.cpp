@@ -7,6 +7,7 @@
 #include <limits>
 
 #include "adapted_hierarchy.hpp"
+#include "case/solver_methods.hpp"
 #include "contact_problems.hpp"
 #include "solvers/solve_loop.hpp"
 
@@ -27,7 +28,7 @@ Solved run(const Discretization& disc, const LevelHierarchy& h, SolverMethod m, 
   o.max_iterations = max_it;
   Solved s;
   s.report = solve_box_qp(disc.problem().qp, h, o, {}, s.x);
-  std::printf("%-6s iterations=%5d converged=%d rate=%.3f active=%d\n", method_name(m),
+  std::printf("%-6s iterations=%5d converged=%d rate=%.3f active=%d\n", method_info(m).name,
               s.report.iterations, s.report.converged, s.report.asymptotic_rate, s.report.active);
   return s;
 }
@@ -48,10 +49,10 @@ void check_agreement(const Discretization& disc, std::vector<SolverMethod> metho
   ASSERT_GT(ref.report.active, 0);
   for (SolverMethod m : methods) {
     const Solved s = run(disc, h, m, m == SolverMethod::kPgs ? 100000 : 300);
-    EXPECT_TRUE(s.report.converged) << method_name(m);
-    EXPECT_LE(energy_distance(qp, s.x, ref.x), 1e-8) << method_name(m);
-    EXPECT_TRUE(qp.feasible(s.x)) << method_name(m);
-    EXPECT_EQ(s.report.active, ref.report.active) << method_name(m);
+    EXPECT_TRUE(s.report.converged) << method_info(m).name;
+    EXPECT_LE(energy_distance(qp, s.x, ref.x), 1e-8) << method_info(m).name;
+    EXPECT_TRUE(qp.feasible(s.x)) << method_info(m).name;
+    EXPECT_EQ(s.report.active, ref.report.active) << method_info(m).name;
   }
 }
 

@@ -1,0 +1,67 @@
+#include "solvers/pdas_step.hpp"
+
+#include <stdexcept>
+
+#include "core/indefinite_system.hpp"
+
+namespace fosls {
+
+PdasStep::PdasStep(const BoxQp& qp) : qp_(qp), m_(qp.A), diagonal_(qp.A.diagonal()) {
+  llt_.analyzePattern(m_);
+  if (llt_.info() != Eigen::Success)
+    throw std::runtime_error("CHOLMOD could not analyse the matrix");
+}
+
+std::vector<char> PdasStep::next_active_set(const Vector& x, const Vector& r) {
+  // Active-set test λ_i + c_i (x_i − ψ_i) > 0 with λ = b − A x on the current active set
+  // (zero elsewhere) and c_i = A_ii, which makes the test invariant to scaling of DOFs.
+  // The first iteration takes λ = b − A x everywhere as its multiplier estimate.
+  const int n = qp_.size();
+  std::vector<char> active(n, 0);
+  for (int i = 0; i < n; ++i) {
+    if (!is_bounded_above(qp_.upper[i])) continue;
+    const double lambda = (first_ || current_[i]) ? r[i] : 0.0;
+    active[i] = lambda + diagonal_[i] * (x[i] - qp_.upper[i]) > 0;
+  }
+  first_ = false;
+  current_ = active;
+  return active;
+}
+
+void PdasStep::hold_active_rows(const std::vector<char>& active) {
+  const int n = qp_.size();
+  const int* outer = qp_.A.outerIndexPtr();
+  const int* inner = qp_.A.innerIndexPtr();
+  const double* a = qp_.A.valuePtr();
+  double* m = m_.valuePtr();
+  for (int col = 0; col < n; ++col)
+    for (int k = outer[col]; k < outer[col + 1]; ++k) {
+      const int row = inner[k];
+      m[k] = (active[row] || active[col]) ? (row == col ? 1.0 : 0.0) : a[k];
+    }
+}
+
+void PdasStep::iterate(Vector& x, Vector& r) {
+  const int n = qp_.size();
+  const std::vector<char> active = next_active_set(x, r);
+  // M = A with active rows/columns replaced by the identity; same pattern as A.
+  Vector rhs = qp_.b;
+  Vector psi = Vector::Zero(n);
+  for (int i = 0; i < n; ++i)
+    if (active[i]) psi[i] = qp_.upper[i];
+  Vector apsi;
+  symmetric_multiply(qp_.A, psi, apsi);
+  for (int i = 0; i < n; ++i) rhs[i] = active[i] ? psi[i] : rhs[i] - apsi[i];
+  hold_active_rows(active);
+  llt_.factorize(m_);
+  if (llt_.info() != Eigen::Success)
+    throw IndefiniteSystemError("CHOLMOD: the matrix is not positive definite");
+  x = llt_.solve(rhs);
+  for (int i = 0; i < n; ++i)
+    if (active[i]) x[i] = qp_.upper[i];
+  Vector ax;
+  symmetric_multiply(qp_.A, x, ax);
+  r = qp_.b - ax;
+}
+
+}  // namespace fosls
