@@ -7,9 +7,14 @@
 namespace fosls::service {
 
 namespace {
-CaseReadOptions service_read_options() {
+
+/// No local files, and, when `job_memory_bytes` is not 0, the memory budget every case is
+/// admitted against (before meshing and again once meshed).
+CaseReadOptions service_read_options(std::size_t job_memory_bytes) {
   CaseReadOptions options;
   options.allow_local_files = false;
+  options.limits.max_memory_bytes = static_cast<double>(job_memory_bytes);
+  options.limits.memory_budget_name = "a job may use (the service's --max-job-memory)";
   return options;
 }
 
@@ -24,21 +29,16 @@ std::string describe(const std::vector<CaseError>& errors) {
 }  // namespace
 
 std::function<std::vector<CaseError>(const nlohmann::json&)> submitted_case_validator(
-    std::size_t job_memory_bytes, bool check_memory) {
-  return [job_memory_bytes, check_memory](const nlohmann::json& case_json) {
-    CaseAdmission admission = admit_case(case_json, service_read_options());
-    if (check_memory && admission.estimate)
-      if (auto e = check_memory_budget(*admission.estimate, admission.spec->solver.method,
-                                       static_cast<double>(job_memory_bytes),
-                                       "the service's --max-job-memory"))
-        admission.errors.push_back(*e);
-    return admission.errors;
+    std::size_t job_memory_bytes) {
+  return [job_memory_bytes](const nlohmann::json& case_json) {
+    return admit_case(case_json, service_read_options(job_memory_bytes)).errors;
   };
 }
 
-JobRunOutcome run_case_job(const nlohmann::json& case_json, const JobRunContext& context) {
+JobRunOutcome run_case_job(const nlohmann::json& case_json, const JobRunContext& context,
+                           std::size_t job_memory_bytes) {
   JobRunOutcome outcome;
-  const CaseReadOptions options = service_read_options();
+  const CaseReadOptions options = service_read_options(job_memory_bytes);
   CaseReadResult read = read_case(case_json, options);
   if (!read.spec) {
     // Only reachable if validation rules changed between submit and run (e.g. an upgrade).

@@ -15,14 +15,16 @@ namespace fosls::service {
 /// Validates a submitted case as the service must, on the request thread and without gmsh
 /// (case/case_admission.hpp): `mesh.geo_file` is refused, because a gmsh .geo script can run
 /// shell commands and read or write files; problems that need the coarse mesh of a geometry
-/// are found by the job (it fails naming them). With `check_memory`, a case whose estimated
-/// memory exceeds `job_memory_bytes` is refused at /mesh/refinements.
+/// are found by the job (it fails naming them). A case whose estimated memory exceeds
+/// `job_memory_bytes` (when not 0) is refused at the field that sets its size.
 std::function<std::vector<CaseError>(const nlohmann::json&)> submitted_case_validator(
-    std::size_t job_memory_bytes, bool check_memory = true);
+    std::size_t job_memory_bytes);
 
 /// Solves a case with read_case + run_case, honouring cancellation through RunControl::cancel
-/// and reporting every iteration. Case problems that only show while running
-/// (CaseException) become a failed outcome listing each pointer and reason.
-JobRunOutcome run_case_job(const nlohmann::json& case_json, const JobRunContext& context);
+/// and reporting every iteration. Case problems that only show while running (CaseException:
+/// among them a coarse mesh beyond `job_memory_bytes`, checked before it is refined) become a
+/// failed outcome listing each pointer and reason.
+JobRunOutcome run_case_job(const nlohmann::json& case_json, const JobRunContext& context,
+                           std::size_t job_memory_bytes = 0);
 
 }  // namespace fosls::service

@@ -42,7 +42,6 @@ struct ServeOptions {
   std::size_t max_queue = 1000;
   std::size_t max_body_bytes = 8u << 20;
   double retention_hours = 168;
-  bool admit_over_budget = false;  // queue cases estimated above --max-job-memory anyway
 };
 
 std::string url_host(const std::string& host) {
@@ -76,8 +75,7 @@ int serve(const ServeOptions& o, const sigset_t& stop_signals) {
   api_options.max_queue = o.max_queue;
   api_options.max_body_bytes = o.max_body_bytes;
   api_options.web_root = o.web_root;
-  HttpApi api(store, pool,
-              submitted_case_validator(o.worker.job_memory_bytes(), !o.admit_over_budget), metrics,
+  HttpApi api(store, pool, submitted_case_validator(o.worker.admission_memory_bytes()), metrics,
               log, api_options);
 
   // Request heads are read under limits before cpp-httplib parses them (bounded_http_server.hpp).
@@ -175,9 +173,6 @@ int main(int argc, char** argv) {
                  "Delete finished jobs older than this (0 keeps them)")
       ->check(CLI::Range(0.0, 1e6))
       ->capture_default_str();
-  app.add_flag("--admit-over-budget", o.admit_over_budget,
-               "Queue cases estimated above --max-job-memory anyway (they run under the limit "
-               "and fail if they exceed it)");
   db_option->excludes(app.get_option("--store"));
   CLI11_PARSE(app, argc, argv);
   if (const std::string problem = o.worker.problem(); !problem.empty()) {

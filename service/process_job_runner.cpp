@@ -77,6 +77,9 @@ JobRunner process_job_runner(ProcessJobRunnerOptions options) {
     JobProcessReader reader(context.report_progress);
     ChildOptions child;
     child.argv = {options.program};
+    if (options.admission_memory_bytes > 0)
+      child.argv.insert(child.argv.end(),
+                        {"--max-job-memory", std::to_string(options.admission_memory_bytes)});
     child.input = case_json.dump(-1, ' ', false, nlohmann::json::error_handler_t::replace);
     child.limits.address_space_bytes = options.memory_bytes + kSolveAddressSpaceHeadroom;
     child.limits.max_output_bytes = std::size_t{4} << 30;

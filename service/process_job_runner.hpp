@@ -25,6 +25,9 @@ struct ProcessJobRunnerOptions {
   int threads = 1;
   /// Wall-clock time a job may run (--max-job-seconds); zero: no limit.
   std::chrono::milliseconds time_limit{0};
+  /// The budget cases were admitted against (0: none, --admit-over-budget): the solve process
+  /// checks the exact mesh against it once built and fails at once if it outgrew it.
+  std::size_t admission_memory_bytes = 0;
   /// The solve program; empty: fosls-solve-job beside this program (FOSLS_SOLVE_JOB overrides).
   std::string program;
 };

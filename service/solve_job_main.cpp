@@ -4,7 +4,8 @@
 // goes back to the system when it exits. Not meant to be run by hand.
 //
 // stdin: the case JSON. stdout: job_process_protocol.hpp. Exit code 3: out of memory (also
-// said on stderr).
+// said on stderr). `--max-job-memory BYTES`: the budget the case was admitted against, checked
+// again on the coarse mesh once it is built.
 
 #include <atomic>
 #include <cerrno>
@@ -19,7 +20,7 @@
 #include "process/malloc_arenas.hpp"
 #include "process/solver_environment.hpp"
 
-int main(int /*argc*/, char** argv) {
+int main(int argc, char** argv) {
   using namespace fosls::service;
   // Sleeping OpenMP waiters and huge pages for malloc's large blocks (solver_environment.hpp);
   // before anything reads stdin: the restarted program reads the case.
@@ -38,9 +39,12 @@ int main(int /*argc*/, char** argv) {
     JobRunContext context{never, [protocol_fd](const JobProgress& p) {
                             fosls::write_all(protocol_fd, progress_message(p));
                           }};
+    std::size_t job_memory_bytes = 0;
+    for (int i = 1; i + 1 < argc; ++i)
+      if (std::string(argv[i]) == "--max-job-memory") job_memory_bytes = std::stoull(argv[i + 1]);
     JobRunOutcome outcome;
     try {
-      outcome = run_case_job(case_json, context);
+      outcome = run_case_job(case_json, context, job_memory_bytes);
     } catch (const std::bad_alloc&) {
       throw;
     } catch (const std::exception& e) {

@@ -33,6 +33,10 @@ std::size_t WorkerOptions::job_memory_bytes() const {
   return default_job_memory(workers);
 }
 
+std::size_t WorkerOptions::admission_memory_bytes() const {
+  return admit_over_budget ? 0 : job_memory_bytes();
+}
+
 std::chrono::milliseconds WorkerOptions::reaper_interval() const {
   // Often enough that a dead worker's job waits little beyond its lease.
   return std::clamp(seconds_to_ms(lease_seconds / 4), std::chrono::milliseconds(200),
@@ -89,6 +93,9 @@ void add_worker_options(CLI::App& app, WorkerOptions& o, int min_workers) {
   app.add_flag("--fail-unconverged", o.fail_unconverged,
                "A solve that stops without converging fails its job (the result is kept) "
                "instead of succeeding with converged false");
+  app.add_flag("--admit-over-budget", o.admit_over_budget,
+               "Queue and run cases estimated above --max-job-memory anyway (they run under the "
+               "limit and fail if they exceed it)");
 }
 
 JobRunner service_job_runner(const WorkerOptions& options) {
@@ -97,6 +104,7 @@ JobRunner service_job_runner(const WorkerOptions& options) {
   const int cores = static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
   runner.threads = std::max(1, cores / std::max(1, options.workers));
   runner.time_limit = seconds_to_ms(options.max_job_seconds);
+  runner.admission_memory_bytes = options.admission_memory_bytes();
   return process_job_runner(runner);
 }
 

@@ -26,9 +26,15 @@ struct WorkerOptions {
   double max_job_seconds = 0;
   /// --fail-unconverged: a solve that stops without converging fails its job.
   bool fail_unconverged = false;
+  /// --admit-over-budget: cases estimated above --max-job-memory are queued and run anyway
+  /// (under the limit), and not stopped when their mesh is built.
+  bool admit_over_budget = false;
 
   /// The memory each job may use, in bytes.
   std::size_t job_memory_bytes() const;
+  /// The budget cases are admitted against: job_memory_bytes(), or 0 (none) with
+  /// --admit-over-budget.
+  std::size_t admission_memory_bytes() const;
 
   /// The pool options these give (worker id generated per process).
   WorkerPoolOptions pool_options() const;
@@ -39,8 +45,8 @@ struct WorkerOptions {
 };
 
 /// Registers --store, --workers, --max-attempts, --lease-seconds, --heartbeat-seconds,
-/// --max-job-memory, --max-job-seconds and --fail-unconverged on `app`; `min_workers` is 0 for
-/// fosls-serve (API only) and 1 for fosls-worker.
+/// --max-job-memory, --max-job-seconds, --fail-unconverged and --admit-over-budget on `app`;
+/// `min_workers` is 0 for fosls-serve (API only) and 1 for fosls-worker.
 void add_worker_options(CLI::App& app, WorkerOptions& options, int min_workers);
 
 /// The JobRunner both programs solve jobs with: each job in a fosls-solve-job process under

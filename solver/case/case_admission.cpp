@@ -2,25 +2,18 @@
 
 #include <algorithm>
 #include <array>
-#include <cstdio>
 
 #include "case/early_group_check.hpp"
+#include "case/memory_size.hpp"
 #include "case/mesh_factory.hpp"
+#include "case/solver_methods.hpp"
+#include "case/time_estimate.hpp"
 #include "mesh/coarse_mesh_estimate.hpp"
 #include "mesh/geometry_checks.hpp"
 
 namespace fosls {
 
 namespace {
-
-std::string bytes_text(double bytes) {
-  char text[32];
-  if (bytes >= (1 << 30))
-    std::snprintf(text, sizeof text, "%.3g GiB", bytes / (1 << 30));
-  else
-    std::snprintf(text, sizeof text, "%.0f MiB", bytes / (1 << 20));
-  return text;
-}
 
 /// The geometry checks and size guards of a gmsh outline, as the case's problems.
 std::vector<CaseError> outline_problems(const GmshOutline& outline, const MeshSpec& mesh,
@@ -35,12 +28,10 @@ std::vector<CaseError> outline_problems(const GmshOutline& outline, const MeshSp
   return to_case_exception(MeshError(std::move(problems)), mesh).errors();
 }
 
-}  // namespace
-
-std::vector<CaseError> check_against_groups(const CaseSpec& spec,
-                                            const std::vector<std::string>& group_names,
-                                            long long unknowns, bool unknowns_exact,
-                                            const CaseLimits& limits) {
+/// Problems of the groups the case names against those the mesh has, and of a case the
+/// Dirichlet groups do not hold.
+std::vector<CaseError> group_problems(const CaseSpec& spec,
+                                      const std::vector<std::string>& group_names) {
   std::vector<CaseError> errors;
   bool dirichlet = false;
   std::array<bool, 2> held = {false, false};  // some group prescribes u_x, u_y
@@ -63,12 +54,52 @@ std::vector<CaseError> check_against_groups(const CaseSpec& spec,
                                          "direction (frictionless contact cannot hold it) and "
                                          "the problem has no unique solution; prescribe u_" +
                                          "xy"[c] + " on at least one group"});
-  if (unknowns_exact && unknowns > limits.max_dofs)
-    errors.push_back({"/mesh/refinements",
-                      std::to_string(spec.mesh.refinements) + " refinements of this mesh give " +
-                          std::to_string(unknowns) + " unknowns, more than the limit of " +
-                          std::to_string(limits.max_dofs) +
-                          "; use fewer refinements or a coarser mesh.size"});
+  return errors;
+}
+
+/// The size against the limits: unknowns against max_dofs, memory against max_memory_bytes.
+std::vector<CaseError> size_problems(const CaseSpec& spec, long long unknowns, bool exact,
+                                     const CaseLimits& limits) {
+  std::vector<CaseError> errors;
+  // After meshing, a gmsh mesh is counted for the first time (its admission used an estimate).
+  const std::string built =
+      exact && gmsh_outline(spec.mesh) ? "counted on the coarse mesh gmsh built: " : "";
+  if (unknowns > limits.max_dofs)
+    errors.push_back(
+        {"/mesh/refinements",
+         built + std::to_string(spec.mesh.refinements) + " refinements of this mesh give " +
+             (exact ? "" : "about ") + std::to_string(unknowns) + " unknowns" +
+             (exact ? "" : " (estimated before meshing)") + ", more than the limit of " +
+             std::to_string(limits.max_dofs) + "; use fewer refinements or a coarser mesh.size"});
+  if (limits.max_memory_bytes > 0)
+    if (auto e = check_memory_budget(admission_estimate(spec, unknowns, exact), spec.solver.method,
+                                     limits.max_memory_bytes, limits.memory_budget_name)) {
+      e->detail = built + e->detail;
+      errors.push_back(std::move(*e));
+    }
+  return errors;
+}
+
+}  // namespace
+
+ResourceEstimate admission_estimate(const CaseSpec& spec, long long unknowns, bool exact) {
+  ResourceEstimate estimate = estimate_resources(unknowns, exact, spec.solver.method);
+  // An adaptive run may grow up to adaptivity.max_dofs: admit it for that size.
+  if (spec.adaptivity && spec.adaptivity->steps > 0) {
+    const ResourceEstimate adaptive =
+        estimate_adaptive_resources(spec.adaptivity->max_dofs, spec.solver.method);
+    if (adaptive.memory_bytes > estimate.memory_bytes) estimate = adaptive;
+  }
+  return estimate;
+}
+
+std::vector<CaseError> check_against_groups(const CaseSpec& spec,
+                                            const std::vector<std::string>& group_names,
+                                            long long unknowns, bool unknowns_exact,
+                                            const CaseLimits& limits) {
+  std::vector<CaseError> errors = group_problems(spec, group_names);
+  for (CaseError& e : size_problems(spec, unknowns, unknowns_exact, limits))
+    errors.push_back(std::move(e));
   return errors;
 }
 
@@ -103,15 +134,8 @@ CaseAdmission admit_case(const nlohmann::json& j, const CaseReadOptions& options
     out.errors = e.errors();
     return out;
   }
+  out.estimate = admission_estimate(spec, unknowns, exact);
   out.errors = check_against_groups(spec, groups, unknowns, exact, options.limits);
-  if (!out.errors.empty()) return out;
-  out.estimate = estimate_resources(unknowns, exact, spec.solver.method);
-  // An adaptive run may grow up to adaptivity.max_dofs: admit it for that size.
-  if (spec.adaptivity && spec.adaptivity->steps > 0) {
-    const ResourceEstimate adaptive =
-        estimate_adaptive_resources(spec.adaptivity->max_dofs, spec.solver.method);
-    if (adaptive.memory_bytes > out.estimate->memory_bytes) out.estimate = adaptive;
-  }
   return out;
 }
 
@@ -119,13 +143,21 @@ std::optional<CaseError> check_memory_budget(const ResourceEstimate& estimate, S
                                              double budget_bytes, const std::string& budget_name) {
   if (estimate.memory_bytes <= budget_bytes) return std::nullopt;
   const bool adaptive = estimate.limited_by == "/adaptivity/max_dofs";
-  return CaseError{
-      estimate.limited_by,
-      "the solve needs " + describe(estimate, method) + ", more than the " +
-          bytes_text(budget_bytes) + " a job may use (" + budget_name + "); " +
-          (adaptive ? "lower adaptivity.max_dofs"
-                    : "use fewer refinements or a coarser mesh.size") +
-          (method == SolverMethod::kPgs ? std::string() : ", or solver.method pgs (the leanest)")};
+  std::string advice =
+      adaptive ? "lower adaptivity.max_dofs" : "use fewer refinements or a coarser mesh.size";
+  // Another method only if it converges on fine meshes (not pgs) and fits.
+  for (const MethodInfo& m : solver_methods()) {
+    if (m.method == method || !converges_on_fine_meshes(m.method)) continue;
+    const ResourceEstimate other =
+        adaptive ? estimate_adaptive_resources(estimate.unknowns, m.method)
+                 : estimate_resources(estimate.unknowns, estimate.unknowns_exact, m.method);
+    if (other.memory_bytes <= budget_bytes)
+      advice += ", or solver.method " + std::string(m.name) + " (about " +
+                format_bytes(other.memory_bytes) + ")";
+  }
+  return CaseError{estimate.limited_by, "the solve needs " + describe(estimate, method) +
+                                            ", more than the " + format_bytes(budget_bytes) + " " +
+                                            budget_name + "; " + advice};
 }
 
 }  // namespace fosls

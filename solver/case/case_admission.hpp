@@ -1,9 +1,12 @@
 #pragma once
-// What can be said about a case before anything is meshed with gmsh: everything read_case
-// finds, the geometry checks and coarse-mesh size guards, the boundary groups, and the
-// resources the solve will need. Cheap enough for a request thread: gmsh never runs here (the
-// coarse mesh of a geometry or of the built-in hertz is estimated, not built); a square or msh
-// mesh, built without gmsh, is built and checked exactly.
+// The one admission rule of every program that runs cases (the CLI's estimate, solve and bench,
+// the service): what can be said about a case before anything is meshed with gmsh — everything
+// read_case finds, the geometry checks and coarse-mesh size guards, the boundary groups, and the
+// unknowns and memory the solve will need against CaseLimits (max_dofs, max_memory_bytes).
+// Cheap enough for a request thread: gmsh never runs here (the coarse mesh of a geometry or of
+// the built-in hertz is estimated from what drives it, mesh/coarse_mesh_estimate.hpp); a square
+// or msh mesh, built without gmsh, is counted exactly. Once a run has built the coarse mesh, the
+// same rule is applied again to the exact unknowns (check_against_groups).
 
 #include <nlohmann/json.hpp>
 #include <optional>
@@ -18,24 +21,30 @@
 namespace fosls {
 
 struct CaseAdmission {
-  std::vector<CaseError> errors;             ///< empty when the case may be queued
+  std::vector<CaseError> errors;             ///< empty when the case may run
   std::optional<CaseSpec> spec;              ///< set when read_case accepted the case
-  std::optional<ResourceEstimate> estimate;  ///< set when errors is empty
+  std::optional<ResourceEstimate> estimate;  ///< set when the size could be estimated
 };
 
-/// Checks a case without gmsh (see above).
+/// Checks a case without gmsh (see above); the size against `options.limits`.
 CaseAdmission admit_case(const nlohmann::json& j, const CaseReadOptions& options = {});
 
-/// Problems of the boundary conditions against the mesh's groups, and of the number of
-/// unknowns against the limit (only when `unknowns_exact`: an estimate is checked once the
-/// coarse mesh is built).
+/// The estimate a case is admitted with, for `unknowns` on its finest uniform level: for an
+/// adaptive case the larger of that and the run's at adaptivity.max_dofs.
+ResourceEstimate admission_estimate(const CaseSpec& spec, long long unknowns, bool exact);
+
+/// Problems of the boundary conditions against the mesh's groups, and of the size (the
+/// unknowns against max_dofs, the memory estimate against max_memory_bytes) against `limits`.
+/// Called before meshing with estimated unknowns and once the coarse mesh is built with exact
+/// ones (`unknowns_exact`), so a mesh larger than its estimate is stopped before it is refined.
 std::vector<CaseError> check_against_groups(const CaseSpec& spec,
                                             const std::vector<std::string>& group_names,
                                             long long unknowns, bool unknowns_exact,
                                             const CaseLimits& limits);
 
-/// The problem (at /mesh/refinements) of an estimate above a memory budget, naming both and
-/// what to change; nothing when it fits.
+/// The problem (at estimate.limited_by) of an estimate above a memory budget, naming both and
+/// what to change — among methods, only those that converge on fine meshes and fit; nothing
+/// when it fits.
 std::optional<CaseError> check_memory_budget(const ResourceEstimate& estimate, SolverMethod method,
                                              double budget_bytes, const std::string& budget_name);
 

@@ -39,7 +39,9 @@ std::vector<CaseLimitRow> case_limit_table(const CaseLimits& l) {
        grouped(static_cast<long long>(kMaxCoarseTriangles))},
       {"estimated coarse boundary edges (geometry meshes)",
        grouped(static_cast<long long>(kMaxCoarseBoundaryEdges))},
-      {"unknowns on the finest level (checked once the coarse mesh is built)", grouped(l.max_dofs)},
+      {"unknowns on the finest level (estimated before meshing, counted again once the coarse "
+       "mesh is built)",
+       grouped(l.max_dofs)},
   };
 }
 

@@ -23,6 +23,13 @@ struct CaseLimits {
   /// The whole case JSON text (the CLI's case file; the service may use it as its body limit).
   std::size_t max_case_bytes = 16u << 20;
   std::size_t max_path_length = 4096;  ///< mesh.geo_file, mesh.msh_file
+  /// Memory one solve may use, in bytes; 0: not checked. A limit of the program that runs the
+  /// case (the service's --max-job-memory, the CLI's --max-memory), not of the case format:
+  /// a case whose memory estimate exceeds it is refused before meshing, and again with the
+  /// exact unknowns once its coarse mesh is built (case/case_admission.hpp).
+  double max_memory_bytes = 0;
+  /// What completes "more than the 2 GiB …" in messages: who sets the budget and for what.
+  std::string memory_budget_name = "a solve may use";
 };
 
 /// What a reader accepts: the limits, and whether a case may name local files.

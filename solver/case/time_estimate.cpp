@@ -5,6 +5,8 @@
 
 namespace fosls {
 
+bool converges_on_fine_meshes(SolverMethod method) { return method != SolverMethod::kPgs; }
+
 std::optional<double> estimated_seconds(long long unknowns, SolverMethod method) {
   const double n = static_cast<double>(unknowns);
   switch (method) {

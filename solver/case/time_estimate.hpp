@@ -10,6 +10,12 @@
 
 namespace fosls {
 
+/// Whether the method's work stays bounded as the mesh is refined: mmg and tnnmg take about the
+/// same iterations at every level, pdas solves each active set exactly. pgs is a baseline whose
+/// iterations grow with the mesh: it does not converge on fine meshes within any usual
+/// max_iterations, so advice never suggests it.
+bool converges_on_fine_meshes(SolverMethod method);
+
 /// Seconds for mesh, assembly, set-up and solve to the default tolerance; nothing for pgs,
 /// whose iteration count grows with the mesh (it is a baseline, not expected to converge on
 /// fine meshes).

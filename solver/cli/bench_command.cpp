@@ -6,6 +6,7 @@
 
 #include <omp.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <fstream>
@@ -13,8 +14,12 @@
 #include <memory>
 #include <sstream>
 
+#include "case/case_admission.hpp"
 #include "case/case_runner.hpp"
+#include "case/memory_size.hpp"
 #include "case/solver_methods.hpp"
+#include "case/time_estimate.hpp"
+#include "cli/admission_options.hpp"
 #include "cli/case_file.hpp"
 #include "cli/exit_codes.hpp"
 #include "cli/shipped_examples.hpp"
@@ -33,7 +38,8 @@ struct BenchOptions {
   double tolerance = 1e-8;
   int max_iterations = 500;
   std::string json_path;
-  std::string threads;  ///< comma-separated thread counts; empty: the process's default
+  std::string threads;     ///< comma-separated thread counts; empty: the process's default
+  std::string max_memory;  ///< --max-memory (cli/admission_options.hpp)
 };
 
 std::vector<std::string> split(const std::string& s) {
@@ -196,6 +202,41 @@ void print_against_pdas(nlohmann::json& rows) {
   }
 }
 
+/// One run of the bench: its case, and why admission refused it ("" when admitted).
+struct BenchRun {
+  int level = 0;
+  int threads = 0;
+  Configuration setting;
+  nlohmann::json case_json;
+  std::string refusal;
+};
+
+/// Admits every run by the rule solve and the service use, before any runs, and says on stderr
+/// what the admitted ones will take in all (a level too many can take hours).
+void admit_runs(std::vector<BenchRun>& runs, const CaseReadOptions& options) {
+  double seconds = 0, peak = 0;
+  int admitted = 0, untimed = 0;
+  for (BenchRun& run : runs) {
+    const CaseAdmission admission = admit_case(run.case_json, options);
+    if (!admission.errors.empty()) {
+      const CaseError& e = admission.errors.front();
+      run.refusal = "refused before running: " + e.pointer + ": " + e.detail;
+      continue;
+    }
+    ++admitted;
+    peak = std::max(peak, admission.estimate->memory_bytes);
+    const auto t = estimated_seconds(admission.estimate->unknowns, admission.spec->solver.method);
+    if (t)
+      seconds += *t;
+    else
+      ++untimed;
+  }
+  std::cerr << "bench: " << admitted << " of " << runs.size() << " runs admitted, about "
+            << describe_seconds(seconds).substr(6) << " in all"
+            << (untimed ? " (without " + std::to_string(untimed) + " pgs runs, not estimated)" : "")
+            << ", the largest about " << format_bytes(peak) << "\n";
+}
+
 int run_bench(const BenchOptions& o) {
   nlohmann::json base;
   bool found = false;
@@ -253,6 +294,7 @@ int run_bench(const BenchOptions& o) {
     return kExitBadInput;
   }
   const auto settings = configurations(methods, smoothers, obstacles, cycles);
+  std::vector<BenchRun> runs;
   for (int level = first; level <= last; ++level)
     for (const int threads : thread_counts)
       for (const Configuration& setting : settings) {
@@ -264,34 +306,39 @@ int run_bench(const BenchOptions& o) {
         if (setting.cycle != "-") c["solver"]["cycle"] = setting.cycle;
         c["solver"]["tolerance"] = o.tolerance;
         c["solver"]["max_iterations"] = o.max_iterations;
-        nlohmann::json row = run_isolated(c, threads);
-        row["level"] = level;
-        row["method"] = setting.method;
-        row["smoother"] = setting.smoother;
-        row["coarse_obstacle"] = setting.obstacle;
-        row["cycle"] = setting.cycle;
-        if (row.contains("error")) {
-          all_ok = false;
-          std::printf("%-5d %9s %s error: %s\n", level, "-", settings_columns(row).c_str(),
-                      row["error"].get<std::string>().c_str());
-        } else {
-          const double force =
-              std::hypot(row["force"][0].get<double>(), row["force"][1].get<double>());
-          std::printf(
-              "%-5d %9lld %s %3d %6d %5s %8.4f %9.3f %9.3f %9.3f %9.1f %9.1f %9.1f %11.5g %11.5g "
-              "%10.4g %10.3g\n",
-              level, row["dofs"].get<long long>(), settings_columns(row).c_str(),
-              row["threads"].get<int>(), row["iterations"].get<int>(),
-              row["converged"].get<bool>() ? "yes" : "no", row["rate"].get<double>(),
-              row["setup_s"].get<double>(), row["solve_s"].get<double>(),
-              row["total_s"].get<double>(), row["memory"]["assembly_mib"].get<double>(),
-              row["memory"]["chain_mib"].get<double>(), row["peak_mib"].get<double>(), force,
-              row["peak_pressure"].get<double>(), row["contact_width"].get<double>(),
-              row["estimator"].get<double>());
-        }
-        std::fflush(stdout);
-        rows.push_back(row);
+        runs.push_back({level, threads, setting, std::move(c), {}});
       }
+  admit_runs(runs, command_line_read_options(o.max_memory));
+  for (const BenchRun& run : runs) {
+    const int level = run.level, threads = run.threads;
+    const Configuration& setting = run.setting;
+    nlohmann::json row = run.refusal.empty() ? run_isolated(run.case_json, threads)
+                                             : nlohmann::json{{"error", run.refusal}};
+    row["level"] = level;
+    row["method"] = setting.method;
+    row["smoother"] = setting.smoother;
+    row["coarse_obstacle"] = setting.obstacle;
+    row["cycle"] = setting.cycle;
+    if (row.contains("error")) {
+      all_ok = false;
+      std::printf("%-5d %9s %s error: %s\n", level, "-", settings_columns(row).c_str(),
+                  row["error"].get<std::string>().c_str());
+    } else {
+      const double force = std::hypot(row["force"][0].get<double>(), row["force"][1].get<double>());
+      std::printf(
+          "%-5d %9lld %s %3d %6d %5s %8.4f %9.3f %9.3f %9.3f %9.1f %9.1f %9.1f %11.5g %11.5g "
+          "%10.4g %10.3g\n",
+          level, row["dofs"].get<long long>(), settings_columns(row).c_str(),
+          row["threads"].get<int>(), row["iterations"].get<int>(),
+          row["converged"].get<bool>() ? "yes" : "no", row["rate"].get<double>(),
+          row["setup_s"].get<double>(), row["solve_s"].get<double>(), row["total_s"].get<double>(),
+          row["memory"]["assembly_mib"].get<double>(), row["memory"]["chain_mib"].get<double>(),
+          row["peak_mib"].get<double>(), force, row["peak_pressure"].get<double>(),
+          row["contact_width"].get<double>(), row["estimator"].get<double>());
+    }
+    std::fflush(stdout);
+    rows.push_back(row);
+  }
   print_against_pdas(rows);
   if (!o.json_path.empty()) std::ofstream(o.json_path) << rows.dump(2) << '\n';
   return all_ok ? kExitOk : kExitInternal;
@@ -317,6 +364,7 @@ void add_bench_command(CLI::App& app, int& exit_code) {
   cmd->add_option("--threads", o->threads,
                   "Comma-separated thread counts (OpenMP and OpenBLAS) to run each "
                   "configuration with, e.g. 1,2; default: the environment's");
+  add_max_memory_option(*cmd, o->max_memory);
   cmd->callback([o, &exit_code] { exit_code = run_bench(*o); });
 }
 

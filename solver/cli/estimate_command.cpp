@@ -8,6 +8,7 @@
 #include "case/case_admission.hpp"
 #include "case/solver_methods.hpp"
 #include "case/time_estimate.hpp"
+#include "cli/admission_options.hpp"
 #include "cli/case_file.hpp"
 #include "cli/exit_codes.hpp"
 
@@ -15,9 +16,8 @@ namespace fosls {
 
 namespace {
 
-int run_estimate(const std::string& path) {
-  CaseReadOptions options;
-  options.allow_local_files = true;  // a local file given by the user who runs the program
+int run_estimate(const std::string& path, const std::string& max_memory) {
+  const CaseReadOptions options = command_line_read_options(max_memory);
   CaseFile file = load_case_file(path, options.limits.max_case_bytes);
   if (!file.problem.empty()) {
     std::cerr << "error: " << path << ": " << file.problem << '\n';
@@ -27,6 +27,7 @@ int run_estimate(const std::string& path) {
   for (const auto& e : admission.errors)
     std::cerr << "error: " << (e.pointer.empty() ? std::string("/") : e.pointer) << ": " << e.detail
               << '\n';
+  // The same rule as solve's: what it refuses, solve refuses before meshing.
   if (!admission.errors.empty() || !admission.estimate) return kExitBadInput;
   const SolverMethod method = admission.spec->solver.method;
   std::cout << "unknowns: " << admission.estimate->unknowns
@@ -59,9 +60,10 @@ void add_estimate_command(CLI::App& app, int& exit_code) {
   auto* cmd = app.add_subcommand("estimate",
                                  "Check a case without solving it and print the memory (and "
                                  "roughly the time) its solve needs");
-  auto path = std::make_shared<std::string>();
+  auto path = std::make_shared<std::string>(), max_memory = std::make_shared<std::string>();
   cmd->add_option("CASE", *path, "Case JSON file (- reads standard input)")->required();
-  cmd->callback([path, &exit_code] { exit_code = run_estimate(*path); });
+  add_max_memory_option(*cmd, *max_memory);
+  cmd->callback([path, max_memory, &exit_code] { exit_code = run_estimate(*path, *max_memory); });
 }
 
 }  // namespace fosls

@@ -12,9 +12,11 @@
 #include <string>
 #include <vector>
 
+#include "case/case_admission.hpp"
 #include "case/case_error.hpp"
 #include "case/case_reader.hpp"
 #include "case/case_runner.hpp"
+#include "cli/admission_options.hpp"
 #include "cli/case_file.hpp"
 #include "cli/exit_codes.hpp"
 #include "cli/result_summary.hpp"
@@ -29,6 +31,7 @@ struct SolveOptions {
   std::string vtu_path;
   std::string msh_path;  ///< --msh: the coarse mesh from this file instead of the case's source
   std::string vtu_format = "binary";  ///< --vtu-format: binary (base64) or ascii
+  std::string max_memory;             ///< --max-memory (cli/admission_options.hpp)
   bool quiet = false;
 };
 
@@ -118,8 +121,7 @@ void use_msh_file(nlohmann::json& case_json, const std::string& path) {
 }
 
 int run_solve(const SolveOptions& o) {
-  CaseReadOptions read_options;
-  read_options.allow_local_files = true;  // a local file given by the user who runs the program
+  const CaseReadOptions read_options = command_line_read_options(o.max_memory);
 
   if (!output_folder_ok("--out", o.out_path) || !output_folder_ok("--vtu", o.vtu_path))
     return kExitBadInput;
@@ -131,11 +133,11 @@ int run_solve(const SolveOptions& o) {
   if (!o.msh_path.empty()) use_msh_file(file.json, o.msh_path);
   ProgressLine progress(!o.quiet && isatty(STDERR_FILENO));
   try {
-    // What needs the coarse mesh (mesh errors, groups the mesh lacks, DOF limits) is checked
-    // by run_case, which throws it as a CaseException (below): validating first meshed the
-    // geometry twice, and a gmsh run costs 0.1–0.3 s of the mesher process's start-up alone.
-    auto read = read_case(file.json, read_options);
-    if (!read.spec) {
+    // The admission rule of estimate, bench and the service, without gmsh; what needs the
+    // coarse mesh (mesh errors, the exact size) is checked again by run_case once it is built,
+    // which throws it as a CaseException (below).
+    auto read = admit_case(file.json, read_options);
+    if (!read.errors.empty()) {
       print_errors(read.errors);
       return kExitBadInput;
     }
@@ -187,6 +189,7 @@ void add_solve_command(CLI::App& app, int& exit_code) {
                   "Use this gmsh mesh file (ASCII 4.1) as the coarse mesh instead of the case's "
                   "mesh source");
   cmd->add_flag("--quiet,-q", o->quiet, "No progress line and no summary (warnings still)");
+  add_max_memory_option(*cmd, o->max_memory);
   cmd->callback([o, &exit_code] { exit_code = run_solve(*o); });
 }
 

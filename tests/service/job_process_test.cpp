@@ -1,9 +1,12 @@
-// The pieces of the solve process's plumbing that need no process: the stream protocol read
-// in pieces of every size, and --max-job-memory sizes.
+// The solve process's plumbing: the stream protocol read in pieces of every size,
+// --max-job-memory sizes, and a real fosls-solve-job stopping a mesh that outgrew its admission.
 #include <gtest/gtest.h>
+
+#include <cmath>
 
 #include "job_process_protocol.hpp"
 #include "memory_budget.hpp"
+#include "process_job_runner.hpp"
 
 namespace fosls::service {
 namespace {
@@ -73,6 +76,36 @@ TEST(MemoryBudget, ParsesSizesAsOperatorsWriteThem) {
   EXPECT_EQ(format_bytes(std::size_t{5} << 29), "2.5 GiB");
   EXPECT_GT(default_job_memory(2), std::size_t{0});
   EXPECT_LT(default_job_memory(2), physical_memory());
+}
+
+TEST(SolveProcess, AMeshLargerThanItsAdmissionIsStoppedOnceBuiltBeforeItIsRefined) {
+  // A 1000-sided polygon at size 1 and 4 refinements: about 1.2 M unknowns, 0.9 GiB. Run
+  // without the API's admission against a 100 MiB budget, its process must stop it right after
+  // gmsh built the coarse mesh: refined, it would run out of its address space instead.
+  nlohmann::json points = nlohmann::json::array(), curves = nlohmann::json::array(),
+                 all = nlohmann::json::array();
+  for (int i = 0; i < 1000; ++i) {
+    points.push_back({std::cos(2 * M_PI * i / 1000), std::sin(2 * M_PI * i / 1000)});
+    curves.push_back({{"type", "line"}, {"points", {i, (i + 1) % 1000}}});
+    all.push_back(i);
+  }
+  const nlohmann::json polygon = {
+      {"mesh",
+       {{"geometry", {{"points", points}, {"curves", curves}, {"groups", {{"all", all}}}}},
+        {"size", 1},
+        {"refinements", 4}}},
+      {"material", {{"mu", 1}, {"lambda", 1}}},
+      {"boundary", {{"all", {{"type", "dirichlet"}, {"displacement", {0, 0}}}}}}};
+  ProcessJobRunnerOptions options;
+  options.memory_bytes = std::size_t{100} << 20;
+  options.admission_memory_bytes = options.memory_bytes;
+  const std::atomic<bool> never{false};
+  const JobRunOutcome outcome = process_job_runner(options)(polygon, {never, nullptr});
+  EXPECT_EQ(outcome.kind, JobRunOutcome::Kind::kFailed);
+  for (const char* part :
+       {"/mesh/refinements: counted on the coarse mesh gmsh built: the solve needs",
+        "more than the 100 MiB a job may use", "use fewer refinements"})
+    EXPECT_NE(outcome.error.find(part), std::string::npos) << part << " in: " << outcome.error;
 }
 
 }  // namespace

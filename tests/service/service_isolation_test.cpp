@@ -15,6 +15,7 @@
 
 #include <cerrno>
 #include <chrono>
+#include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <fstream>
@@ -161,6 +162,63 @@ TEST(ServiceIsolation, ACaseEstimatedAboveTheBudgetIsRefusedWithTheEstimate) {
                            "--max-job-memory", "use fewer refinements"})
     EXPECT_NE(detail.find(part), std::string::npos) << part << " in: " << detail;
   svc.wait_state(svc.submit(testing::small_case(1)), "succeeded");
+}
+
+/// A regular polygon of `sides` sides on the unit circle, meshed at size 1: every side is far
+/// shorter than the size, so gmsh makes one boundary edge per side (the hostile probe's case).
+json many_sided_polygon(int sides, int refinements) {
+  std::vector<std::pair<double, double>> points;
+  for (int i = 0; i < sides; ++i)
+    points.emplace_back(std::cos(2 * M_PI * i / sides), std::sin(2 * M_PI * i / sides));
+  json j = fosls::testing::polygon_case("polygon", points, 1.0);
+  j["boundary"]["all"] = {{"type", "dirichlet"}, {"displacement", {0, 0}}};
+  j["mesh"]["refinements"] = refinements;
+  return j;
+}
+
+TEST(ServiceIsolation, AManySidedPolygonIsEstimatedFromItsCurvesAndRefused) {
+  // Estimated at 3 652 unknowns (21 MiB) from its perimeter alone, it ran 683 s at 2 GB; gmsh
+  // makes one edge per side, about 2.85 M unknowns at 3 refinements.
+  Service svc(1, {"--max-job-memory", "2G"});
+  const auto t0 = Clock::now();
+  auto res = svc.post(many_sided_polygon(10000, 3));
+  std::printf("10 000-sided polygon checked in %.2f s\n", since(t0));
+  expect_problem(res, 422);
+  const json p = json::parse(res->body);
+  ASSERT_EQ(p["errors"].size(), 1u) << res->body;
+  EXPECT_EQ(p["errors"][0]["pointer"], "/mesh/refinements");
+  const std::string detail = p["errors"][0]["detail"];
+  std::printf("422: %s\n", detail.c_str());
+  for (const char* part : {"GiB for about", "more than the 2 GiB a job may use"})
+    EXPECT_NE(detail.find(part), std::string::npos) << part << " in: " << detail;
+  expect_healthy(svc);
+}
+
+TEST(ServiceIsolation, TheCliAndTheServiceAdmitByOneRuleAndOneCount) {
+  // The same case refused by `fosls-contact estimate --max-memory 1G` and by the service under
+  // --max-job-memory 1G: the same estimate, the same unknowns.
+  Service svc(1, {"--max-job-memory", "1G"});
+  const json polygon = many_sided_polygon(2000, 4);
+  auto res = svc.post(polygon);
+  expect_problem(res, 422);
+  const std::string service = json::parse(res->body)["errors"][0]["detail"];
+  const std::string file = ::testing::TempDir() + "one-rule.json";
+  std::ofstream(file) << polygon.dump();
+  const std::string bin =
+      std::string(FOSLS_SERVE_PATH).substr(0, std::string(FOSLS_SERVE_PATH).rfind('/'));
+  FILE* pipe =
+      popen((bin + "/fosls-contact estimate --max-memory 1G " + file + " 2>&1").c_str(), "r");
+  std::string cli;
+  char buffer[512];
+  while (pipe && std::fgets(buffer, sizeof buffer, pipe)) cli += buffer;
+  if (pipe) pclose(pipe);
+  // "the solve needs about X GiB for about N unknowns with mmg, more than the 1 GiB ...": up to
+  // the budget's name, which says who set it.
+  const std::string needs = service.substr(0, service.find(", more than"));
+  EXPECT_NE(needs.find("unknowns with mmg"), std::string::npos) << service;
+  EXPECT_NE(cli.find("error: /mesh/refinements: " + needs + ", more than the 1 GiB"),
+            std::string::npos)
+      << "service: " << service << "\ncli: " << cli;
 }
 
 TEST(ServiceIsolation, ASolveOverItsMemoryLimitFailsAloneAndTheNextJobSucceeds) {

@@ -10,6 +10,7 @@ foreach(name request_checks_test sqlite_job_store_test worker_pool_test http_api
   target_include_directories(${name} PRIVATE ${SERVICE_TEST_DIR})
   gtest_discover_tests(${name} PROPERTIES LABELS unit TIMEOUT 120 DISCOVERY_TIMEOUT 60)
 endforeach()
+add_dependencies(job_process_test fosls-solve-job)  # runs the real solve process
 
 # One contract, two stores: the same tests on SQLite and on a throwaway PostgreSQL server that
 # the test process starts itself (postgres_cluster.hpp). One ctest entry per store, so that the
