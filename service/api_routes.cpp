@@ -22,7 +22,8 @@ json submit_job() {
                  {413, "body above --max-body-bytes"},
                  {415, "Content-Type is not application/json"},
                  {422, "invalid case (errors lists every pointer), or key reused"},
-                 {503, "queue full or store unavailable"}}),
+                 {503, "queue full or store unavailable"},
+                 {507, "the store's disk is full"}}),
       false);
   op["requestBody"] = {{"required", true},
                        {"content", {{"application/json", {{"schema", {{"$ref", kCaseSchema}}}}}}}};
@@ -64,7 +65,8 @@ json health() {
                    {"workers", {{"type", "integer"}}},
                    {"busy", {{"type", "integer"}}}}}};
   return operation("health", "Liveness and the store",
-                   responses({{"200", json_body(health, "healthy")}}, {{503, "store unavailable"}}),
+                   responses({{"200", json_body(health, "healthy")}},
+                             {{503, "store unavailable, or its disk is full (type store-full)"}}),
                    false);
 }
 

@@ -164,6 +164,7 @@ HandlerResponse HttpApi::pre_route(const Request& req, Response& res) {
     send_problem(req, res, *p);
     return HandlerResponse::Handled;
   }
+  if (method_not_served(req, res)) return HandlerResponse::Handled;
   const bool body_method = req.method == "POST" || req.method == "PUT" || req.method == "PATCH" ||
                            req.method == "DELETE";
   if (!body_method || req.has_header("Content-Length")) return HandlerResponse::Unhandled;
@@ -183,6 +184,28 @@ HandlerResponse HttpApi::pre_route(const Request& req, Response& res) {
   }
   res.status = 404;  // on_error fills in the problem (or turns it into 405)
   return HandlerResponse::Handled;
+}
+
+bool HttpApi::method_not_served(const Request& req, Response& res) {
+  // Routes are GET (HEAD), POST and DELETE; cpp-httplib answers TRACE and CONNECT with a bare
+  // 400 and PUT, PATCH, OPTIONS through its 404. The method is wrong, not the request: 405 with
+  // what the path allows (an API route's methods, GET and HEAD for files), 404 for unknown API
+  // paths.
+  for (const char* served : {"GET", "HEAD", "POST", "DELETE"})
+    if (req.method == served) return false;
+  std::string allowed = allowed_methods(req.path);
+  if (allowed.empty() && req.path.compare(0, 4, "/v1/") != 0) allowed = "GET, HEAD";
+  // A body it may carry is not read: what follows on the connection is not a request.
+  if (req.get_header_value("Content-Length", 0) != "" &&
+      req.get_header_value("Content-Length") != "0")
+    res.set_header("Connection", "close");
+  if (allowed.empty()) {
+    send_problem(req, res, problems::not_found("there is nothing at " + req.path));
+  } else {
+    res.set_header("Allow", allowed);
+    send_problem(req, res, problems::method_not_allowed(req.method, req.path, allowed));
+  }
+  return true;
 }
 
 int HttpApi::expect_continue(const Request& req, Response& res) {
@@ -247,6 +270,10 @@ void HttpApi::on_exception(const Request& req, Response& res, std::exception_ptr
   Problem p;
   try {
     std::rethrow_exception(error);
+  } catch (const StoreFullError& e) {
+    p = problems::store_full(507, e.what());
+    res.set_header("Retry-After", std::to_string(options_.retry_after_seconds));
+    log_.write("store_full", {{"path", req.path}, {"error", e.what()}});
   } catch (const StoreError& e) {
     p = problems::store_unavailable();
     res.set_header("Retry-After", std::to_string(options_.retry_after_seconds));
@@ -362,6 +389,14 @@ void HttpApi::post_job(const Request& req, Response& res) {
 }
 
 void HttpApi::list_jobs(const Request& req, Response& res) {
+  // A parameter given twice has no one meaning (cpp-httplib would take the first silently).
+  for (auto it = req.params.begin(); it != req.params.end();
+       it = req.params.upper_bound(it->first)) {
+    if (const auto n = req.params.count(it->first); n > 1)
+      return send_problem(req, res,
+                          problems::invalid_parameter(
+                              it->first, "given " + std::to_string(n) + " times; give it once"));
+  }
   JobListQuery query;
   if (req.has_param("state")) {
     const std::string state = req.get_param_value("state");
@@ -487,7 +522,18 @@ void HttpApi::get_contract(const Request& req, Response& res) {
 }
 
 void HttpApi::healthz(const Request& req, Response& res) {
-  store_.ping();  // throws StoreError → 503 through on_exception
+  // Throws StoreError when the store does not answer → 503 through on_exception. A full disk
+  // can also stop a new connection from opening (SQLite extends its shared-memory file).
+  StoreHealth health;
+  try {
+    health = store_.health();
+  } catch (const StoreFullError& e) {
+    health = {true, e.what()};
+  }
+  if (health.disk_full) {
+    res.set_header("Retry-After", std::to_string(options_.retry_after_seconds));
+    return send_problem(req, res, problems::store_full(503, health.detail));
+  }
   res.set_content(dump({{"status", "ok"}, {"workers", workers_.size()}, {"busy", workers_.busy()}}),
                   "application/json");
 }

@@ -68,6 +68,8 @@ class HttpApi {
 
   httplib::Server::HandlerResponse pre_route(const Request& req, Response& res);
   int expect_continue(const Request& req, Response& res);
+  /// Answers a method no route has (TRACE, CONNECT, PUT, …) with 405; false for the others.
+  bool method_not_served(const Request& req, Response& res);
   httplib::Server::HandlerResponse on_error(const Request& req, Response& res);
   void on_refused_head(const Request& req, const HeadRejection& rejection, Response& res);
   void on_exception(const Request& req, Response& res, std::exception_ptr error);

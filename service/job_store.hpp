@@ -23,6 +23,19 @@ class StoreError : public std::runtime_error {
   using std::runtime_error::runtime_error;
 };
 
+/// The store's disk is full (SQLite's SQLITE_FULL, PostgreSQL's SQLSTATE 53100): nothing can be
+/// written until space is freed, however often it is retried.
+class StoreFullError : public StoreError {
+ public:
+  using StoreError::StoreError;
+};
+
+/// What GET /healthz says about the store beyond answering at all.
+struct StoreHealth {
+  bool disk_full = false;
+  std::string detail;  ///< why, when disk_full: the store's message, or the free space left
+};
+
 /// A validated case to enqueue.
 struct NewJob {
   std::string name;
@@ -201,6 +214,13 @@ class JobStore {
 
   /// Cheap round trip to the storage, for health checks; throws StoreError on failure.
   virtual void ping() = 0;
+
+  /// ping(), and whether the store can write: a full disk does not stop reads, so it is told
+  /// by the last disk-full error of any call (and, for a file, the free space left).
+  virtual StoreHealth health() {
+    ping();
+    return {};
+  }
 };
 
 }  // namespace fosls::service

@@ -78,6 +78,9 @@ void PostgresConnection::fail(const std::string& what, const PGresult* result) c
   while (!message.empty() && (message.back() == '\n' || message.back() == ' ')) {
     message.pop_back();
   }
+  // SQLSTATE 53100: disk_full (the server could not extend a file).
+  const char* state = result ? PQresultErrorField(result, PG_DIAG_SQLSTATE) : nullptr;
+  if (state && std::string_view(state) == "53100") fail_disk_full(what + ": " + message);
   throw StoreError(what + ": " + message);
 }
 

@@ -80,8 +80,9 @@ SqlConnectionHandle PostgresJobStore::borrow() {
   ++open_;
   lock.unlock();
   try {
-    return SqlConnectionHandle(new PostgresConnection(conninfo_),
-                               [this](SqlConnection* p) { give_back(p); });
+    auto* opened = new PostgresConnection(conninfo_);
+    watch_disk(*opened);
+    return SqlConnectionHandle(opened, [this](SqlConnection* p) { give_back(p); });
   } catch (...) {
     std::lock_guard relock(mutex_);
     --open_;

@@ -140,6 +140,15 @@ Problem queue_full(std::size_t max_queue) {
       "the queue already holds " + std::to_string(max_queue) + " waiting jobs; retry later");
 }
 
+Problem store_full(int status, const std::string& store_message) {
+  Problem p = make(status, "store-full",
+                   "the job store's disk is full: jobs cannot be queued, started or finished "
+                   "until space is freed on it; retry later (the store said: " +
+                       store_message + ")");
+  p.title = "The job store's disk is full";
+  return p;
+}
+
 Problem store_unavailable() {
   return make(503, "store-unavailable", "the job store is busy or unavailable; retry later");
 }

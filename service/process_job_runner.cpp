@@ -26,6 +26,37 @@ JobRunOutcome failed(std::string error) {
   return o;
 }
 
+/// "its peak memory was 1.2 GiB of the 2 GiB a job may use".
+std::string peak_of(const ChildResult& r, const ProcessJobRunnerOptions& options) {
+  return "its peak memory was " + format_bytes(static_cast<double>(r.peak_rss_bytes)) + " of the " +
+         format_bytes(static_cast<double>(options.memory_bytes)) +
+         " a job may use (the service's --max-job-memory)";
+}
+
+/// Why a solve process died of a signal, from the signal and what the kernel counted, never
+/// guessed: the job's memory limit makes allocations fail (a message on stderr), so a SIGKILL
+/// that was not ours came from the system's out-of-memory killer (counted meanwhile) or from
+/// outside (a person, another program).
+JobRunOutcome signal_outcome(const ChildResult& r, const ProcessJobRunnerOptions& options,
+                             const std::string& memory) {
+  if (r.ran_out_of_memory()) return failed(memory);
+  if (r.killed_by_oom_killer())
+    return failed(
+        "the solve process was killed by the system's out-of-memory killer: the "
+        "machine ran out of memory (" +
+        peak_of(r, options) +
+        "); run fewer workers or a lower --max-job-memory so that all jobs together "
+        "fit the machine, or make this case smaller");
+  if (r.signal == SIGKILL)
+    return failed(
+        "the solve process was killed by signal 9 (SIGKILL) from outside the service, "
+        "not by one of its limits and not by the out-of-memory killer (" +
+        peak_of(r, options) + "); submit the case again");
+  return failed(
+      "the solver crashed (" + r.describe() + "; " + peak_of(r, options) + "); " +
+      (r.errors.empty() ? std::string("no message") : "its last message: " + last_line(r.errors)));
+}
+
 /// Every way the solve process can end, as the job's outcome.
 JobRunOutcome outcome_of(const ChildResult& r, const JobProcessReader& reader,
                          const ProcessJobRunnerOptions& options) {
@@ -49,15 +80,7 @@ JobRunOutcome outcome_of(const ChildResult& r, const JobProcessReader& reader,
     case ChildResult::End::kOutputTooLarge:
       return failed("the result is too large to be stored");
     case ChildResult::End::kSignaled:
-      if (r.ran_out_of_memory()) return failed(memory);
-      if (r.signal == SIGKILL)
-        return failed(
-            "the solve was killed (signal 9), most likely by the system running out "
-            "of memory; " +
-            memory.substr(memory.find("a job may use")));
-      return failed("the solver crashed (" + r.describe() + "); " +
-                    (r.errors.empty() ? std::string("no message")
-                                      : "its last message: " + last_line(r.errors)));
+      return signal_outcome(r, options, memory);
     case ChildResult::End::kExited:
       break;
   }

@@ -9,6 +9,11 @@
 
 namespace fosls::service {
 
+void SqlConnection::fail_disk_full(const std::string& message) const {
+  if (disk_observer_) disk_observer_(true, message);
+  throw StoreFullError(message);
+}
+
 SqlValue sql_optional(const std::optional<std::string>& value) {
   return value ? SqlValue(*value) : SqlValue();
 }

@@ -83,6 +83,24 @@ class SqlConnection {
 
   /// False once the connection is broken (the server went away); it is then discarded.
   virtual bool usable() const { return true; }
+
+  /// Told of every statement that failed because the disk is full (`full`, with the message,
+  /// before StoreFullError is thrown) and of every commit that went through (not `full`), so
+  /// that the store can tell whether it can write.
+  void observe_disk(std::function<void(bool full, const std::string& message)> observer) {
+    disk_observer_ = std::move(observer);
+  }
+  /// For SqlTransaction: a commit went through, so the disk took its writes.
+  void committed() const {
+    if (disk_observer_) disk_observer_(false, {});
+  }
+
+ protected:
+  /// Tells the observer, then throws StoreFullError.
+  [[noreturn]] void fail_disk_full(const std::string& message) const;
+
+ private:
+  std::function<void(bool full, const std::string& message)> disk_observer_;
 };
 
 /// begin_write ... commit; rolls back when destroyed uncommitted (for example when a
@@ -101,6 +119,7 @@ class SqlTransaction {
   void commit() {
     connection_.commit();
     open_ = false;
+    connection_.committed();
   }
 
  private:

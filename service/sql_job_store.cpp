@@ -1,6 +1,7 @@
 #include "sql_job_store.hpp"
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 
 #include "gzip.hpp"
@@ -409,5 +410,40 @@ std::int64_t SqlJobStore::count_not_converged() {
 }
 
 void SqlJobStore::ping() { connection()->query("SELECT 1"); }
+
+namespace {
+/// A disk-full error makes the store unhealthy until a commit goes through, or this long: every
+/// worker and request that meets the full disk renews it.
+constexpr std::int64_t kDiskFullMemoryMs = 30000;
+
+std::int64_t steady_ms() {
+  return std::chrono::duration_cast<std::chrono::milliseconds>(
+             std::chrono::steady_clock::now().time_since_epoch())
+      .count();
+}
+}  // namespace
+
+void SqlJobStore::watch_disk(SqlConnection& c) {
+  c.observe_disk([this](bool full, const std::string& message) {
+    std::lock_guard lock(disk_full_mutex_);
+    if (!full) {
+      disk_full_at_ms_ = 0;  // the disk took a commit: it has room again
+      return;
+    }
+    disk_full_message_ = message;
+    disk_full_at_ms_ = steady_ms();
+  });
+}
+
+StoreHealth SqlJobStore::health() {
+  ping();
+  StoreHealth health;
+  std::lock_guard lock(disk_full_mutex_);
+  if (disk_full_at_ms_ != 0 && steady_ms() - disk_full_at_ms_ < kDiskFullMemoryMs) {
+    health.disk_full = true;
+    health.detail = disk_full_message_;
+  }
+  return health;
+}
 
 }  // namespace fosls::service

@@ -4,6 +4,7 @@
 // schema steps, and in the hooks below.
 
 #include <functional>
+#include <mutex>
 #include <string>
 
 #include "job_store.hpp"
@@ -38,6 +39,7 @@ class SqlJobStore : public JobStore {
   std::map<JobState, std::int64_t> count_by_state() override;
   std::int64_t count_not_converged() override;
   void ping() override;
+  StoreHealth health() override;
 
  protected:
   /// `acquire` lends a connection to one call.
@@ -59,11 +61,20 @@ class SqlJobStore : public JobStore {
   /// not on its own.
   virtual void after_delete(SqlConnection& c) {}
 
+  /// Gives a new connection's disk-full errors and commits to this store's health (call once
+  /// per connection the store makes).
+  void watch_disk(SqlConnection& c);
+
  private:
   std::optional<Job> find_on(SqlConnection& c, std::int64_t id);
   RecoveryReport recover(int max_attempts, bool only_expired);
 
   std::function<SqlConnectionHandle()> acquire_;
+  /// The last disk-full error of any call and when it happened (steady clock, ms; 0 once a
+  /// commit went through after it).
+  mutable std::mutex disk_full_mutex_;
+  std::string disk_full_message_;
+  std::int64_t disk_full_at_ms_ = 0;
 };
 
 }  // namespace fosls::service

@@ -34,6 +34,7 @@ void SqliteConnection::exec(const std::string& sql) {
   if (rc != SQLITE_OK) {
     std::string text = message ? message : sqlite3_errstr(rc);
     sqlite3_free(message);
+    if ((rc & 0xff) == SQLITE_FULL) fail_disk_full(sql + ": " + text);
     throw StoreError(sql + ": " + text);
   }
 }
@@ -131,6 +132,7 @@ void SqliteConnection::fail(int code, std::string_view what) const {
   std::string message = std::string(what) + ": ";
   message += db_ ? sqlite3_errmsg(db_.get()) : sqlite3_errstr(code);
   message += " (SQLite code " + std::to_string(code) + ")";
+  if ((code & 0xff) == SQLITE_FULL) fail_disk_full(message);
   throw StoreError(message);
 }
 

@@ -1,5 +1,7 @@
 #include "sqlite_job_store.hpp"
 
+#include <filesystem>
+
 #include "schema_migrations.hpp"
 
 namespace fosls::service {
@@ -62,6 +64,22 @@ CREATE INDEX jobs_not_converged ON jobs(id) WHERE converged = 0;
 )sql"},
 };
 
+/// SQLite opens a 0-byte file as a new, empty database: a store truncated by accident (a full
+/// disk, a copy gone wrong) would start over silently, and hand out job ids its clients still
+/// hold for other jobs. A file that never existed is created; an emptied one is refused.
+void refuse_emptied_file(const std::string& path) {
+  namespace fs = std::filesystem;
+  std::error_code ec;
+  const auto bytes = fs::file_size(path, ec);
+  if (ec || bytes != 0) return;
+  const auto wal = fs::file_size(path + "-wal", ec);
+  if (!ec && wal > 0) return;  // SQLite recovers the database from its write-ahead log
+  throw StoreError("the database '" + path +
+                   "' exists but is empty (0 bytes): it was truncated or never written, and "
+                   "starting on it would lose its jobs and give their ids to new ones; move it "
+                   "away (or delete it) to start a new store, or restore it from a backup");
+}
+
 }  // namespace
 
 SqliteJobStore::SqliteJobStore(std::string path, int busy_timeout_ms)
@@ -71,13 +89,17 @@ SqliteJobStore::SqliteJobStore(std::string path, int busy_timeout_ms)
       }),
       path_(std::move(path)),
       busy_timeout_ms_(busy_timeout_ms) {
+  refuse_emptied_file(path_);
   migrate();
 }
 
 SqliteConnection& SqliteJobStore::thread_connection() {
   std::lock_guard lock(connections_mutex_);
   auto& slot = connections_[std::this_thread::get_id()];
-  if (!slot) slot = std::make_unique<SqliteConnection>(path_, busy_timeout_ms_);
+  if (!slot) {
+    slot = std::make_unique<SqliteConnection>(path_, busy_timeout_ms_);
+    watch_disk(*slot);
+  }
   return *slot;
 }
 

@@ -11,6 +11,7 @@
 
 #include <cerrno>
 #include <cmath>
+#include <cstdio>
 #include <cstdlib>
 #include <cstring>
 #include <filesystem>
@@ -142,6 +143,18 @@ void apply_limits(pid_t pid, const ChildLimits& limits) {
   }
 }
 
+/// The kernel's count of out-of-memory kills since boot (/proc/vmstat); -1 if unknown.
+long long oom_kill_count() {
+  std::FILE* f = std::fopen("/proc/vmstat", "r");
+  if (!f) return -1;
+  char name[64];
+  long long value = 0, found = -1;
+  while (std::fscanf(f, "%63s %lld", name, &value) == 2)
+    if (std::strcmp(name, "oom_kill") == 0) found = value;
+  std::fclose(f);
+  return found;
+}
+
 void kill_group(pid_t pid) {
   ::kill(-pid, SIGKILL);  // the child and anything it started in its group
   ::kill(pid, SIGKILL);
@@ -163,6 +176,10 @@ bool drain(int fd, const std::function<void(const char*, std::size_t)>& sink) {
 }
 
 }  // namespace
+
+bool ChildResult::killed_by_oom_killer() const {
+  return end == End::kSignaled && signal == SIGKILL && oom_kill_meanwhile;
+}
 
 bool ChildResult::ran_out_of_memory() const {
   for (const char* sign : {"bad_alloc", "out of memory", "Out of memory", "Cannot allocate memory"})
@@ -214,6 +231,8 @@ class RunningChild {
   std::optional<ChildResult::End> killed_;
   std::size_t written_ = 0, output_bytes_ = 0;
   int status_ = 0;
+  rusage usage_{};
+  long long oom_kills_at_start_ = -1;
   ChildResult result_;
 };
 
@@ -227,6 +246,7 @@ RunningChild::RunningChild(const ChildOptions& options) : options_(options) {
   std::vector<char*> argv_p = pointers(argv), env_p = pointers(env);
 
   started_ = Clock::now();
+  oom_kills_at_start_ = oom_kill_count();
   const int rc = ::posix_spawn(&pid_, argv[0].c_str(), actions.get(), attributes.get(),
                                argv_p.data(), env_p.data());
   if (rc != 0) throw std::runtime_error("cannot start " + argv[0] + ": " + std::strerror(rc));
@@ -300,7 +320,7 @@ void RunningChild::write_input() {
 }
 
 bool RunningChild::try_reap() {
-  const pid_t w = ::waitpid(pid_, &status_, WNOHANG);
+  const pid_t w = ::wait4(pid_, &status_, WNOHANG, &usage_);
   if (w == pid_ || (w < 0 && errno != EINTR)) return true;
   std::this_thread::sleep_for(std::chrono::milliseconds(2));
   return false;
@@ -310,6 +330,9 @@ ChildResult RunningChild::finish() {
   result_.seconds = std::chrono::duration<double>(Clock::now() - started_).count();
   if (result_.errors.size() > kErrorTail)
     result_.errors.erase(0, result_.errors.size() - kErrorTail);
+  result_.peak_rss_bytes = static_cast<std::size_t>(usage_.ru_maxrss) * 1024;  // KiB on Linux
+  const long long oom_kills = oom_kill_count();
+  result_.oom_kill_meanwhile = oom_kills_at_start_ >= 0 && oom_kills > oom_kills_at_start_;
   if (killed_) {
     result_.end = *killed_;
   } else if (WIFEXITED(status_)) {

@@ -72,8 +72,15 @@ struct ChildResult {
   std::string output;  ///< stdout (empty when on_output was given)
   std::string errors;  ///< the last 16 KiB of stderr
   double seconds = 0;  ///< wall-clock time from start to exit
+  /// The child's peak resident memory (its own, from wait4; 0 if unknown).
+  std::size_t peak_rss_bytes = 0;
+  /// Whether the kernel's out-of-memory killer killed a process while the child ran (the
+  /// oom_kill count of /proc/vmstat grew): with an unexpected SIGKILL, most likely the child.
+  bool oom_kill_meanwhile = false;
   /// Whether stderr shows that an allocation failed (std::bad_alloc, "out of memory").
   bool ran_out_of_memory() const;
+  /// Killed by a SIGKILL that was not ours while the out-of-memory killer was at work.
+  bool killed_by_oom_killer() const;
   /// "exit code 3", "signal 6 (Aborted)", "timed out", ... for messages.
   std::string describe() const;
 };

@@ -7,10 +7,13 @@
 #include <gtest/gtest.h>
 #include <httplib.h>
 #include <poll.h>
+#include <sys/stat.h>
 
 #include <cerrno>
 #include <cstdio>
+#include <filesystem>
 #include <fstream>
+#include <memory>
 #include <nlohmann/json.hpp>
 #include <string>
 #include <thread>
@@ -193,6 +196,130 @@ TEST(HostileHttp, KeepAliveAndPipelinedRequestsStillWork) {
   auto after = cli.Get("/v1/jobs");
   ASSERT_TRUE(after);
   EXPECT_EQ(json::parse(after->body)["jobs"].size(), 1u);
+}
+
+TEST(HostileHttp, TraceConnectAndOtherUnservedMethodsAre405) {
+  Service svc(1);
+  struct Probe {
+    const char* request;
+    const char* allow;
+  };
+  for (const Probe& p : {
+           Probe{"TRACE / HTTP/1.1\r\nHost: x\r\nConnection: close\r\n\r\n", "GET, HEAD"},
+           Probe{"TRACE /v1/jobs HTTP/1.1\r\nHost: x\r\nConnection: close\r\n\r\n", "GET, POST"},
+           Probe{"CONNECT example.com:443 HTTP/1.1\r\nHost: example.com:443\r\n\r\n", "GET, HEAD"},
+           Probe{"PUT /v1/jobs/1 HTTP/1.1\r\nHost: x\r\nContent-Length: 2\r\n\r\n{}",
+                 "GET, DELETE"},
+       }) {
+    const auto r = raw_http(svc.server().port(), p.request);
+    EXPECT_EQ(r.status, 405) << p.request << "\n" << r.text;
+    EXPECT_NE(r.text.find(std::string("Allow: ") + p.allow), std::string::npos) << r.text;
+    EXPECT_NE(r.text.find("application/problem+json"), std::string::npos) << r.text;
+  }
+}
+
+TEST(HostileHttp, ARepeatedQueryParameterIs400NamingIt) {
+  Service svc(1);
+  auto res = svc.client().Get("/v1/jobs?state=queued&page_size=5&state=failed");
+  testing::expect_problem(res, 400);
+  const json p = json::parse(res->body);
+  EXPECT_EQ(p["type"], "urn:fosls:problem:invalid-parameter");
+  EXPECT_EQ(p["errors"][0]["parameter"], "state") << res->body;
+  EXPECT_NE(p["detail"].get<std::string>().find("given 2 times"), std::string::npos);
+}
+
+TEST(HostileHttp, AnEmptiedDatabaseFileIsRefusedNotStartedOver) {
+  testing::TempDir dir;
+  const std::string db = (dir.path() / "jobs.db").string();
+  std::ofstream(db).close();  // 0 bytes: a truncated store
+  try {
+    testing::ServerProcess server(FOSLS_SERVE_PATH, {"--db", db, "--workers", "0"},
+                                  (dir.path() / "server.log").string());
+    ADD_FAILURE() << "the server started on an empty database file";
+  } catch (const std::runtime_error& e) {
+    EXPECT_NE(std::string(e.what()).find("exists but is empty (0 bytes)"), std::string::npos)
+        << e.what();
+  }
+  EXPECT_EQ(std::filesystem::file_size(db), 0u) << "the file was written to";
+}
+
+/// fosls-serve with its database on a tmpfs of 4 MiB in a mount namespace of its own (unshare
+/// -rm: as root, or wherever user namespaces are allowed); the tmpfs goes with the server.
+class ServerOnSmallDisk {
+ public:
+  ServerOnSmallDisk() {
+    std::filesystem::create_directories(disk_);
+    ::setenv("FOSLS_TEST_SMALL_DISK", disk_.c_str(), 1);
+    const std::string mount = "mount -t tmpfs -o size=4m tmpfs \"$FOSLS_TEST_SMALL_DISK\"";
+    available_ = std::system(("unshare -rm sh -c '" + mount + "' 2>/dev/null").c_str()) == 0;
+    if (!available_) return;
+    std::ofstream(script_) << "#!/bin/sh\nexec unshare -rm sh -c '" << mount
+                           << " || exit 97; exec \"$0\" \"$@\"' " << FOSLS_SERVE_PATH
+                           << " \"$@\"\n";
+    std::filesystem::permissions(script_, std::filesystem::perms::owner_all);
+    server_ = std::make_unique<testing::ServerProcess>(
+        script_.string(),
+        std::vector<std::string>{"--db", (disk_ / "jobs.db").string(), "--workers", "0"},
+        (dir_.path() / "server.log").string());
+  }
+  bool available() const { return available_; }
+  testing::ServerProcess& server() { return *server_; }
+  /// The tmpfs as the server sees it (through its root, in its mount namespace).
+  std::filesystem::path disk() const {
+    return "/proc/" + std::to_string(server_->pid()) + "/root" + disk_.string();
+  }
+
+ private:
+  testing::TempDir dir_;
+  std::filesystem::path disk_ = dir_.path() / "disk", script_ = dir_.path() / "serve.sh";
+  bool available_ = false;
+  std::unique_ptr<testing::ServerProcess> server_;
+};
+
+TEST(HostileHttp, AFullDiskIsSaidToBeFullByPostAndHealth) {
+  ServerOnSmallDisk small;
+  if (!small.available()) GTEST_SKIP() << "no tmpfs can be mounted here (unshare -rm refused)";
+  httplib::Client cli("127.0.0.1", small.server().port());
+  const std::string body = testing::small_case().dump();
+  auto first = cli.Post("/v1/jobs", body, "application/json");
+  ASSERT_TRUE(first);
+  EXPECT_EQ(first->status, 202) << first->body;
+  // Fill the disk from outside, then submit until the store meets it (its WAL may have room
+  // for a few).
+  const auto filler = small.disk() / "filler";
+  {
+    std::ofstream out(filler, std::ios::binary);
+    const std::string block(64 * 1024, '\0');
+    while (out.write(block.data(), block.size())) {
+    }
+  }
+  int status = 0;
+  std::string answer;
+  for (int i = 0; i < 200 && status != 507; ++i) {
+    auto res = cli.Post("/v1/jobs", body, "application/json");
+    ASSERT_TRUE(res) << "no answer";
+    status = res->status;
+    answer = res->body;
+    if (status != 202) break;
+  }
+  EXPECT_EQ(status, 507) << answer;
+  const json problem = json::parse(answer, nullptr, false);
+  EXPECT_EQ(problem["type"], "urn:fosls:problem:store-full") << answer;
+  EXPECT_NE(answer.find("disk is full"), std::string::npos) << answer;
+  auto health = cli.Get("/healthz");
+  ASSERT_TRUE(health);
+  EXPECT_EQ(health->status, 503) << health->body;
+  EXPECT_NE(health->body.find("store-full"), std::string::npos) << health->body;
+  std::printf("full disk: POST %d, /healthz %d: %s\n", status, health->status,
+              json::parse(health->body)["detail"].get<std::string>().c_str());
+  // Space freed: the next submit goes through, and health is ok again.
+  std::filesystem::remove(filler);
+  auto again = cli.Post("/v1/jobs", body, "application/json");
+  ASSERT_TRUE(again);
+  EXPECT_EQ(again->status, 202) << again->body;
+  auto healthy = cli.Get("/healthz");
+  ASSERT_TRUE(healthy);
+  EXPECT_EQ(healthy->status, 200) << healthy->body;
 }
 
 }  // namespace

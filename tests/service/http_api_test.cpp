@@ -15,6 +15,7 @@
 #include <thread>
 
 #include "api_routes.hpp"
+#include "disk_full_store.hpp"
 #include "fake_job_runner.hpp"
 #include "http_client.hpp"
 #include "openapi.hpp"
@@ -543,6 +544,41 @@ TEST(HttpApi, BodylessRequestsOnOddPathsAndGetOnAPostRoute) {
         R"(fosls_http_requests_total{method="GET",route="/v1/jobs/{id}/cancel",status="405"} 1)",
         R"(fosls_http_requests_total{method="POST",route="unknown",status="404"} 3)"})
     EXPECT_NE(metrics.find(line), std::string::npos) << line << "\n" << metrics;
+}
+
+TEST(HttpApi, AFullDiskIs507NamingTheDiskAndHealthSaysSo) {
+  TempDir dir;
+  std::ofstream log_file(dir.file("service.log"));
+  EventLog log(log_file);
+  Metrics metrics;
+  SqliteJobStore reads(dir.file("jobs.db"));
+  testing::DiskFullStore store(reads);
+  WorkerPoolOptions no_workers;
+  no_workers.workers = 0;
+  WorkerPool pool(store, fake_job_runner, log, metrics, no_workers);
+  HttpApi api(store, pool, fake_validator, metrics, log, {});
+  BoundedHttpServer server;
+  api.install(server);
+  const int port = server.bind_to_any_port("127.0.0.1");
+  std::thread thread([&] { server.listen_after_bind(); });
+  while (!server.is_running()) std::this_thread::sleep_for(std::chrono::milliseconds(1));
+  httplib::Client cli("127.0.0.1", port);
+
+  auto posted = post_json(cli, "/v1/jobs", R"({"n":1})");
+  expect_problem(posted, 507, "store-full");
+  EXPECT_NE(json::parse(posted->body)["detail"].get<std::string>().find("disk is full"),
+            std::string::npos)
+      << posted->body;
+  EXPECT_EQ(posted->get_header_value("Retry-After"), "5");
+  auto health = cli.Get("/healthz");
+  expect_problem(health, 503, "store-full");
+  EXPECT_NE(health->body.find("database or disk is full"), std::string::npos) << health->body;
+  // Reads still work.
+  auto list = cli.Get("/v1/jobs");
+  ASSERT_TRUE(list);
+  EXPECT_EQ(list->status, 200);
+  server.stop();
+  thread.join();
 }
 
 }  // namespace

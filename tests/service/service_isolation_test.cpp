@@ -9,6 +9,7 @@
 #include <gtest/gtest.h>
 #include <httplib.h>
 #include <netinet/in.h>
+#include <signal.h>
 #include <sys/socket.h>
 #include <sys/stat.h>
 #include <unistd.h>
@@ -18,6 +19,7 @@
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
+#include <filesystem>
 #include <fstream>
 #include <nlohmann/json.hpp>
 #include <thread>
@@ -239,6 +241,39 @@ TEST(ServiceIsolation, ASolveOverItsMemoryLimitFailsAloneAndTheNextJobSucceeds) 
   svc.wait_state(svc.submit(testing::small_case(2)), "succeeded");
   // Failed, not re-queued: it ran once.
   EXPECT_EQ(svc.job(id)["attempts"], 1);
+}
+
+/// The pid of the server's fosls-solve-job child, or 0 while it has none. (Its name in
+/// /proc/PID/stat is "exe": it restarts itself through /proc/self/exe.)
+pid_t solve_process_of(pid_t server) {
+  for (const auto& entry : std::filesystem::directory_iterator("/proc")) {
+    std::ifstream stat(entry.path() / "stat");
+    std::string pid, comm, state;
+    pid_t parent = 0;
+    if (!(stat >> pid >> comm >> state >> parent) || parent != server) continue;
+    std::error_code ec;
+    const auto exe = std::filesystem::read_symlink(entry.path() / "exe", ec);
+    if (!ec && exe.filename() == "fosls-solve-job") return std::stoi(pid);
+  }
+  return 0;
+}
+
+TEST(ServiceIsolation, AKilledSolveIsReportedFromItsSignalNotGuessed) {
+  Service svc(1);
+  const auto id = svc.submit(testing::endless_case());
+  svc.wait_for(id,
+               [](const json& j) { return j["state"] == "running" && !j["progress"].is_null(); });
+  const pid_t solve = solve_process_of(svc.server().pid());
+  ASSERT_GT(solve, 0) << "no solve process under the server";
+  ::kill(solve, SIGKILL);
+  const json job = svc.wait_state(id, "failed");
+  const std::string error = job["error"];
+  std::printf("kill -9 of the solve process: %s\n", error.c_str());
+  EXPECT_NE(error.find("killed by signal 9 (SIGKILL) from outside the service"), std::string::npos)
+      << error;
+  EXPECT_NE(error.find("its peak memory was"), std::string::npos) << error;
+  EXPECT_EQ(error.find("most likely"), std::string::npos) << error;
+  expect_healthy(svc);
 }
 
 TEST(ServiceIsolation, SubmissionsNeverWaitForAnotherJobsMeshing) {

@@ -8,6 +8,7 @@
 #include <sqlite3.h>
 
 #include <filesystem>
+#include <fstream>
 #include <random>
 
 #include "store_test_support.hpp"
@@ -205,6 +206,53 @@ TEST(SqliteJobStore, DeletingJobsReturnsTheirSpace) {
   // After a checkpoint the file itself is that small.
   sql_exec(path, "PRAGMA wal_checkpoint(TRUNCATE)");
   EXPECT_LT(std::filesystem::file_size(path), static_cast<std::uintmax_t>(1 << 20));
+}
+
+}  // namespace
+}  // namespace fosls::service
+
+namespace fosls::service {
+namespace {
+
+TEST(SqliteJobStore, AnEmptiedFileIsRefusedAndANewOneCreated) {
+  TempDir dir;
+  const std::string path = dir.file("jobs.db");
+  std::ofstream(path).close();
+  EXPECT_THROW(SqliteJobStore{path}, StoreError);
+  std::filesystem::remove(path);
+  SqliteJobStore created(path);  // a file that never existed is created
+  EXPECT_EQ(created.submit(make_job("1"), kUnlimited).job->id, 1);
+}
+
+TEST(SqliteConnection, AFullDiskIsStoreFullErrorAndTheObserverHearsOfIt) {
+  // SQLite answers SQLITE_FULL when a database reaches max_page_count, as when the disk has no
+  // room: the same error path, without filling a disk.
+  TempDir dir;
+  SqliteConnection c(dir.file("full.db"), 5000);
+  std::vector<std::pair<bool, std::string>> heard;
+  c.observe_disk([&](bool full, const std::string& message) { heard.emplace_back(full, message); });
+  c.exec("CREATE TABLE t (x TEXT)");
+  c.exec("PRAGMA max_page_count = 40");
+  bool full = false;
+  for (int i = 0; i < 200 && !full; ++i) {
+    try {
+      c.query("INSERT INTO t (x) VALUES (?1)", {random_text(2000)});
+    } catch (const StoreFullError& e) {
+      full = true;
+      EXPECT_NE(std::string(e.what()).find("full"), std::string::npos) << e.what();
+    }
+  }
+  ASSERT_TRUE(full) << "the page limit was never reached";
+  ASSERT_FALSE(heard.empty());
+  EXPECT_TRUE(heard.back().first);
+  // A commit that goes through tells the observer the disk took it.
+  c.exec("DELETE FROM t");
+  {
+    SqlTransaction tx(c);
+    c.query("INSERT INTO t (x) VALUES ('small')");
+    tx.commit();
+  }
+  EXPECT_FALSE(heard.back().first);
 }
 
 }  // namespace
