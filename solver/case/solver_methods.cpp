@@ -41,13 +41,7 @@ const std::vector<MethodInfo>& method_table() {
   return table;
 }
 
-const std::vector<SmootherInfo>& smoother_table() {
-  static const std::vector<SmootherInfo> table = {
-      {SmootherType::kPatch, "patch", "vertex-patch block smoother (robust in H(div))"},
-      {SmootherType::kPoint, "point", "pointwise projected Gauss-Seidel"},
-  };
-  return table;
-}
+std::span<const SmootherInfo> smoother_table() { return kSmootherTable; }
 
 const std::vector<CoarseObstacleInfo>& coarse_obstacle_table() {
   static const std::vector<CoarseObstacleInfo> table = {
@@ -97,9 +91,6 @@ std::span<const CycleInfo> cycles() { return cycle_table(); }
 
 const MethodInfo& method_info(SolverMethod method) {
   return entry_of(method_table(), method, &MethodInfo::method);
-}
-const SmootherInfo& smoother_info(SmootherType type) {
-  return entry_of(smoother_table(), type, &SmootherInfo::type);
 }
 const CoarseObstacleInfo& coarse_obstacle_info(CoarseProjection projection) {
   return entry_of(coarse_obstacle_table(), projection, &CoarseObstacleInfo::projection);

@@ -1,5 +1,6 @@
 #pragma once
-// The solver methods, smoothers and coarse obstacles a case can name: one table each, used by
+// The solver methods, smoothers and coarse obstacles a case can name: one table each (the
+// smoothers' is solvers/smoother_table.hpp, with their constructors), used by
 // the case reader (allowed values, defaults), the runner (what to build), the CLI (help,
 // bench), the result (names) and the docs (generated rows of docs/case-format.md).
 
@@ -25,12 +26,6 @@ struct MethodInfo {
   std::vector<SolverOption> options;  ///< the options it uses, in the order of the case
 };
 
-struct SmootherInfo {
-  SmootherType type;
-  const char* name;
-  const char* summary;
-};
-
 struct CoarseObstacleInfo {
   CoarseProjection projection;
   const char* name;
@@ -49,7 +44,6 @@ std::span<const CoarseObstacleInfo> coarse_obstacles();
 std::span<const CycleInfo> cycles();
 
 const MethodInfo& method_info(SolverMethod method);
-const SmootherInfo& smoother_info(SmootherType type);
 const CoarseObstacleInfo& coarse_obstacle_info(CoarseProjection projection);
 const CycleInfo& cycle_info(CycleShape shape);
 

@@ -40,6 +40,18 @@ void symmetric_multiply(const SparseMatrix& A, const Vector& x, Vector& y) {
   }
 }
 
+void clip(Vector& x, const Vector& lo, const Vector& hi) {
+  for (int i = 0; i < x.size(); ++i) x[i] = std::clamp(x[i], lo[i], hi[i]);
+}
+
+void step_within_bounds(Vector& x, double t, Vector& s, const Vector& lo, const Vector& hi) {
+  for (int i = 0; i < x.size(); ++i) {
+    const double updated = std::clamp(x[i] + t * s[i], lo[i], hi[i]);
+    s[i] = updated - x[i];
+    x[i] = updated;
+  }
+}
+
 double BoxQp::energy(const Vector& x) const {
   Vector ax;
   symmetric_multiply(A, x, ax);

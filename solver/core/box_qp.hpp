@@ -4,6 +4,7 @@
 
 #include <Eigen/Core>
 #include <Eigen/Sparse>
+#include <algorithm>
 #include <limits>
 #include <utility>
 #include <vector>
@@ -23,6 +24,34 @@ inline bool is_bounded_below(double lower) { return lower > -0.5 * kNoBound; }
 /// truncated set of the multilevel cycle.
 inline bool is_at_bound(double x, double lower, double upper) {
   return (is_bounded_above(upper) && x >= upper) || (is_bounded_below(lower) && x <= lower);
+}
+
+/// x_i ← clamp(x_i, lo_i, hi_i) for every i.
+void clip(Vector& x, const Vector& lo, const Vector& hi);
+
+/// x_i ← clamp(x_i + t s_i, lo_i, hi_i) for every i, and s_i ← the change of x_i this made (what
+/// the residual update needs; s is overwritten so that no second vector of the size is formed).
+void step_within_bounds(Vector& x, double t, Vector& s, const Vector& lo, const Vector& hi);
+
+/// The fraction t ≤ 1 of the step from x to x + d that keeps one DOF within [lo, hi], where
+/// `moved` is x + d as the caller formed it (the test is on it, so that a caller that holds the
+/// target, not the step, tests the target itself): 1 when `moved` is within the bounds.
+inline double step_to_bound(double x, double d, double moved, double lo, double hi) {
+  if (d > 0 && moved > hi) return (hi - x) / d;
+  if (d < 0 && moved < lo) return (lo - x) / d;
+  return 1.0;
+}
+
+/// The largest t ∈ [0, 1] with lo ≤ x + t d ≤ hi (by step_to_bound per DOF). `d` may be any
+/// vector expression with d[i]: it is read once per DOF and not formed.
+template <class Direction>
+double max_feasible_step(const Vector& x, const Direction& d, const Vector& lo, const Vector& hi) {
+  double t = 1.0;
+  for (int i = 0; i < x.size(); ++i) {
+    const double di = d[i];
+    t = std::min(t, step_to_bound(x[i], di, x[i] + di, lo[i], hi[i]));
+  }
+  return std::max(t, 0.0);
 }
 
 /// Bound-constrained quadratic program. A is symmetric positive definite and stored in full.
@@ -45,6 +74,8 @@ struct BoxQp {
   double rounding_level(const Vector& x) const;
   /// Whether lower ≤ x ≤ upper holds exactly.
   bool feasible(const Vector& x) const;
+  /// x clipped to [lower, upper].
+  void clip(Vector& x) const { fosls::clip(x, lower, upper); }
   /// The active set of x: 1 for the bounded DOFs at their bound (is_at_bound), else 0.
   std::vector<char> active_set(const Vector& x) const;
 };

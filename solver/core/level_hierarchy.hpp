@@ -24,7 +24,7 @@ struct ContactLink {
   /// the other half, divergence-free inside E's coarse triangle (it crosses the fine triangles
   /// between the two halves): first the other half's S_n, then the interior σ DOFs on the way.
   /// When only half k is truncated, the coarse S_n function moves half k's flux this way
-  /// (MultilevelCycle::truncate_level), so that it keeps a bounded divergence.
+  /// (TruncatedHierarchy::truncate_level), so that it keeps a bounded divergence.
   std::array<std::vector<std::pair<int, double>>, 2> flux_moves;
 };
 

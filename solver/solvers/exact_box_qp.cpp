@@ -40,14 +40,8 @@ bool primal_active_set(int n, const Vector& lo, const Vector& hi, Vector& delta,
     int blocking = -1;
     for (int i = 0; i < n; ++i) {
       if (state[i] != 0) continue;
-      const double d = y[i] - delta[i];
-      if (d > 0 && y[i] > hi[i]) {
-        double a = (hi[i] - delta[i]) / d;
-        if (a < alpha) alpha = a, blocking = i;
-      } else if (d < 0 && y[i] < lo[i]) {
-        double a = (lo[i] - delta[i]) / d;
-        if (a < alpha) alpha = a, blocking = i;
-      }
+      const double a = step_to_bound(delta[i], y[i] - delta[i], y[i], lo[i], hi[i]);
+      if (a < alpha) alpha = a, blocking = i;
     }
     if (blocking >= 0) {
       alpha = std::max(alpha, 0.0);
@@ -207,7 +201,7 @@ bool SparseBoxQpSolver::solve_primal_dual(const Vector& r, const Vector& lo, con
     // keeps it there says its multiplier has the right sign, strictly; a free DOF is within its
     // bounds up to μ_i / a_ii, which is rounding. Clip that rounding, and check in floating
     // point what the cycle relies on before trusting the result.
-    for (int i = 0; i < n; ++i) delta[i] = std::clamp(delta[i], lo[i], hi[i]);
+    clip(delta, lo, hi);
     const double energy = 0.5 * delta.dot(A_ * delta) - r.dot(delta);
     return energy <= 0.0;
   }

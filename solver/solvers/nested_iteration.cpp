@@ -81,8 +81,7 @@ bool nested_initial_guess(const BoxQp& qp, const LevelHierarchy& h, const Solver
     for (int k = 0; k < j; ++k) lent.lend(chain.matrices[k], sub_chain->matrices[k]);
     if (j > 0) {
       xc = h.levels[j].prolongation * xc;
-      for (int i = 0; i < xc.size(); ++i)
-        xc[i] = std::clamp(xc[i], problems[j].lower[i], problems[j].upper[i]);
+      problems[j].clip(xc);
     }
     // The coarsest level is solved by pdas on CHOLMOD: a handful of factorisations, where the
     // cycle's exact coarse solver met the bounds one at a time from x = 0 (docs/performance.md,
@@ -92,7 +91,7 @@ bool nested_initial_guess(const BoxQp& qp, const LevelHierarchy& h, const Solver
     report.nested_iterations.push_back(r.iterations);
   }
   x = h.levels[top].prolongation * xc;
-  for (int i = 0; i < x.size(); ++i) x[i] = std::clamp(x[i], qp.lower[i], qp.upper[i]);
+  qp.clip(x);
   return true;
 }
 

@@ -1,12 +1,11 @@
 #pragma once
-// Projected Gauss–Seidel on the finest level alone (pointwise or by vertex patches): the
-// single-level comparison method.
+// Projected Gauss–Seidel on the finest level alone, by the chosen smoother (pointwise or by
+// vertex patches): the single-level comparison method.
 
 #include <memory>
 
 #include "core/level_hierarchy.hpp"
 #include "solvers/iteration_step.hpp"
-#include "solvers/smoothers.hpp"
 
 namespace fosls {
 
@@ -18,8 +17,7 @@ class PgsStep : public IterationStep {
 
  private:
   const BoxQp& qp_;
-  std::unique_ptr<PatchSmoother> patch_;
-  std::unique_ptr<PointSmoother> point_;
+  std::unique_ptr<Smoother> smoother_;
 };
 
 }  // namespace fosls

@@ -1,6 +1,5 @@
 #include "solvers/solve_loop.hpp"
 
-#include <Eigen/CholmodSupport>
 #include <algorithm>
 #include <chrono>
 #include <cmath>
@@ -22,15 +21,6 @@
 #include "solvers/tnnmg_step.hpp"
 
 namespace fosls {
-
-bool chain_is_definite(const SparseMatrix& A, const GalerkinChain& chain, int max_dofs) {
-  const SparseMatrix* checked = chain.matrices.empty() ? &A : &chain.matrices[0];
-  for (const SparseMatrix& m : chain.matrices)
-    if (m.rows() <= max_dofs) checked = &m;
-  if (A.rows() <= max_dofs) checked = &A;
-  Eigen::CholmodSupernodalLLT<SparseMatrix> llt(*checked);
-  return llt.info() == Eigen::Success;
-}
 
 namespace {
 
@@ -189,9 +179,8 @@ class IterationLoop {
 
 /// x within the bounds (zero when it has the wrong size).
 void start_feasible(const BoxQp& qp, Vector& x) {
-  const int n = qp.size();
-  if (x.size() != n) x = Vector::Zero(n);
-  for (int i = 0; i < n; ++i) x[i] = std::clamp(x[i], qp.lower[i], qp.upper[i]);
+  if (x.size() != qp.size()) x = Vector::Zero(qp.size());
+  qp.clip(x);
 }
 
 /// The error estimates, the asymptotic rate, the cycle's statistics and the message of a

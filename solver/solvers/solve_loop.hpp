@@ -92,15 +92,6 @@ struct SolverReport {
   std::string message;
 };
 
-/// Positive definiteness, checked by CHOLMOD on the finest level of the Galerkin chain with at
-/// most `max_dofs` DOFs: PᵀAP indefinite implies A indefinite, and the measured c3 limit barely
-/// moves with h (0.28, 0.26, 0.25 at 3, 4, 5 levels of the square), so a level of ≤ 5·10⁴ DOFs
-/// decides at a small fraction of the cost of factorising the finest matrix; weights within
-/// ≈ 10 % of the limit may pass. mmg and tnnmg run this check first (in an adaptive case on
-/// its first step: SolverOptions::check_definiteness); pdas learns it from its own
-/// factorisation.
-bool chain_is_definite(const SparseMatrix& A, const GalerkinChain& chain, int max_dofs = 50000);
-
 /// The solve loop: minimises the bound-constrained QP from x (projected onto the bounds
 /// first) by steps of the chosen method. The hierarchy is needed by mmg
 /// and tnnmg only. Non-convergence is reported, not thrown; a matrix that is not positive

@@ -28,18 +28,15 @@ double SubspaceAcceleration::accelerate(const Vector& x_old, const Vector& r_old
   // and compute the move and each DOF's limit the same way, so that the DOFs that set t are
   // recognised below and put exactly on their bound (x + t·m may miss it by an ulp, and a DOF
   // just inside its bound is not active for the next cycle's truncation).
-  auto move = [&](int i) { return (a - 1.0) * (x[i] - x_old[i]) + b * p_[i]; };
+  // The moves stay an expression, read per DOF before that DOF of x changes.
+  const auto moves = (a - 1.0) * d + b * p_;
   auto limit = [&](int i, double m) {
-    if (m > 0 && x[i] + m > qp_.upper[i]) return (qp_.upper[i] - x[i]) / m;
-    if (m < 0 && x[i] + m < qp_.lower[i]) return (qp_.lower[i] - x[i]) / m;
-    return 1.0;
+    return step_to_bound(x[i], m, x[i] + m, qp_.lower[i], qp_.upper[i]);
   };
-  double t = 1.0;
-  for (int i = 0; i < x.size(); ++i) t = std::min(t, limit(i, move(i)));
-  t = std::max(t, 0.0);
+  const double t = max_feasible_step(x, moves, qp_.lower, qp_.upper);
   if (t == 0.0) return 0.0;
   for (int i = 0; i < x.size(); ++i) {
-    const double m = move(i);
+    const double m = moves[i];
     const double image = t * ((a - 1.0) * (r_old[i] - r[i]) + b * ap_[i]);
     const bool blocking = t < 1.0 && limit(i, m) <= t;
     const double bound = m > 0 ? qp_.upper[i] : qp_.lower[i];

@@ -69,7 +69,7 @@ TEST(AdaptiveExamples, SignoriniSquareRefinesTheContactZoneEnds) {
 
 // Ten steps make an 11-level bisection hierarchy, where the rounding of the truncated chain
 // made a level's strip block lose definiteness and the case was refused as "indefinite
-// weights" (MultilevelCycle::rebuild_coarse_levels now shifts that level). Measured: 61 801
+// weights" (TruncatedHierarchy::set_truncation now shifts that level). Measured: 61 801
 // unknowns, 15–26 iterations per step, F within 0.02 % of the reference.
 TEST(AdaptiveExamples, DeepBisectionHierarchiesAreNotRefused) {
   // θ = 0.5: the most levels for the unknowns (61 801 at 10 steps; θ = 0.7 makes 155 513).

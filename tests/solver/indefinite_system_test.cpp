@@ -8,8 +8,9 @@
 #include "contact_problems.hpp"
 #include "core/indefinite_system.hpp"
 #include "solvers/exact_box_qp.hpp"
-#include "solvers/smoothers.hpp"
+#include "solvers/patch_smoother.hpp"
 #include "solvers/solve_loop.hpp"
+#include "solvers/strip_smoother.hpp"
 
 namespace fosls {
 namespace {

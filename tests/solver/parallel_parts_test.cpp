@@ -11,7 +11,7 @@
 
 #include "contact_problems.hpp"
 #include "solvers/galerkin_product.hpp"
-#include "solvers/smoothers.hpp"
+#include "solvers/patch_smoother.hpp"
 
 namespace fosls {
 namespace {

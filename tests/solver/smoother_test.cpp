@@ -5,10 +5,14 @@
 #include <gtest/gtest.h>
 
 #include <functional>
+#include <memory>
 #include <random>
 
 #include "contact_problems.hpp"
-#include "solvers/smoothers.hpp"
+#include "solvers/patch_smoother.hpp"
+#include "solvers/point_smoother.hpp"
+#include "solvers/smoother_table.hpp"
+#include "solvers/strip_smoother.hpp"
 
 namespace fosls {
 namespace {
@@ -80,19 +84,30 @@ TEST_P(Smoothers, VertexPatchSmootherIsMonotoneAndFeasible) {
       "patch");
 }
 
+// What the cycle and pgs construct: every row of the smoother table, through its make function.
+TEST_P(Smoothers, EverySmootherOfTheTableIsMonotoneAndFeasible) {
+  for (const SmootherInfo& info : kSmootherTable) {
+    const std::unique_ptr<Smoother> smoother = info.make(qp().A, finest());
+    expect_monotone(
+        qp(),
+        [&](Vector& x, Vector& r, bool f) { smoother->sweep(x, r, qp().lower, qp().upper, f); },
+        info.name);
+  }
+}
+
 TEST_P(Smoothers, ContactStripSolveIsMonotoneFeasibleAndExactOnItsBlock) {
   ASSERT_FALSE(finest().contact_strip.empty());
   StripSmoother smoother(qp().A, finest().contact_strip);
   expect_monotone(
-      qp(), [&](Vector& x, Vector& r, bool) { smoother.solve(x, r, qp().lower, qp().upper); },
+      qp(), [&](Vector& x, Vector& r, bool) { smoother.sweep(x, r, qp().lower, qp().upper, true); },
       "strip");
   // Exact on the block: a second solve right after the first changes nothing.
   std::mt19937 rng(8);
   Vector x = near_the_bounds(qp(), rng);
   Vector r = qp().b - qp().A * x;
-  smoother.solve(x, r, qp().lower, qp().upper);
+  smoother.sweep(x, r, qp().lower, qp().upper, true);
   const Vector once = x;
-  smoother.solve(x, r, qp().lower, qp().upper);
+  smoother.sweep(x, r, qp().lower, qp().upper, true);
   EXPECT_LE((x - once).norm(), 1e-10 * (1.0 + once.norm()));
 }
 

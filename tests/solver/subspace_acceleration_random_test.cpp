@@ -13,7 +13,7 @@
 #include <random>
 
 #include "box_qp_enumeration.hpp"
-#include "solvers/smoothers.hpp"
+#include "solvers/point_smoother.hpp"
 #include "solvers/subspace_acceleration.hpp"
 
 namespace fosls {

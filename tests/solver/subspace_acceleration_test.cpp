@@ -8,7 +8,7 @@
 #include <limits>
 
 #include "contact_problems.hpp"
-#include "solvers/smoothers.hpp"
+#include "solvers/patch_smoother.hpp"
 #include "solvers/subspace_acceleration.hpp"
 
 namespace fosls {

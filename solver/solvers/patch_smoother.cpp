@@ -1,4 +1,4 @@
-#include "solvers/smoothers.hpp"
+#include "solvers/patch_smoother.hpp"
 
 #include <omp.h>
 
@@ -9,24 +9,9 @@
 
 #include "core/indefinite_system.hpp"
 #include "solvers/exact_box_qp.hpp"
+#include "solvers/smoother_table.hpp"
 
 namespace fosls {
-
-PointSmoother::PointSmoother(const SparseMatrix& A) : A_(A), diagonal_(A.diagonal()) {}
-
-void PointSmoother::sweep(Vector& x, Vector& r, const Vector& lo, const Vector& hi,
-                          bool forward) const {
-  const int n = static_cast<int>(x.size());
-  for (int k = 0; k < n; ++k) {
-    const int i = forward ? k : n - 1 - k;
-    if (diagonal_[i] <= 0.0) continue;
-    const double xi = std::clamp(x[i] + r[i] / diagonal_[i], lo[i], hi[i]);
-    const double d = xi - x[i];
-    if (d == 0.0) continue;
-    x[i] = xi;
-    update_residual(A_, i, d, r);
-  }
-}
 
 namespace {
 
@@ -140,38 +125,8 @@ void PatchSmoother::sweep_range(int begin, int end, Vector& x, Vector& r, const 
   }
 }
 
-StripSmoother::StripSmoother(const SparseMatrix& A, std::vector<int> strip)
-    : A_(A), strip_(std::move(strip)) {
-  std::vector<int> local(A.rows(), -1);
-  for (std::size_t a = 0; a < strip_.size(); ++a) local[strip_[a]] = static_cast<int>(a);
-  std::vector<Eigen::Triplet<double>> t;
-  for (std::size_t a = 0; a < strip_.size(); ++a)
-    for (SparseMatrix::InnerIterator it(A, strip_[a]); it; ++it)
-      if (int b = local[it.row()]; b >= 0) t.emplace_back(b, static_cast<int>(a), it.value());
-  SparseMatrix sub(strip_.size(), strip_.size());
-  sub.setFromTriplets(t.begin(), t.end());
-  solver_ = std::make_unique<SparseBoxQpSolver>(sub);
-}
-
-StripSmoother::~StripSmoother() = default;
-
-void StripSmoother::solve(Vector& x, Vector& r, const Vector& lo, const Vector& hi) {
-  const int m = static_cast<int>(strip_.size());
-  Vector rl(m), dlo(m), dhi(m), delta;
-  for (int a = 0; a < m; ++a) {
-    const int i = strip_[a];
-    rl[a] = r[i];
-    dlo[a] = std::min(0.0, lo[i] - x[i]);
-    dhi[a] = std::max(0.0, hi[i] - x[i]);
-  }
-  solver_->solve(rl, dlo, dhi, delta);
-  for (int a = 0; a < m; ++a) {
-    if (delta[a] == 0.0) continue;
-    const int j = strip_[a];
-    const double updated = std::clamp(x[j] + delta[a], lo[j], hi[j]);
-    update_residual(A_, j, updated - x[j], r);
-    x[j] = updated;
-  }
+std::unique_ptr<Smoother> make_patch_smoother(const SparseMatrix& A, const Level& level) {
+  return std::make_unique<PatchSmoother>(A, level.patches, level.patch_split);
 }
 
 }  // namespace fosls
