@@ -29,9 +29,15 @@ std::string describe(const std::vector<CaseError>& errors) {
 }  // namespace
 
 std::function<std::vector<CaseError>(const nlohmann::json&)> submitted_case_validator(
-    std::size_t job_memory_bytes) {
-  return [job_memory_bytes](const nlohmann::json& case_json) {
-    return admit_case(case_json, service_read_options(job_memory_bytes)).errors;
+    std::function<MemoryBudget()> budget) {
+  return [budget = std::move(budget)](const nlohmann::json& case_json) {
+    CaseReadOptions options = service_read_options(0);
+    if (budget) {
+      const MemoryBudget now = budget();
+      options.limits.max_memory_bytes = static_cast<double>(now.bytes);
+      options.limits.memory_budget_name = now.name;
+    }
+    return admit_case(case_json, options).errors;
   };
 }
 

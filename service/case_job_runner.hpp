@@ -7,6 +7,7 @@
 #include <nlohmann/json.hpp>
 #include <vector>
 
+#include "admission_budget.hpp"
 #include "case/case_error.hpp"
 #include "job_runner.hpp"
 
@@ -15,10 +16,11 @@ namespace fosls::service {
 /// Validates a submitted case as the service must, on the request thread and without gmsh
 /// (case/case_admission.hpp): `mesh.geo_file` is refused, because a gmsh .geo script can run
 /// shell commands and read or write files; problems that need the coarse mesh of a geometry
-/// are found by the job (it fails naming them). A case whose estimated memory exceeds
-/// `job_memory_bytes` (when not 0) is refused at the field that sets its size.
+/// are found by the job (it fails naming them). A case whose estimated memory exceeds the
+/// budget `budget` gives at the time (none when it is empty: --admit-over-budget) is refused at
+/// the field that sets its size.
 std::function<std::vector<CaseError>(const nlohmann::json&)> submitted_case_validator(
-    std::size_t job_memory_bytes);
+    std::function<MemoryBudget()> budget);
 
 /// Solves a case with read_case + run_case, honouring cancellation through RunControl::cancel
 /// and reporting every iteration. Case problems that only show while running (CaseException:

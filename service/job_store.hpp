@@ -215,6 +215,14 @@ class JobStore {
   /// Cheap round trip to the storage, for health checks; throws StoreError on failure.
   virtual void ping() = 0;
 
+  /// Records (or renews) what a worker process gives each job (its --max-job-memory), under
+  /// the process's worker id; workers renew it while they run.
+  virtual void declare_worker_budget(const std::string& process_id, std::size_t bytes) = 0;
+  /// The memory budget cases should be admitted against: the smallest of the workers that
+  /// declared one within the last minute (any of them may claim any job), else the most recent
+  /// declaration; nothing when no worker ever declared one.
+  virtual std::optional<std::size_t> declared_worker_budget() = 0;
+
   /// ping(), and whether the store can write: a full disk does not stop reads, so it is told
   /// by the last disk-full error of any call (and, for a file, the free space left).
   virtual StoreHealth health() {

@@ -75,8 +75,12 @@ int serve(const ServeOptions& o, const sigset_t& stop_signals) {
   api_options.max_queue = o.max_queue;
   api_options.max_body_bytes = o.max_body_bytes;
   api_options.web_root = o.web_root;
-  HttpApi api(store, pool, submitted_case_validator(o.worker.admission_memory_bytes()), metrics,
-              log, api_options);
+  // Cases are admitted against what the workers declared in the store (an API-only process
+  // included), against this process's own budget until one has (admission_budget.hpp).
+  AdmissionBudget budget(store, o.worker.job_memory_bytes());
+  std::function<MemoryBudget()> admission;
+  if (!o.worker.admit_over_budget) admission = [&budget] { return budget.current(); };
+  HttpApi api(store, pool, submitted_case_validator(admission), metrics, log, api_options);
 
   // Request heads are read under limits before cpp-httplib parses them (bounded_http_server.hpp).
   BoundedHttpServer server;

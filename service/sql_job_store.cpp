@@ -57,7 +57,22 @@ constexpr const char* kFinishedStates = "('succeeded', 'failed', 'cancelled')";
 
 // Steps after SQLite's version 3 and PostgreSQL's version 2, where both schemas are the same;
 // each text must run in both dialects (docs/service.md lists the versions).
-const std::vector<SchemaMigration> kSharedSteps = {};
+const std::vector<SchemaMigration> kSharedSteps = {
+    // What each worker process may give a job (--max-job-memory), so that API-only processes
+    // admit cases against the workers' budget, not their own (docs/service.md, "Admission").
+    {0, "the workers' memory budgets", R"sql(
+CREATE TABLE worker_budgets (
+  process_id TEXT PRIMARY KEY,
+  max_job_memory BIGINT NOT NULL,
+  seen_at BIGINT NOT NULL
+);
+)sql"},
+};
+
+/// Workers renew their declaration with their leases; one seen this recently still runs.
+constexpr std::int64_t kLiveWorkerMs = 60000;
+/// Declarations older than this are deleted (a process that stopped long ago).
+constexpr std::int64_t kForgetWorkerMs = 7 * 24 * 3600 * 1000LL;
 
 }  // namespace
 
@@ -410,6 +425,31 @@ std::int64_t SqlJobStore::count_not_converged() {
 }
 
 void SqlJobStore::ping() { connection()->query("SELECT 1"); }
+
+void SqlJobStore::declare_worker_budget(const std::string& process_id, std::size_t bytes) {
+  auto c = connection();
+  c->query(
+      "INSERT INTO worker_budgets (process_id, max_job_memory, seen_at) "
+      "VALUES (?1, ?2, {now_ms}) ON CONFLICT (process_id) DO UPDATE SET "
+      "max_job_memory = excluded.max_job_memory, seen_at = excluded.seen_at",
+      {process_id, static_cast<std::int64_t>(bytes)});
+  c->query("DELETE FROM worker_budgets WHERE seen_at < {now_ms} - ?1", {kForgetWorkerMs});
+}
+
+std::optional<std::size_t> SqlJobStore::declared_worker_budget() {
+  auto c = connection();
+  // Any live worker may claim any job: admit what the smallest of them can run.
+  const SqlRows live = c->query(
+      "SELECT min(max_job_memory) AS bytes FROM worker_budgets WHERE seen_at >= {now_ms} - ?1",
+      {kLiveWorkerMs});
+  if (!live.empty() && !live[0].is_null("bytes"))
+    return static_cast<std::size_t>(live[0].int64("bytes"));
+  // None running now: the workers that ran last will most likely run the job.
+  const SqlRows last =
+      c->query("SELECT max_job_memory AS bytes FROM worker_budgets ORDER BY seen_at DESC LIMIT 1");
+  if (last.empty()) return std::nullopt;
+  return static_cast<std::size_t>(last[0].int64("bytes"));
+}
 
 namespace {
 /// A disk-full error makes the store unhealthy until a commit goes through, or this long: every

@@ -40,6 +40,8 @@ class SqlJobStore : public JobStore {
   std::int64_t count_not_converged() override;
   void ping() override;
   StoreHealth health() override;
+  void declare_worker_budget(const std::string& process_id, std::size_t bytes) override;
+  std::optional<std::size_t> declared_worker_budget() override;
 
  protected:
   /// `acquire` lends a connection to one call.

@@ -25,6 +25,7 @@ WorkerPoolOptions WorkerOptions::pool_options() const {
   o.lease_duration = seconds_to_ms(lease_seconds);
   o.heartbeat_interval = seconds_to_ms(heartbeat_seconds);
   o.fail_unconverged = fail_unconverged;
+  o.declared_job_memory = job_memory_bytes();
   return o;
 }
 

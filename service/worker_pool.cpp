@@ -36,6 +36,7 @@ WorkerPool::~WorkerPool() {
 void WorkerPool::start() {
   std::lock_guard lock(mutex_);
   if (!threads_.empty() || stopping_) return;
+  if (options_.workers > 0) declare_budget();  // before the first claim
   for (int i = 0; i < options_.workers; ++i) threads_.emplace_back([this, i] { run_worker(i); });
   if (options_.workers > 0) heartbeat_ = std::thread([this] { run_heartbeat(); });
 }
@@ -84,6 +85,7 @@ void WorkerPool::join() {
 }
 
 void WorkerPool::run_heartbeat() {
+  auto declared = std::chrono::steady_clock::now();
   for (;;) {
     {
       std::unique_lock lock(mutex_);
@@ -91,6 +93,19 @@ void WorkerPool::run_heartbeat() {
       if (heartbeat_stopping_) return;
     }
     heartbeat_once();
+    if (std::chrono::steady_clock::now() - declared >= options_.declare_interval) {
+      declare_budget();
+      declared = std::chrono::steady_clock::now();
+    }
+  }
+}
+
+void WorkerPool::declare_budget() {
+  if (options_.declared_job_memory == 0) return;
+  try {
+    store_.declare_worker_budget(options_.worker_id, options_.declared_job_memory);
+  } catch (const std::exception& e) {
+    log_.write("store_error", {{"step", "declare budget"}, {"error", e.what()}});
   }
 }
 

@@ -41,6 +41,11 @@ struct WorkerPoolOptions {
   /// A solve that stops without converging fails its job (its result is kept) instead of
   /// succeeding with "converged": false (--fail-unconverged).
   bool fail_unconverged = false;
+  /// The memory each job of this pool may use (--max-job-memory), declared in the store so that
+  /// API-only processes admit cases against it; 0: not declared.
+  std::size_t declared_job_memory = 0;
+  /// How often the declaration is renewed (the store counts a worker live for a minute).
+  std::chrono::milliseconds declare_interval{10000};
 };
 
 /// hostname:pid:random, unique to one process even where pids repeat (containers).
@@ -112,6 +117,8 @@ class WorkerPool {
   /// requested (through any process) or whose lease was lost.
   void run_heartbeat();
   void heartbeat_once();
+  /// Declares (renews) declared_job_memory in the store; a store error is logged, not fatal.
+  void declare_budget();
   /// Why a job whose solve did not converge fails under fail_unconverged.
   static std::string unconverged_error(const JobConvergence& convergence);
   /// Calls `write` until it returns without throwing or attempts run out (the store may be

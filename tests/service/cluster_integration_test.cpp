@@ -127,7 +127,8 @@ class Program {
 /// A PostgreSQL server, one API-only fosls-serve on a fixed port and `workers` fosls-worker.
 class Cluster {
  public:
-  explicit Cluster(int workers, double lease_seconds = 2.0) {
+  explicit Cluster(int workers, double lease_seconds = 2.0,
+                   const std::vector<std::string>& worker_options = {}) {
     url_ = pg_.create_database("cluster");
     port_ = testing::free_port();
     const std::vector<std::string> lease = {"--lease-seconds", std::to_string(lease_seconds),
@@ -149,6 +150,7 @@ class Cluster {
     for (int i = 0; i < workers; ++i) {
       std::vector<std::string> args = {FOSLS_WORKER_PATH, "--store", url_, "--workers", "1"};
       args.insert(args.end(), lease.begin(), lease.end());
+      args.insert(args.end(), worker_options.begin(), worker_options.end());
       workers_.push_back(
           std::make_unique<Program>(args, dir_.file("worker" + std::to_string(i) + ".log")));
     }
@@ -448,6 +450,39 @@ TEST(Cluster, CancelAndStopReachAWorkerInAnotherProcess) {
   EXPECT_EQ(job["attempts"], 0) << job;
   cli.Post("/v1/jobs/" + stopped + "/cancel");  // queued: cancelled at once
   EXPECT_EQ(json::parse(cli.Get("/v1/jobs/" + stopped)->body)["state"], "cancelled");
+}
+
+TEST(Cluster, AnApiOnlyProcessAdmitsAgainstTheWorkersDeclaredBudget) {
+  // The API process has no --max-job-memory (its default is 3/4 of this host's memory); its
+  // worker may give a job 100 MiB. A case estimated at about 400 MiB must be refused by the API
+  // once the worker has declared its budget, not fail on the worker later.
+  Cluster cluster(1, 30.0, {"--max-job-memory", "100M"});
+  json big = small_case(0);
+  big["mesh"]["refinements"] = 6;
+  httplib::Client cli("127.0.0.1", cluster.port());
+  // No worker has declared a budget yet: the API's own applies, and the job waits in the queue.
+  auto before = cli.Post("/v1/jobs", big.dump(), "application/json");
+  ASSERT_TRUE(before);
+  EXPECT_EQ(before->status, 202) << before->body;
+  cli.Post("/v1/jobs/" + std::to_string(json::parse(before->body)["id"].get<int>()) + "/cancel");
+  cluster.start_workers();
+  std::string detail;
+  const auto give_up = Clock::now() + std::chrono::seconds(60);
+  while (Clock::now() < give_up) {  // the API reads the declarations every 2 s
+    auto res = cli.Post("/v1/jobs", big.dump(), "application/json");
+    ASSERT_TRUE(res);
+    if (res->status == 422) {
+      detail = json::parse(res->body)["errors"][0]["detail"];
+      break;
+    }
+    cli.Post("/v1/jobs/" + std::to_string(json::parse(res->body)["id"].get<int>()) + "/cancel");
+    std::this_thread::sleep_for(std::chrono::milliseconds(200));
+  }
+  std::printf("API-only admission after the worker declared: %s\n", detail.c_str());
+  EXPECT_NE(detail.find("more than the 100 MiB a job may use (the workers' --max-job-memory"),
+            std::string::npos)
+      << detail;
+  EXPECT_EQ(sql_count(cluster.url(), "SELECT max_job_memory FROM worker_budgets"), 100 << 20);
 }
 
 /// The 1-minute load average, to print beside a measurement on a shared machine.

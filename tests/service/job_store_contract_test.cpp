@@ -530,6 +530,16 @@ TEST_P(JobStoreContract, PingAndCounts) {
   for (const auto& [state, n] : counts) EXPECT_EQ(n, 0);
 }
 
+TEST_P(JobStoreContract, WorkersDeclareTheirBudgetAndTheSmallestLiveOneIsAdmittedAgainst) {
+  EXPECT_FALSE(store().declared_worker_budget());  // no worker ever declared one
+  store().declare_worker_budget("host:1:a", std::size_t{4} << 30);
+  EXPECT_EQ(store().declared_worker_budget(), std::size_t{4} << 30);
+  store().declare_worker_budget("host:2:b", std::size_t{2} << 30);
+  EXPECT_EQ(store().declared_worker_budget(), std::size_t{2} << 30);  // any may claim any job
+  store().declare_worker_budget("host:2:b", std::size_t{8} << 30);    // renewed with another
+  EXPECT_EQ(store().declared_worker_budget(), std::size_t{4} << 30);
+}
+
 INSTANTIATE_TEST_SUITE_P(Stores, JobStoreContract, ::testing::Values("sqlite", "postgresql"),
                          [](const auto& info) { return info.param; });
 

@@ -11,6 +11,7 @@
 #include <thread>
 
 #include "fake_job_runner.hpp"
+#include "forwarding_store.hpp"
 #include "request_checks.hpp"
 #include "sqlite_job_store.hpp"
 #include "temp_dir.hpp"
@@ -22,50 +23,20 @@ using testing::fake_job_runner;
 using testing::TempDir;
 
 /// Counts progress writes on the way to the real store.
-class CountingStore final : public JobStore {
+class CountingStore final : public testing::ForwardingStore {
  public:
-  explicit CountingStore(JobStore& inner) : inner_(inner) {}
+  using ForwardingStore::ForwardingStore;
   std::atomic<int> progress_writes{0};
   std::atomic<bool> fail_results{false};  ///< complete_with_result throws, like a full disk
 
-  SubmitOutcome submit(const NewJob& j, std::size_t m) override { return inner_.submit(j, m); }
-  std::optional<Job> find(std::int64_t id) override { return inner_.find(id); }
-  std::optional<std::string> result_json(std::int64_t id) override {
-    return inner_.result_json(id);
-  }
-  std::optional<std::string> vtu(std::int64_t id) override { return inner_.vtu(id); }
-  std::optional<std::string> case_json(std::int64_t id) override { return inner_.case_json(id); }
-  JobPage list(const JobListQuery& q) override { return inner_.list(q); }
-  CancelOutcome cancel(std::int64_t id) override { return inner_.cancel(id); }
-  DeleteOutcome remove(std::int64_t id) override { return inner_.remove(id); }
-  std::optional<ClaimedJob> claim_next(const ClaimRequest& r) override {
-    return inner_.claim_next(r);
-  }
-  LeaseStatus renew_lease(const Lease& l, std::chrono::milliseconds d) override {
-    return inner_.renew_lease(l, d);
-  }
   void update_progress(const Lease& l, const JobProgress& p) override {
     ++progress_writes;
-    inner_.update_progress(l, p);
+    ForwardingStore::update_progress(l, p);
   }
   bool complete_with_result(const Lease& l, const SolveRecord& r) override {
     if (fail_results) throw StoreError("string or blob too big");
-    return inner_.complete_with_result(l, r);
+    return ForwardingStore::complete_with_result(l, r);
   }
-  bool complete_failed(const Lease& l, const std::string& e) override {
-    return inner_.complete_failed(l, e);
-  }
-  bool complete_cancelled(const Lease& l) override { return inner_.complete_cancelled(l); }
-  bool requeue(const Lease& l) override { return inner_.requeue(l); }
-  RecoveryReport requeue_expired_leases(int m) override { return inner_.requeue_expired_leases(m); }
-  RecoveryReport recover_interrupted(int m) override { return inner_.recover_interrupted(m); }
-  int delete_finished_before(std::int64_t t) override { return inner_.delete_finished_before(t); }
-  std::map<JobState, std::int64_t> count_by_state() override { return inner_.count_by_state(); }
-  std::int64_t count_not_converged() override { return inner_.count_not_converged(); }
-  void ping() override { inner_.ping(); }
-
- private:
-  JobStore& inner_;
 };
 
 class WorkerPoolTest : public ::testing::Test {
