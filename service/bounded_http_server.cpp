@@ -1,5 +1,7 @@
 #include "bounded_http_server.hpp"
 
+#include <sys/socket.h>
+
 #include <string_view>
 
 #include "http_connection.hpp"
@@ -79,6 +81,23 @@ BoundedHttpServer& BoundedHttpServer::set_head_refusal_handler(HeadRefusalHandle
 BoundedHttpServer& BoundedHttpServer::set_post_routing_handler(Handler handler) {
   post_routing_handler_ = std::move(handler);
   return *this;
+}
+
+bool BoundedHttpServer::bind_to_port(const std::string& host, int port, int socket_flags) {
+  if (!Server::bind_to_port(host, port, socket_flags)) return false;
+  raise_listen_backlog();
+  return true;
+}
+
+int BoundedHttpServer::bind_to_any_port(const std::string& host, int socket_flags) {
+  const int port = Server::bind_to_any_port(host, socket_flags);
+  if (port >= 0) raise_listen_backlog();
+  return port;
+}
+
+void BoundedHttpServer::raise_listen_backlog() {
+  // listen() again on a listening socket only changes its backlog.
+  ::listen(svr_sock_, SOMAXCONN);
 }
 
 bool BoundedHttpServer::process_and_close_socket(socket_t sock) {

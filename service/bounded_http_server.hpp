@@ -39,8 +39,15 @@ class BoundedHttpServer : public httplib::Server {
   /// As httplib's; this server keeps the slot for itself and calls `handler` from it.
   BoundedHttpServer& set_post_routing_handler(Handler handler);
 
+  /// As httplib's, with a listen backlog of SOMAXCONN instead of its compiled-in 5: a burst of
+  /// connections beyond the backlog has its SYNs dropped, and each of those clients waits a
+  /// second (then two, …) to retry — /healthz included.
+  bool bind_to_port(const std::string& host, int port, int socket_flags = 0);
+  int bind_to_any_port(const std::string& host, int socket_flags = 0);
+
  private:
   bool process_and_close_socket(socket_t sock) override;
+  void raise_listen_backlog();
 
   HttpServerLimits limits_;
   HeadRefusalHandler refusal_handler_;

@@ -9,13 +9,13 @@
 #include <sstream>
 
 #include "api_routes.hpp"
-#include "json_duplicates.hpp"
 #include "large_body.hpp"
 #include "openapi.hpp"
 #include "problem.hpp"
 #include "problem_catalogue.hpp"
 #include "request_checks.hpp"
 #include "static_files.hpp"
+#include "submission.hpp"
 
 namespace fosls::service {
 
@@ -64,15 +64,6 @@ std::optional<Problem> content_length_problem(const httplib::Request& req) {
   return problems::invalid_content_length(why);
 }
 
-/// nlohmann's message for unparsable text (where and why); only called on the error path.
-std::string parse_error_message(const std::string& text) {
-  try {
-    [[maybe_unused]] const auto j = nlohmann::json::parse(text);
-  } catch (const nlohmann::json::exception& e) {  // parse_error, or out_of_range for 1e999
-    return e.what();
-  }
-  return "unknown parse error";
-}
 }  // namespace
 
 HttpApi::HttpApi(JobStore& store, WorkerPool& workers, CaseValidator validator, Metrics& metrics,
@@ -82,7 +73,11 @@ HttpApi::HttpApi(JobStore& store, WorkerPool& workers, CaseValidator validator, 
       validator_(std::move(validator)),
       metrics_(metrics),
       log_(log),
-      options_(std::move(options)) {}
+      options_(std::move(options)) {
+  if (options_.admission_threads > 0)
+    admission_ = std::make_unique<AdmissionPool>(options_.admission_threads,
+                                                 options_.max_admissions_waiting);
+}
 
 std::string HttpApi::route_template(const std::string& path) {
   if (std::string route = matching_template(path); !route.empty()) return route;
@@ -319,27 +314,6 @@ void HttpApi::post_job(const Request& req, Response& res) {
     send_problem(req, res, problems::unsupported_media_type(content_type));
     return;
   }
-  if (json_nesting_depth(req.body, options_.max_json_depth) > options_.max_json_depth) {
-    send_problem(req, res,
-                 problems::unparsable_json("the JSON is nested deeper than " +
-                                           std::to_string(options_.max_json_depth) + " levels"));
-    return;
-  }
-  nlohmann::json case_json = nlohmann::json::parse(req.body, nullptr, false);
-  if (case_json.is_discarded()) {
-    send_problem(
-        req, res,
-        problems::unparsable_json("the body is not valid JSON: " + parse_error_message(req.body)));
-    return;
-  }
-  if (auto pointer = first_duplicate_key(req.body)) {
-    send_problem(req, res,
-                 problems::invalid_case({{*pointer,
-                                          "this key appears twice in its object; give "
-                                          "each key once (JSON parsers disagree on "
-                                          "which one counts)"}}));
-    return;
-  }
   std::optional<std::string> key;
   if (req.has_header("Idempotency-Key")) {
     key = req.get_header_value("Idempotency-Key");
@@ -348,20 +322,21 @@ void HttpApi::post_job(const Request& req, Response& res) {
       return;
     }
   }
-  std::vector<CaseError> errors = validator_(case_json);
-  if (!errors.empty()) {
-    send_problem(req, res, problems::invalid_case(std::move(errors)));
-    return;
-  }
-
-  NewJob job;
-  if (case_json.contains("name") && case_json["name"].is_string()) {
-    job.name = case_json["name"].get<std::string>();
+  std::variant<Problem, NewJob> read;
+  const std::function<void()> work = [&] {
+    read = read_submission(req.body, validator_, options_.max_json_depth);
+  };
+  // A large body is read on the admission pool's low-priority threads, this one waiting.
+  if (admission_ && req.body.size() >= options_.large_body_bytes) {
+    if (!admission_->run(work)) {
+      res.set_header("Retry-After", std::to_string(options_.retry_after_seconds));
+      return send_problem(req, res, problems::admission_busy());
+    }
   } else {
-    job.name = "case";
+    work();
   }
-  job.case_json = dump(case_json);  // canonical: keys sorted, no whitespace
-  job.body_hash = sha256_hex(job.case_json);
+  if (const auto* problem = std::get_if<Problem>(&read)) return send_problem(req, res, *problem);
+  NewJob job = std::move(std::get<NewJob>(read));
   job.idempotency_key = key;
   SubmitOutcome outcome = store_.submit(job, options_.max_queue);
   switch (outcome.kind) {

@@ -9,22 +9,22 @@
 #include <filesystem>
 #include <functional>
 #include <map>
+#include <memory>
 #include <nlohmann/json.hpp>
 #include <string>
 #include <vector>
 
+#include "admission_pool.hpp"
 #include "api_routes.hpp"
 #include "bounded_http_server.hpp"
 #include "case/case_error.hpp"
 #include "event_log.hpp"
 #include "job_store.hpp"
 #include "metrics.hpp"
+#include "submission.hpp"
 #include "worker_pool.hpp"
 
 namespace fosls::service {
-
-/// Checks a parsed case before it is queued; every problem with its JSON pointer.
-using CaseValidator = std::function<std::vector<CaseError>(const nlohmann::json& case_json)>;
 
 struct HttpApiOptions {
   std::size_t max_body_bytes = 8u << 20;  ///< larger POST bodies get 413
@@ -32,6 +32,12 @@ struct HttpApiOptions {
   std::filesystem::path web_root;         ///< served at / (empty: no static files)
   int retry_after_seconds = 5;            ///< Retry-After of 503 responses
   int max_json_depth = 64;                ///< deeper nesting is refused before parsing
+  /// Bodies from this size on are read on the admission pool (admission_pool.hpp).
+  std::size_t large_body_bytes = 256u << 10;
+  /// Threads of the admission pool (0: large bodies are read on the HTTP threads too).
+  int admission_threads = 2;
+  /// Large submissions waiting for the pool beyond which POST answers 503.
+  std::size_t max_admissions_waiting = 256;
 };
 
 /// Installs the API on a BoundedHttpServer. Handlers only touch the store and wake workers;
@@ -89,6 +95,7 @@ class HttpApi {
   Metrics& metrics_;
   EventLog& log_;
   HttpApiOptions options_;
+  std::unique_ptr<AdmissionPool> admission_;  ///< null when admission_threads is 0
   /// The OpenAPI document and the JSON Schemas, by path (built in install()).
   std::map<std::string, std::string> contract_;
 };

@@ -25,6 +25,7 @@
 #include "http_api.hpp"
 #include "lease_reaper.hpp"
 #include "metrics.hpp"
+#include "process/malloc_arenas.hpp"
 #include "retention_sweeper.hpp"
 #include "store_url.hpp"
 #include "worker_options.hpp"
@@ -75,6 +76,9 @@ int serve(const ServeOptions& o, const sigset_t& stop_signals) {
   api_options.max_queue = o.max_queue;
   api_options.max_body_bytes = o.max_body_bytes;
   api_options.web_root = o.web_root;
+  // Large submissions are read on low-priority threads, one per core.
+  api_options.admission_threads =
+      static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
   // Cases are admitted against what the workers declared in the store (an API-only process
   // included), against this process's own budget until one has (admission_budget.hpp).
   AdmissionBudget budget(store, o.worker.job_memory_bytes());
@@ -153,6 +157,8 @@ int serve(const ServeOptions& o, const sigset_t& stop_signals) {
 }  // namespace
 
 int main(int argc, char** argv) {
+  // A large request's buffers go back to the system when freed (malloc_arenas.hpp).
+  fosls::give_large_blocks_back();
   ServeOptions o;
   o.worker.workers = static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
   CLI::App app{"fosls-serve: HTTP job service for FOSLS contact cases (docs/service.md)"};

@@ -149,6 +149,11 @@ Problem store_full(int status, const std::string& store_message) {
   return p;
 }
 
+Problem admission_busy() {
+  return make(503, "admission-busy",
+              "too many large submissions are waiting to be checked; retry later");
+}
+
 Problem store_unavailable() {
   return make(503, "store-unavailable", "the job store is busy or unavailable; retry later");
 }

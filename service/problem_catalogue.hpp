@@ -39,6 +39,7 @@ Problem idempotency_key_reused(std::int64_t job_id);     // 422
 Problem internal_error();                                // 500
 Problem queue_full(std::size_t max_queue);               // 503
 Problem store_unavailable();                             // 503
+Problem admission_busy();                                // 503: large submissions queued
 /// The store's disk is full: 507 for a request that had to write, 503 for GET /healthz.
 Problem store_full(int status, const std::string& store_message);
 

@@ -19,4 +19,8 @@ bool keep_freed_memory() {
   return mmap_set && trim_set;
 }
 
+bool give_large_blocks_back() { return mallopt(M_MMAP_THRESHOLD, 1 << 20) == 1; }
+
+void return_freed_memory() { malloc_trim(0); }
+
 }  // namespace fosls

@@ -23,4 +23,15 @@ bool use_one_malloc_arena();
 /// start of main. Returns false if glibc refused.
 bool keep_freed_memory();
 
+/// The opposite, for a long-running server that handles large requests now and then (a 4 MiB
+/// case body parses into tens of MiB): blocks of 1 MiB and more are mapped on their own and
+/// unmapped when freed, instead of glibc raising its mmap threshold after the first such free
+/// and keeping later ones in its heaps. Call at the start of main. Returns false if glibc
+/// refused.
+bool give_large_blocks_back();
+
+/// Returns the free memory of every malloc arena to the system (malloc_trim): after work that
+/// allocated much in many small blocks (a parsed JSON document).
+void return_freed_memory();
+
 }  // namespace fosls

@@ -9,12 +9,17 @@
 #include <poll.h>
 #include <sys/stat.h>
 
+#include <algorithm>
+#include <array>
+#include <atomic>
 #include <cerrno>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <functional>
 #include <memory>
 #include <nlohmann/json.hpp>
+#include <sstream>
 #include <string>
 #include <thread>
 #include <vector>
@@ -241,6 +246,123 @@ TEST(HostileHttp, AnEmptiedDatabaseFileIsRefusedNotStartedOver) {
         << e.what();
   }
   EXPECT_EQ(std::filesystem::file_size(db), 0u) << "the file was written to";
+}
+
+/// A gmsh 4.1 text of the unit square as an n × n grid of triangle pairs, with the boundary
+/// groups "bottom", "right", "top" and "left": about 70 bytes per grid cell.
+std::string grid_msh(int n) {
+  const int m = n + 1;
+  auto node = [m](int i, int j) { return j * m + i + 1; };
+  std::ostringstream out;
+  out << "$MeshFormat\n4.1 0 8\n$EndMeshFormat\n$PhysicalNames\n5\n1 1 \"bottom\"\n"
+         "1 2 \"right\"\n1 3 \"top\"\n1 4 \"left\"\n2 5 \"body\"\n$EndPhysicalNames\n"
+         "$Entities\n0 4 1 0\n1 0 0 0 1 0 0 1 1 0\n2 1 0 0 1 1 0 1 2 0\n3 0 1 0 1 1 0 1 3 0\n"
+         "4 0 0 0 0 1 0 1 4 0\n1 0 0 0 1 1 0 1 5 4 1 2 3 4\n$EndEntities\n";
+  out << "$Nodes\n1 " << m * m << " 1 " << m * m << "\n2 1 0 " << m * m << "\n";
+  for (int k = 1; k <= m * m; ++k) out << k << "\n";
+  for (int j = 0; j < m; ++j)
+    for (int i = 0; i < m; ++i) out << double(i) / n << " " << double(j) / n << " 0\n";
+  out << "$EndNodes\n$Elements\n5 " << 4 * n + 2 * n * n << " 1 " << 4 * n + 2 * n * n << "\n";
+  int tag = 1;
+  const std::array<std::function<std::pair<int, int>(int)>, 4> sides = {
+      [&](int k) {
+        return std::pair{node(k, 0), node(k + 1, 0)};
+      },
+      [&](int k) {
+        return std::pair{node(n, k), node(n, k + 1)};
+      },
+      [&](int k) {
+        return std::pair{node(n - k, n), node(n - k - 1, n)};
+      },
+      [&](int k) {
+        return std::pair{node(0, n - k), node(0, n - k - 1)};
+      }};
+  for (int c = 0; c < 4; ++c) {
+    out << "1 " << c + 1 << " 1 " << n << "\n";
+    for (int k = 0; k < n; ++k) {
+      const auto [a, b] = sides[c](k);
+      out << tag++ << " " << a << " " << b << "\n";
+    }
+  }
+  out << "2 1 2 " << 2 * n * n << "\n";
+  for (int j = 0; j < n; ++j)
+    for (int i = 0; i < n; ++i) {
+      out << tag++ << " " << node(i, j) << " " << node(i + 1, j) << " " << node(i + 1, j + 1)
+          << "\n";
+      out << tag++ << " " << node(i, j) << " " << node(i + 1, j + 1) << " " << node(i, j + 1)
+          << "\n";
+    }
+  out << "$EndElements\n";
+  return out.str();
+}
+
+double percentile(std::vector<double> v, double p) {
+  if (v.empty()) return 0;
+  std::sort(v.begin(), v.end());
+  return v[static_cast<std::size_t>(p * (v.size() - 1))];
+}
+
+TEST(HostileHttp, LargeBodiesDoNotStallHealthAndTheirMemoryGoesBack) {
+  // The probe: 32 clients post a 4 MiB msh case each at once (all refused with 422: a group the
+  // mesh lacks, found only once the mesh is read), three rounds, while a monitor asks /healthz
+  // every 20 ms on one kept-alive connection. /healthz must keep answering within 100 ms, and
+  // the memory the bodies took must go back. The bound is asserted on the 90th percentile (a
+  // shared machine's scheduler can hold any one request for a while: single answers of a few
+  // hundred ms were seen at load 9-12, as for any request there); the maximum is printed.
+  Service svc(1);
+  const json big = {{"mesh", {{"msh", grid_msh(235)}, {"refinements", 0}}},
+                    {"material", {{"mu", 1}, {"lambda", 1}}},
+                    {"boundary", {{"nope", {{"type", "dirichlet"}, {"displacement", {0, 0}}}}}}};
+  const std::string body = big.dump();
+  ASSERT_GT(body.size(), 3500000u);
+  const pid_t pid = svc.server().pid();
+  const std::size_t rss_before = proc_status_bytes(pid, "VmRSS");
+  std::vector<double> health_ms;
+  httplib::Client cli("127.0.0.1", svc.server().port());  // the monitor's, kept alive
+  cli.set_keep_alive(true);
+  for (int round = 0; round < 3; ++round) {
+    std::atomic<bool> posting{true};
+    std::thread monitor([&] {
+      while (posting) {
+        const auto t0 = std::chrono::steady_clock::now();
+        auto res = cli.Get("/healthz");
+        health_ms.push_back(
+            std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0)
+                .count());
+        EXPECT_TRUE(res && res->status == 200);
+        std::this_thread::sleep_for(std::chrono::milliseconds(20));
+      }
+    });
+    const auto t0 = std::chrono::steady_clock::now();
+    std::vector<std::thread> clients;
+    std::atomic<int> refused{0};
+    for (int c = 0; c < 32; ++c)
+      clients.emplace_back([&] {
+        httplib::Client poster("127.0.0.1", svc.server().port());
+        poster.set_read_timeout(std::chrono::seconds(120));
+        auto res = poster.Post("/v1/jobs", body, "application/json");
+        if (res && res->status == 422) ++refused;
+      });
+    for (auto& c : clients) c.join();
+    posting = false;
+    monitor.join();
+    std::printf("round %d: 32 posts of %.1f MiB in %.1f s, %d refused with 422\n", round + 1,
+                body.size() / double(kMiB),
+                std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count(),
+                refused.load());
+    EXPECT_EQ(refused.load(), 32);
+  }
+  std::this_thread::sleep_for(std::chrono::seconds(1));
+  const std::size_t rss_after = proc_status_bytes(pid, "VmRSS");
+  const std::size_t peak = proc_status_bytes(pid, "VmHWM");
+  std::printf(
+      "/healthz during the posts: %zu answers, median %.1f ms, p90 %.1f ms, max %.1f ms; "
+      "RSS before %.0f MiB, peak %.0f MiB, after %.0f MiB\n",
+      health_ms.size(), percentile(health_ms, 0.5), percentile(health_ms, 0.9),
+      percentile(health_ms, 1.0), rss_before / double(kMiB), peak / double(kMiB),
+      rss_after / double(kMiB));
+  EXPECT_LT(percentile(health_ms, 0.9), 100.0);
+  EXPECT_LT(rss_after, rss_before + 100 * kMiB);
 }
 
 /// fosls-serve with its database on a tmpfs of 4 MiB in a mount namespace of its own (unshare
