@@ -196,13 +196,32 @@ void FoslsAssembler::rotate_local(int t, Local& loc) const {
 }
 
 AssembledProblem FoslsAssembler::assemble_system() const {
-  const Mesh& mesh = space_.mesh();
-  const int n_full = space_.num_dofs(), n_free = space_.num_free();
+  const int n_free = space_.num_free();
   AssembledProblem out;
   out.stress_scale = mu_;
   out.vertex_gap = vertex_gap_;
+  Vector xd = essential_values();
+  // Pattern first, values in place (assembly_pattern.hpp): each thread writes only
+  // the columns it owns, visiting their triangles in increasing order (AssemblyPartition).
+  const int threads = omp_get_max_threads();
+  AssemblyPattern pattern = assembly_pattern(space_, threads);
+  Vector b = Vector::Zero(n_free);
+  const std::vector<double> constants = add_element_terms(xd, pattern, threads, b);
+  add_contact_terms(xd, pattern.matrix, b);
+  out.qp.A.swap(pattern.matrix);  // Eigen 3.4's SparseMatrix has no move: std::move would copy
+  out.qp.b = std::move(b);
+  out.qp.constant = 0.0;
+  for (double c : constants) out.qp.constant += c;
+  out.qp.lower = Vector::Constant(n_free, -kNoBound);
+  out.qp.upper = Vector::Constant(n_free, kNoBound);
+  set_contact_bounds(out.qp.upper);
+  out.fixed_values = std::move(xd);
+  return out;
+}
 
-  // Essential data: Dirichlet displacements and Neumann fluxes (scaled), S_t = 0.
+Vector FoslsAssembler::essential_values() const {
+  const Mesh& mesh = space_.mesh();
+  const int n_full = space_.num_dofs();
   Vector xd = Vector::Zero(n_full);
   for (int e = 0; e < mesh.num_edges(); ++e) {
     int g = mesh.edge_group(e);
@@ -247,14 +266,14 @@ AssembledProblem FoslsAssembler::assemble_system() const {
   for (int d = 0; d < n_full; ++d)
     if (space_.role(d) != DofRole::kFixed) xd[d] = 0.0;
 
-  // Pattern first, values in place (assembly_pattern.hpp): each thread writes only
-  // the columns it owns, visiting their triangles in increasing order (AssemblyPartition).
-  const int threads = omp_get_max_threads();
-  AssemblyPattern pattern = assembly_pattern(space_, threads);
+  return xd;
+}
+
+std::vector<double> FoslsAssembler::add_element_terms(const Vector& xd, AssemblyPattern& pattern,
+                                                      int threads, Vector& b) const {
   SparseMatrix& a = pattern.matrix;
   const AssemblyPartition& part = pattern.partition;
   double* values = a.valuePtr();
-  Vector b = Vector::Zero(n_free);
   std::vector<double> cs(threads, 0.0);
 #pragma omp parallel num_threads(threads)
   // Each part once, also when the runtime gives fewer threads than asked for.
@@ -292,6 +311,12 @@ AssembledProblem FoslsAssembler::assemble_system() const {
       }
     }
   }
+  return cs;
+}
+
+void FoslsAssembler::add_contact_terms(const Vector& xd, SparseMatrix& a, Vector& b) const {
+  const Mesh& mesh = space_.mesh();
+  double* values = a.valuePtr();
   // Contact term C3 ⟨u·n − g, σ_nn⟩ on each contact edge: σ_nn = S_n/|e| is constant, u·n and
   // g are linear along the edge, so the term is C3 S_n ((u·n)_p + (u·n)_q − g_p − g_q) / 2.
   // Its entries couple DOFs of the edge's triangle, so they are in the pattern.
@@ -322,20 +347,14 @@ AssembledProblem FoslsAssembler::assemble_system() const {
     }
     b[sn] += c3 * gbar;
   }
-  out.qp.A.swap(a);  // Eigen 3.4's SparseMatrix has no move: std::move would copy
-  out.qp.b = std::move(b);
-  out.qp.constant = 0.0;
-  for (double c : cs) out.qp.constant += c;
+}
 
-  out.qp.lower = Vector::Constant(n_free, -kNoBound);
-  out.qp.upper = Vector::Constant(n_free, kNoBound);
-  for (int f = 0; f < n_free; ++f) {
+void FoslsAssembler::set_contact_bounds(Vector& upper) const {
+  for (int f = 0; f < space_.num_free(); ++f) {
     const int d = space_.free_to_full()[f];
-    if (space_.role(d) == DofRole::kNormalU) out.qp.upper[f] = vertex_gap_[d / 2];
-    if (space_.role(d) == DofRole::kNormalS) out.qp.upper[f] = 0.0;
+    if (space_.role(d) == DofRole::kNormalU) upper[f] = vertex_gap_[d / 2];
+    if (space_.role(d) == DofRole::kNormalS) upper[f] = 0.0;
   }
-  out.fixed_values = std::move(xd);
-  return out;
 }
 
 Vector FoslsAssembler::full_vector(const AssembledProblem& p, const Vector& x_free) const {

@@ -11,6 +11,8 @@
 
 namespace fosls {
 
+struct AssemblyPattern;
+
 /// The discrete problem of one level.
 struct AssembledProblem {
   BoxQp qp;             ///< over the free DOFs, rotated contact coordinates, scaled stresses
@@ -59,6 +61,17 @@ class FoslsAssembler {
   struct Local;
   void element_kernel(int t, Local& out) const;
   void rotate_local(int t, Local& loc) const;
+  /// assemble_system's steps. The full vector of the fixed DOFs' values (Dirichlet
+  /// displacements, Neumann fluxes scaled by μ, S_t = 0), zero elsewhere.
+  Vector essential_values() const;
+  /// The element terms into the pattern's matrix and b (the fixed DOFs' couplings moved to b),
+  /// in parallel; returns each thread's part of the constant of J.
+  std::vector<double> add_element_terms(const Vector& xd, AssemblyPattern& pattern, int threads,
+                                        Vector& b) const;
+  /// The contact term C3 ⟨u·n − g, σ_nn⟩ of every contact edge.
+  void add_contact_terms(const Vector& xd, SparseMatrix& a, Vector& b) const;
+  /// U_n ≤ g at contact vertices, S_n ≤ 0 on contact edges.
+  void set_contact_bounds(Vector& upper) const;
 
   const FoslsSpace& space_;
   const ProblemData& data_;

@@ -356,89 +356,103 @@ ObjectRulePtr memory_rule() {
 
 }  // namespace
 
+namespace {
+
+/// The result's fields that say how the solve went: method, convergence, sizes, residuals.
+std::vector<FieldRule> outcome_fields(const std::vector<std::string>& reasons) {
+  return {
+      output_field("name", text(), "", "the case's name"),
+      output_field("method", choice_value(method_names()), "", "the solver method"),
+      output_field("converged", boolean_value(), "",
+                   "the stopping rule was met: final_kkt_residual ≤ tolerance · "
+                   "initial_kkt_residual or, with solver.tolerance \"discretisation\", the "
+                   "estimated algebraic error ≤ fraction · J^½, or the KKT residual reached its "
+                   "rounding level first (stopping.converged_by says which)"),
+      output_field("stop_reason", choice_value(reasons), "",
+                   "why the iteration stopped: converged, max_iterations (solver.max_iterations "
+                   "reached first), time_limit (solver.time_limit_s ran out first; the result "
+                   "is the last iterate) or cancelled"),
+      output_field("cancelled", boolean_value(), "", "the job was cancelled while solving"),
+      output_field("iterations", count(), "1",
+                   "iterations on the finest level (the nested iteration's are in "
+                   "solver_statistics)"),
+      output_field("tolerance", number(), "1",
+                   "solver.tolerance of the case; with \"discretisation\" the KKT tolerance "
+                   "that still applies (the default)"),
+      output_field("stopping", object_value(stopping_rule()), "",
+                   "the stopping rule, which test ended the solve, and the two error "
+                   "estimates at the last iterate"),
+      output_field("levels", count(), "1", "levels of the hierarchy: mesh.refinements + 1"),
+      output_field("dofs", count(), "1", "unknowns of the finest level that are solved for"),
+      output_field("dofs_total", count(), "1", "all DOFs of the finest level, fixed ones included"),
+      output_field("vertices", count(), "1", "vertices of the finest mesh"),
+      output_field("triangles", count(), "1", "triangles of the finest mesh"),
+      output_field("initial_kkt_residual", number(), "scaled",
+                   "KKT residual of the initial iterate"),
+      output_field("final_kkt_residual", number(), "scaled", "KKT residual at the end"),
+      output_field("relative_kkt_residual", number(), "1",
+                   "final_kkt_residual / initial_kkt_residual (0 when the initial one is 0)"),
+      output_field("asymptotic_rate", number(), "1",
+                   "geometric mean of the last (up to) 5 reductions of the KKT residual"),
+      output_field("active_bounds", count(), "1",
+                   "bounded unknowns at their bound at the end (U_n at the obstacle or S_n at "
+                   "zero); not the number of contact edges in contact, see contact.zone.edges"),
+      output_field("active", count(), "1", "deprecated: the same as active_bounds")};
+}
+
+/// The result's fields that carry what the solve computed and how it ran.
+std::vector<FieldRule> solution_fields(const std::vector<std::string>& reasons) {
+  return {
+      optional_field("message", text(), nullptr,
+                     "why the solve did not converge or was cancelled (also in warnings)"),
+      output_field("warnings", list_value(text(), "list of sentences"), "",
+                   "what the user should know (no contact, an initial overlap, a load the "
+                   "contact cannot hold, a coarsely resolved contact zone, implausible units, "
+                   "non-convergence, ...), each with what it means: the messages of "
+                   "warning_details, in the same order"),
+      output_field("warning_details", list_value(object_value(warning_rule()), "one per warning"),
+                   "", "the warnings with their codes (docs/result-format.md, \"Warnings\")"),
+      output_field("review_required", boolean_value(), "",
+                   "a warning says that the answer may be physically empty or wrong although "
+                   "it converged (a warning with review true); fosls-contact solve then exits "
+                   "with code 4"),
+      output_field("history", list_value(object_value(history_rule()), "one per iteration"), "",
+                   "the initial iterate and every iteration"),
+      output_field("solver_statistics", object_value(statistics_rule()), "",
+                   "counts and times of the multilevel method's parts"),
+      output_field("contact", object_value(contact_rule()), "",
+                   "the contact output (empty arrays when the case has no contact group)"),
+      output_field("functional", object_value(functional_rule()), "",
+                   "the FOSLS functional at the solution and its parts"),
+      output_field("units", object_value(units_echo_rule()), "",
+                   "the units the case declared (its numbers are used as they are either "
+                   "way)"),
+      output_field("material", object_value(material_echo_rule()), "",
+                   "the material as used (μ, λ)"),
+      output_field("mesh", object_value(mesh_echo_rule()), "", "the mesh as given"),
+      output_field("weights", object_value(weights_echo_rule()), "", "the weights as used"),
+      output_field("timing", object_value(timing_rule()), "", "wall-clock times"),
+      output_field("memory", object_value(memory_rule()), "",
+                   "peak resident set of the process at the end of each stage"),
+      optional_field("adaptivity", object_value(adaptivity_result_rule()), nullptr,
+                     "the adaptive loop, step by step (only when the case has an adaptivity "
+                     "section; the other fields describe its last step)"),
+      optional_field("sweep", object_value(sweep_rule(choice_value(reasons))), nullptr,
+                     "a case with a sweep: every point's force and convergence; the other "
+                     "fields are the last point's, except converged and stop_reason, which say "
+                     "whether every point converged (and why the first that did not stopped)")};
+}
+
+}  // namespace
+
 ObjectRulePtr result_rule() {
   std::vector<std::string> reasons;
   for (const auto reason : {StopReason::kConverged, StopReason::kMaxIterations,
                             StopReason::kTimeLimit, StopReason::kCancelled})
     reasons.push_back(stop_reason_name(reason));
-  return object_rule(
-      "the result", "result",
-      {output_field("name", text(), "", "the case's name"),
-       output_field("method", choice_value(method_names()), "", "the solver method"),
-       output_field("converged", boolean_value(), "",
-                    "the stopping rule was met: final_kkt_residual ≤ tolerance · "
-                    "initial_kkt_residual or, with solver.tolerance \"discretisation\", the "
-                    "estimated algebraic error ≤ fraction · J^½, or the KKT residual reached its "
-                    "rounding level first (stopping.converged_by says which)"),
-       output_field("stop_reason", choice_value(reasons), "",
-                    "why the iteration stopped: converged, max_iterations (solver.max_iterations "
-                    "reached first), time_limit (solver.time_limit_s ran out first; the result "
-                    "is the last iterate) or cancelled"),
-       output_field("cancelled", boolean_value(), "", "the job was cancelled while solving"),
-       output_field("iterations", count(), "1",
-                    "iterations on the finest level (the nested iteration's are in "
-                    "solver_statistics)"),
-       output_field("tolerance", number(), "1",
-                    "solver.tolerance of the case; with \"discretisation\" the KKT tolerance "
-                    "that still applies (the default)"),
-       output_field("stopping", object_value(stopping_rule()), "",
-                    "the stopping rule, which test ended the solve, and the two error "
-                    "estimates at the last iterate"),
-       output_field("levels", count(), "1", "levels of the hierarchy: mesh.refinements + 1"),
-       output_field("dofs", count(), "1", "unknowns of the finest level that are solved for"),
-       output_field("dofs_total", count(), "1",
-                    "all DOFs of the finest level, fixed ones included"),
-       output_field("vertices", count(), "1", "vertices of the finest mesh"),
-       output_field("triangles", count(), "1", "triangles of the finest mesh"),
-       output_field("initial_kkt_residual", number(), "scaled",
-                    "KKT residual of the initial iterate"),
-       output_field("final_kkt_residual", number(), "scaled", "KKT residual at the end"),
-       output_field("relative_kkt_residual", number(), "1",
-                    "final_kkt_residual / initial_kkt_residual (0 when the initial one is 0)"),
-       output_field("asymptotic_rate", number(), "1",
-                    "geometric mean of the last (up to) 5 reductions of the KKT residual"),
-       output_field("active_bounds", count(), "1",
-                    "bounded unknowns at their bound at the end (U_n at the obstacle or S_n at "
-                    "zero); not the number of contact edges in contact, see contact.zone.edges"),
-       output_field("active", count(), "1", "deprecated: the same as active_bounds"),
-       optional_field("message", text(), nullptr,
-                      "why the solve did not converge or was cancelled (also in warnings)"),
-       output_field("warnings", list_value(text(), "list of sentences"), "",
-                    "what the user should know (no contact, an initial overlap, a load the "
-                    "contact cannot hold, a coarsely resolved contact zone, implausible units, "
-                    "non-convergence, ...), each with what it means: the messages of "
-                    "warning_details, in the same order"),
-       output_field("warning_details", list_value(object_value(warning_rule()), "one per warning"),
-                    "", "the warnings with their codes (docs/result-format.md, \"Warnings\")"),
-       output_field("review_required", boolean_value(), "",
-                    "a warning says that the answer may be physically empty or wrong although "
-                    "it converged (a warning with review true); fosls-contact solve then exits "
-                    "with code 4"),
-       output_field("history", list_value(object_value(history_rule()), "one per iteration"), "",
-                    "the initial iterate and every iteration"),
-       output_field("solver_statistics", object_value(statistics_rule()), "",
-                    "counts and times of the multilevel method's parts"),
-       output_field("contact", object_value(contact_rule()), "",
-                    "the contact output (empty arrays when the case has no contact group)"),
-       output_field("functional", object_value(functional_rule()), "",
-                    "the FOSLS functional at the solution and its parts"),
-       output_field("units", object_value(units_echo_rule()), "",
-                    "the units the case declared (its numbers are used as they are either "
-                    "way)"),
-       output_field("material", object_value(material_echo_rule()), "",
-                    "the material as used (μ, λ)"),
-       output_field("mesh", object_value(mesh_echo_rule()), "", "the mesh as given"),
-       output_field("weights", object_value(weights_echo_rule()), "", "the weights as used"),
-       output_field("timing", object_value(timing_rule()), "", "wall-clock times"),
-       output_field("memory", object_value(memory_rule()), "",
-                    "peak resident set of the process at the end of each stage"),
-       optional_field("adaptivity", object_value(adaptivity_result_rule()), nullptr,
-                      "the adaptive loop, step by step (only when the case has an adaptivity "
-                      "section; the other fields describe its last step)"),
-       optional_field("sweep", object_value(sweep_rule(choice_value(reasons))), nullptr,
-                      "a case with a sweep: every point's force and convergence; the other "
-                      "fields are the last point's, except converged and stop_reason, which say "
-                      "whether every point converged (and why the first that did not stopped)")});
+  std::vector<FieldRule> fields = outcome_fields(reasons);
+  for (FieldRule& f : solution_fields(reasons)) fields.push_back(std::move(f));
+  return object_rule("the result", "result", std::move(fields));
 }
 
 const char* stop_reason_name(StopReason reason) {

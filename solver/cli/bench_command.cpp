@@ -12,6 +12,7 @@
 #include <fstream>
 #include <iostream>
 #include <memory>
+#include <optional>
 #include <sstream>
 
 #include "case/case_admission.hpp"
@@ -237,44 +238,97 @@ void admit_runs(std::vector<BenchRun>& runs, const CaseReadOptions& options) {
             << ", the largest about " << format_bytes(peak) << "\n";
 }
 
-int run_bench(const BenchOptions& o) {
-  nlohmann::json base;
-  bool found = false;
+/// The case to bench: a shipped example by name, else a case file; nullopt after saying why not.
+std::optional<nlohmann::json> bench_case(const std::string& path) {
   for (const auto& ex : shipped_examples())
-    if (ex.name == o.case_path) {
-      base = nlohmann::json::parse(ex.text);
-      found = true;
-    }
-  if (!found) {
-    CaseFile file = load_case_file(o.case_path, 16u << 20);
-    if (!file.problem.empty()) {
-      std::cerr << "error: " << o.case_path << ": " << file.problem << '\n';
-      return kExitBadInput;
-    }
-    base = file.json;
+    if (ex.name == path) return nlohmann::json::parse(ex.text);
+  CaseFile file = load_case_file(path, 16u << 20);
+  if (!file.problem.empty()) {
+    std::cerr << "error: " << path << ": " << file.problem << '\n';
+    return std::nullopt;
   }
-  int first = 0, last = 0;
-  if (std::sscanf(o.levels.c_str(), "%d..%d", &first, &last) != 2) {
-    if (std::sscanf(o.levels.c_str(), "%d", &first) != 1) {
+  return file.json;
+}
+
+/// --levels A..B (or A) into first and last; false after saying why not.
+bool parse_levels(const std::string& levels, int& first, int& last) {
+  if (std::sscanf(levels.c_str(), "%d..%d", &first, &last) != 2) {
+    if (std::sscanf(levels.c_str(), "%d", &first) != 1) {
       std::cerr << "error: --levels: expected A..B, e.g. 2..5\n";
-      return kExitBadInput;
+      return false;
     }
     last = first;
   }
   if (first < 1 || last < first || last > 12) {
     std::cerr << "error: --levels: need 1 <= A <= B <= 12\n";
-    return kExitBadInput;
+    return false;
   }
-  std::vector<int> thread_counts;
-  for (const auto& t : split(o.threads)) {
+  return true;
+}
+
+/// --threads 1,2 into thread counts ({0}: the process's default); false after saying why not.
+bool parse_threads(const std::string& list, std::vector<int>& thread_counts) {
+  for (const auto& t : split(list)) {
     int n = 0;
     if (std::sscanf(t.c_str(), "%d", &n) != 1 || n < 1 || n > 256) {
       std::cerr << "error: --threads: expected thread counts like 1,2, got \"" << t << "\"\n";
-      return kExitBadInput;
+      return false;
     }
     thread_counts.push_back(n);
   }
   if (thread_counts.empty()) thread_counts.push_back(0);  // the process's default
+  return true;
+}
+
+/// The runs: every level, thread count and configuration, each its case.
+std::vector<BenchRun> bench_runs(const nlohmann::json& base, const BenchOptions& o, int first,
+                                 int last, const std::vector<int>& thread_counts,
+                                 const std::vector<Configuration>& settings) {
+  std::vector<BenchRun> runs;
+  for (int level = first; level <= last; ++level)
+    for (const int threads : thread_counts)
+      for (const Configuration& setting : settings) {
+        nlohmann::json c = base;
+        c["mesh"]["refinements"] = level - 1;
+        c["solver"]["method"] = setting.method;
+        if (setting.smoother != "-") c["solver"]["smoother"] = setting.smoother;
+        if (setting.obstacle != "-") c["solver"]["coarse_obstacle"] = setting.obstacle;
+        if (setting.cycle != "-") c["solver"]["cycle"] = setting.cycle;
+        c["solver"]["tolerance"] = o.tolerance;
+        c["solver"]["max_iterations"] = o.max_iterations;
+        runs.push_back({level, threads, setting, std::move(c), {}});
+      }
+  return runs;
+}
+
+/// One row of the table (an error line for a run that failed or was refused).
+void print_row(const nlohmann::json& row) {
+  const int level = row["level"].get<int>();
+  if (row.contains("error")) {
+    std::printf("%-5d %9s %s error: %s\n", level, "-", settings_columns(row).c_str(),
+                row["error"].get<std::string>().c_str());
+  } else {
+    const double force = std::hypot(row["force"][0].get<double>(), row["force"][1].get<double>());
+    std::printf(
+        "%-5d %9lld %s %3d %6d %5s %8.4f %9.3f %9.3f %9.3f %9.1f %9.1f %9.1f %11.5g %11.5g "
+        "%10.4g %10.3g\n",
+        level, row["dofs"].get<long long>(), settings_columns(row).c_str(),
+        row["threads"].get<int>(), row["iterations"].get<int>(),
+        row["converged"].get<bool>() ? "yes" : "no", row["rate"].get<double>(),
+        row["setup_s"].get<double>(), row["solve_s"].get<double>(), row["total_s"].get<double>(),
+        row["memory"]["assembly_mib"].get<double>(), row["memory"]["chain_mib"].get<double>(),
+        row["peak_mib"].get<double>(), force, row["peak_pressure"].get<double>(),
+        row["contact_width"].get<double>(), row["estimator"].get<double>());
+  }
+}
+
+int run_bench(const BenchOptions& o) {
+  const std::optional<nlohmann::json> base = bench_case(o.case_path);
+  if (!base) return kExitBadInput;
+  int first = 0, last = 0;
+  std::vector<int> thread_counts;
+  if (!parse_levels(o.levels, first, last) || !parse_threads(o.threads, thread_counts))
+    return kExitBadInput;
   std::printf(
       "%-5s %9s %-6s %-6s %-3s %-3s %3s %6s %5s %8s %9s %9s %9s %9s %9s %9s %11s %11s %10s "
       "%10s\n",
@@ -294,48 +348,18 @@ int run_bench(const BenchOptions& o) {
     return kExitBadInput;
   }
   const auto settings = configurations(methods, smoothers, obstacles, cycles);
-  std::vector<BenchRun> runs;
-  for (int level = first; level <= last; ++level)
-    for (const int threads : thread_counts)
-      for (const Configuration& setting : settings) {
-        nlohmann::json c = base;
-        c["mesh"]["refinements"] = level - 1;
-        c["solver"]["method"] = setting.method;
-        if (setting.smoother != "-") c["solver"]["smoother"] = setting.smoother;
-        if (setting.obstacle != "-") c["solver"]["coarse_obstacle"] = setting.obstacle;
-        if (setting.cycle != "-") c["solver"]["cycle"] = setting.cycle;
-        c["solver"]["tolerance"] = o.tolerance;
-        c["solver"]["max_iterations"] = o.max_iterations;
-        runs.push_back({level, threads, setting, std::move(c), {}});
-      }
+  std::vector<BenchRun> runs = bench_runs(*base, o, first, last, thread_counts, settings);
   admit_runs(runs, command_line_read_options(o.max_memory));
   for (const BenchRun& run : runs) {
-    const int level = run.level, threads = run.threads;
-    const Configuration& setting = run.setting;
-    nlohmann::json row = run.refusal.empty() ? run_isolated(run.case_json, threads)
+    nlohmann::json row = run.refusal.empty() ? run_isolated(run.case_json, run.threads)
                                              : nlohmann::json{{"error", run.refusal}};
-    row["level"] = level;
-    row["method"] = setting.method;
-    row["smoother"] = setting.smoother;
-    row["coarse_obstacle"] = setting.obstacle;
-    row["cycle"] = setting.cycle;
-    if (row.contains("error")) {
-      all_ok = false;
-      std::printf("%-5d %9s %s error: %s\n", level, "-", settings_columns(row).c_str(),
-                  row["error"].get<std::string>().c_str());
-    } else {
-      const double force = std::hypot(row["force"][0].get<double>(), row["force"][1].get<double>());
-      std::printf(
-          "%-5d %9lld %s %3d %6d %5s %8.4f %9.3f %9.3f %9.3f %9.1f %9.1f %9.1f %11.5g %11.5g "
-          "%10.4g %10.3g\n",
-          level, row["dofs"].get<long long>(), settings_columns(row).c_str(),
-          row["threads"].get<int>(), row["iterations"].get<int>(),
-          row["converged"].get<bool>() ? "yes" : "no", row["rate"].get<double>(),
-          row["setup_s"].get<double>(), row["solve_s"].get<double>(), row["total_s"].get<double>(),
-          row["memory"]["assembly_mib"].get<double>(), row["memory"]["chain_mib"].get<double>(),
-          row["peak_mib"].get<double>(), force, row["peak_pressure"].get<double>(),
-          row["contact_width"].get<double>(), row["estimator"].get<double>());
-    }
+    row["level"] = run.level;
+    row["method"] = run.setting.method;
+    row["smoother"] = run.setting.smoother;
+    row["coarse_obstacle"] = run.setting.obstacle;
+    row["cycle"] = run.setting.cycle;
+    if (row.contains("error")) all_ok = false;
+    print_row(row);
     std::fflush(stdout);
     rows.push_back(row);
   }

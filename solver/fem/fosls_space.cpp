@@ -21,6 +21,12 @@ int prescribed_components(GroupRole role) {
   return 0;
 }
 
+struct FoslsSpace::VertexMarks {
+  std::vector<int> prescribed;  ///< bit c: u_c is Dirichlet data at the vertex
+  std::vector<Point> averaged;  ///< sum of the normals of the contact edges at the vertex
+  std::vector<int> curve_of;    ///< the curve of a contact edge at the vertex (−1: none)
+};
+
 FoslsSpace::FoslsSpace(const Mesh& mesh, const std::vector<GroupRole>& roles,
                        const std::vector<Point>& vertex_normals)
     : mesh_(&mesh) {
@@ -31,24 +37,30 @@ FoslsSpace::FoslsSpace(const Mesh& mesh, const std::vector<GroupRole>& roles,
   contact_vertex_.assign(nv, 0);
   contact_edge_.assign(ne, 0);
   vertex_normal_.assign(nv, Point::Zero());
+  set_vertex_roles(mark_boundary_edges(roles), vertex_normals);
+  number_free_dofs();
+}
 
-  std::vector<int> prescribed(nv, 0);  // bit c: u_c is Dirichlet data at the vertex
-  std::vector<Point> averaged(nv, Point::Zero());
-  std::vector<int> curve_of(nv, -1);
+FoslsSpace::VertexMarks FoslsSpace::mark_boundary_edges(const std::vector<GroupRole>& roles) {
+  const int nv = mesh_->num_vertices(), ne = mesh_->num_edges();
+  VertexMarks m;
+  m.prescribed.assign(nv, 0);
+  m.averaged.assign(nv, Point::Zero());
+  m.curve_of.assign(nv, -1);
   for (int e = 0; e < ne; ++e) {
-    int g = mesh.edge_group(e);
+    int g = mesh_->edge_group(e);
     if (g < 0) continue;
-    const auto& pq = mesh.edge(e);
+    const auto& pq = mesh_->edge(e);
     switch (roles[g]) {
       case GroupRole::kDirichlet:
-        prescribed[pq[0]] |= 3;
-        prescribed[pq[1]] |= 3;
+        m.prescribed[pq[0]] |= 3;
+        m.prescribed[pq[1]] |= 3;
         break;
       case GroupRole::kDirichletX:
       case GroupRole::kDirichletY: {
         const int c = roles[g] == GroupRole::kDirichletX ? 0 : 1;
-        prescribed[pq[0]] |= 1 << c;
-        prescribed[pq[1]] |= 1 << c;
+        m.prescribed[pq[0]] |= 1 << c;
+        m.prescribed[pq[1]] |= 1 << c;
         roles_[sigma_dof(e, 1 - c)] = DofRole::kFixed;  // the free component's traction is 0
         break;
       }
@@ -61,36 +73,47 @@ FoslsSpace::FoslsSpace(const Mesh& mesh, const std::vector<GroupRole>& roles,
         roles_[sigma_dof(e, 1)] = DofRole::kFixed;  // σ_nt = 0
         for (int v : pq) {
           contact_vertex_[v] = 1;
-          averaged[v] += mesh.edge_normal(e);
-          if (mesh.edge_curve(e) >= 0) curve_of[v] = mesh.edge_curve(e);
+          m.averaged[v] += mesh_->edge_normal(e);
+          if (mesh_->edge_curve(e) >= 0) m.curve_of[v] = mesh_->edge_curve(e);
         }
         break;
     }
   }
+  return m;
+}
+
+Point FoslsSpace::contact_normal(int v, const VertexMarks& marks,
+                                 const std::vector<Point>& vertex_normals) const {
+  const Mesh& mesh = *mesh_;
+  if (!vertex_normals.empty()) return vertex_normals[v].normalized();
+  if (const int curve = marks.curve_of[v]; curve >= 0) {
+    // Exact normal of the arc, pointing out of the body like the edge normals do.
+    Point radial = (mesh.vertex(v) - mesh.curves()[curve].center).normalized();
+    return radial.dot(marks.averaged[v]) >= 0 ? radial : Point(-radial);
+  }
+  return marks.averaged[v].normalized();
+}
+
+void FoslsSpace::set_vertex_roles(const VertexMarks& marks,
+                                  const std::vector<Point>& vertex_normals) {
+  const int nv = mesh_->num_vertices();
   for (int v = 0; v < nv; ++v) {
-    if (prescribed[v] == 3) {
+    if (marks.prescribed[v] == 3) {
       contact_vertex_[v] = 0;  // Dirichlet data win over the contact constraint
       roles_[u_dof(v, 0)] = roles_[u_dof(v, 1)] = DofRole::kFixed;
       continue;
     }
     if (!contact_vertex_[v]) {
       for (int c = 0; c < 2; ++c)
-        if (prescribed[v] & (1 << c)) roles_[u_dof(v, c)] = DofRole::kFixed;
+        if (marks.prescribed[v] & (1 << c)) roles_[u_dof(v, c)] = DofRole::kFixed;
       continue;
     }
-    Point n = averaged[v].normalized();
-    if (!vertex_normals.empty()) {
-      n = vertex_normals[v].normalized();
-    } else if (curve_of[v] >= 0) {
-      // Exact normal of the arc, pointing out of the body like the edge normals do.
-      Point radial = (mesh.vertex(v) - mesh.curves()[curve_of[v]].center).normalized();
-      n = radial.dot(averaged[v]) >= 0 ? radial : Point(-radial);
-    }
-    if (prescribed[v]) {
+    const Point n = contact_normal(v, marks, vertex_normals);
+    if (marks.prescribed[v]) {
       // Where a roller meets the contact boundary (a symmetry plane through the contact zone)
       // the prescribed axis is the tangent t = (−n_y, n_x): U_t is prescribed and U_n ≤ g
       // stays. An oblique roller cannot be both; its Dirichlet data win.
-      const int c = prescribed[v] == 1 ? 0 : 1;
+      const int c = marks.prescribed[v] == 1 ? 0 : 1;
       if (std::abs(n[c]) > 1e-12) {
         contact_vertex_[v] = 0;
         roles_[u_dof(v, c)] = DofRole::kFixed;
@@ -99,9 +122,11 @@ FoslsSpace::FoslsSpace(const Mesh& mesh, const std::vector<GroupRole>& roles,
     }
     vertex_normal_[v] = n;
     roles_[u_dof(v, 0)] = DofRole::kNormalU;
-    roles_[u_dof(v, 1)] = prescribed[v] ? DofRole::kFixed : DofRole::kFree;
+    roles_[u_dof(v, 1)] = marks.prescribed[v] ? DofRole::kFixed : DofRole::kFree;
   }
+}
 
+void FoslsSpace::number_free_dofs() {
   full_to_free_.assign(num_dofs(), -1);
   // Reserved exactly: grown by push_back it kept up to twice its size on every level.
   free_to_full_.reserve(num_dofs() - std::count(roles_.begin(), roles_.end(), DofRole::kFixed));

@@ -57,6 +57,18 @@ class FoslsSpace {
   int free_index(int dof) const { return full_to_free_[dof]; }
 
  private:
+  /// What the boundary groups say about each vertex (the constructor's first step).
+  struct VertexMarks;
+  /// Roles of the edges' DOFs from their group's role; contact edges and vertices marked.
+  VertexMarks mark_boundary_edges(const std::vector<GroupRole>& roles);
+  /// Roles of the vertices' DOFs and the contact normals, from the marks.
+  void set_vertex_roles(const VertexMarks& marks, const std::vector<Point>& vertex_normals);
+  /// The normal of contact vertex v: given, the arc's exact one, or the edges' average.
+  Point contact_normal(int v, const VertexMarks& marks,
+                       const std::vector<Point>& vertex_normals) const;
+  /// The free DOFs (all but the fixed ones), numbered in DOF order.
+  void number_free_dofs();
+
   const Mesh* mesh_;
   std::vector<DofRole> roles_;
   std::vector<char> contact_vertex_, contact_edge_;

@@ -46,24 +46,25 @@ std::vector<char> closed_edge_marks(const Mesh& mesh, const BisectionState& stat
 
 }  // namespace
 
-Bisection refine_by_bisection(const Mesh& mesh, const BisectionState& state,
-                              const std::vector<int>& marked) {
-  const int nv = mesh.num_vertices(), ne = mesh.num_edges(), nt = mesh.num_triangles();
+namespace {
+
+void check_input(const Mesh& mesh, const BisectionState& state, const std::vector<int>& marked) {
+  const int nt = mesh.num_triangles();
   if (static_cast<int>(state.newest.size()) != nt ||
       static_cast<int>(state.generation.size()) != nt)
     throw std::invalid_argument("bisection: the state does not belong to this mesh");
   for (int t : marked)
     if (t < 0 || t >= nt)
       throw std::invalid_argument("bisection: triangle " + std::to_string(t) + " does not exist");
-  const std::vector<char> edge_marked = closed_edge_marks(mesh, state, marked);
+}
 
-  // New vertices: the midpoints of the marked edges, on the curve where the edge is curved.
-  std::vector<Point> vertices(mesh.vertices());
-  std::vector<int> midpoint(ne, -1);
-  Bisection out;
-  RefinementMaps& maps = out.maps;
-  maps.num_coarse_vertices = nv;
-  for (int e = 0; e < ne; ++e) {
+/// The new vertices, the midpoints of the marked edges (on the curve where the edge is curved),
+/// appended to `vertices` and to maps.midpoint_edge; returns each edge's midpoint vertex (−1:
+/// not marked).
+std::vector<int> add_midpoints(const Mesh& mesh, const std::vector<char>& edge_marked,
+                               std::vector<Point>& vertices, RefinementMaps& maps) {
+  std::vector<int> midpoint(mesh.num_edges(), -1);
+  for (int e = 0; e < mesh.num_edges(); ++e) {
     if (!edge_marked[e]) continue;
     Point m = mesh.edge_midpoint(e);
     if (const int c = mesh.edge_curve(e); c >= 0) m = mesh.curves()[c].project(m);
@@ -71,8 +72,16 @@ Bisection refine_by_bisection(const Mesh& mesh, const BisectionState& state,
     vertices.push_back(m);
     maps.midpoint_edge.push_back(e);
   }
+  return midpoint;
+}
 
-  // Triangles, newest vertex first for every child.
+/// The children of every triangle (itself when its refinement edge is not marked; two or three
+/// when it is), newest vertex first for every child; their state and parents into `out`.
+std::vector<std::array<int, 3>> bisect_triangles(const Mesh& mesh, const BisectionState& state,
+                                                 const std::vector<char>& edge_marked,
+                                                 const std::vector<int>& midpoint, Bisection& out) {
+  const int nt = mesh.num_triangles();
+  RefinementMaps& maps = out.maps;
   std::vector<std::array<int, 3>> triangles;
   BisectionState& fine_state = out.state;
   triangles.reserve(nt + 3 * maps.midpoint_edge.size());
@@ -111,6 +120,12 @@ Bisection refine_by_bisection(const Mesh& mesh, const BisectionState& state,
     }
   }
 
+  return triangles;
+}
+
+/// The boundary segments of the fine mesh: each boundary edge, or its two halves.
+std::vector<BoundarySegment> split_boundary(const Mesh& mesh, const std::vector<int>& midpoint) {
+  const int ne = mesh.num_edges();
   std::vector<BoundarySegment> segments;
   for (int e = 0; e < ne; ++e) {
     if (!mesh.is_boundary_edge(e)) continue;
@@ -123,19 +138,12 @@ Bisection refine_by_bisection(const Mesh& mesh, const BisectionState& state,
       segments.push_back({midpoint[e], pq[1], g, c});
     }
   }
-  const std::vector<std::array<int, 3>> requested = triangles;
-  out.fine = Mesh(std::move(vertices), std::move(triangles), std::move(segments),
-                  mesh.group_names(), mesh.curves());
-  const Mesh& fine = out.fine;
-  // The Mesh constructor reorders a clockwise triangle; only a midpoint moved onto a curve
-  // past the opposite vertex can cause that, and then the newest vertex would be lost.
-  for (int t = 0; t < fine.num_triangles(); ++t)
-    if (fine.triangle(t) != requested[t])
-      throw std::runtime_error(
-          "bisection: moving a boundary midpoint onto its curve inverted a triangle; the coarse "
-          "mesh is too coarse for the curvature of its boundary");
+  return segments;
+}
 
-  // Edge maps: along a coarse edge (kept or halved) or inside the parent triangle.
+/// Edge maps: each fine edge along a coarse edge (kept or halved) or inside its parent triangle.
+void set_edge_maps(const Mesh& mesh, const Mesh& fine, RefinementMaps& maps) {
+  const int nv = mesh.num_vertices(), ne = mesh.num_edges();
   const int nfe = fine.num_edges();
   maps.parent_edge.assign(nfe, -1);
   maps.parent_triangle.assign(nfe, -1);
@@ -169,6 +177,32 @@ Bisection refine_by_bisection(const Mesh& mesh, const BisectionState& state,
       const int f = fine.triangle_edge(t, k);
       if (maps.parent_edge[f] < 0) maps.parent_triangle[f] = maps.triangle_parent[t];
     }
+}
+
+}  // namespace
+
+Bisection refine_by_bisection(const Mesh& mesh, const BisectionState& state,
+                              const std::vector<int>& marked) {
+  check_input(mesh, state, marked);
+  const std::vector<char> edge_marked = closed_edge_marks(mesh, state, marked);
+  Bisection out;
+  out.maps.num_coarse_vertices = mesh.num_vertices();
+  std::vector<Point> vertices(mesh.vertices());
+  const std::vector<int> midpoint = add_midpoints(mesh, edge_marked, vertices, out.maps);
+  std::vector<std::array<int, 3>> triangles =
+      bisect_triangles(mesh, state, edge_marked, midpoint, out);
+  std::vector<BoundarySegment> segments = split_boundary(mesh, midpoint);
+  const std::vector<std::array<int, 3>> requested = triangles;
+  out.fine = Mesh(std::move(vertices), std::move(triangles), std::move(segments),
+                  mesh.group_names(), mesh.curves());
+  // The Mesh constructor reorders a clockwise triangle; only a midpoint moved onto a curve
+  // past the opposite vertex can cause that, and then the newest vertex would be lost.
+  for (int t = 0; t < out.fine.num_triangles(); ++t)
+    if (out.fine.triangle(t) != requested[t])
+      throw std::runtime_error(
+          "bisection: moving a boundary midpoint onto its curve inverted a triangle; the coarse "
+          "mesh is too coarse for the curvature of its boundary");
+  set_edge_maps(mesh, out.fine, out.maps);
   return out;
 }
 

@@ -242,17 +242,13 @@ std::vector<int> walk_loop(const GeometrySpec& g) {
   return loop;
 }
 
-std::vector<MeshProblem> validate_geometry(const GeometrySpec& g) {
-  std::vector<MeshProblem> errors;
+namespace {
+
+/// Reports points with non-finite coordinates (point_ok false); returns the geometric
+/// tolerance, 1e-9 of the extent of the finite points.
+double check_points(const GeometrySpec& g, std::vector<bool>& point_ok,
+                    std::vector<MeshProblem>& errors) {
   const int np = static_cast<int>(g.points.size());
-  const int nc = static_cast<int>(g.curves.size());
-  if (nc == 0) {
-    errors.push_back({kGeometryField + "/curves",
-                      "the geometry has no curves; give at least "
-                      "one closed loop of segments and arcs"});
-    return errors;
-  }
-  std::vector<bool> point_ok(np, true);
   Eigen::Vector2d lo = Eigen::Vector2d::Constant(std::numeric_limits<double>::max());
   Eigen::Vector2d hi = -lo;
   for (int i = 0; i < np; ++i) {
@@ -266,7 +262,15 @@ std::vector<MeshProblem> validate_geometry(const GeometrySpec& g) {
   }
   const double scale = np > 0 && (hi - lo).allFinite() ? std::max((hi - lo).norm(), 1e-300) : 1.0;
   const double tol = 1e-9 * scale;
+  return tol;
+}
 
+/// Reports curves whose points do not exist, of zero length, or arcs that are not arcs;
+/// returns which curves are usable.
+std::vector<bool> check_curves(const GeometrySpec& g, const std::vector<bool>& point_ok, double tol,
+                               std::vector<MeshProblem>& errors) {
+  const int np = static_cast<int>(g.points.size());
+  const int nc = static_cast<int>(g.curves.size());
   auto valid_point = [&](int i) { return i >= 0 && i < np && point_ok[i]; };
   std::vector<bool> curve_ok(nc, true);
   for (int k = 0; k < nc; ++k) {
@@ -312,8 +316,12 @@ std::vector<MeshProblem> validate_geometry(const GeometrySpec& g) {
                         "ambiguous; split it into two arcs"});
     }
   }
+  return curve_ok;
+}
 
-  // Groups: non-empty unique names, every curve in exactly one group.
+/// Groups: non-empty unique names, every curve in exactly one group.
+void check_groups(const GeometrySpec& g, std::vector<MeshProblem>& errors) {
+  const int nc = static_cast<int>(g.curves.size());
   std::vector<int> group_of(nc, -1);
   for (int gi = 0; gi < static_cast<int>(g.groups.size()); ++gi) {
     const auto& grp = g.groups[gi];
@@ -349,11 +357,12 @@ std::vector<MeshProblem> validate_geometry(const GeometrySpec& g) {
       errors.push_back({curve_ptr(k), "curve " + std::to_string(k) +
                                           " is in no group; every curve must be in exactly one "
                                           "group"});
+}
 
-  if (std::find(curve_ok.begin(), curve_ok.end(), false) != curve_ok.end()) return errors;
-
-  // One closed loop: distinct points at one place, every end point joining exactly two curves,
-  // and all curves connected.
+/// One closed loop: distinct points at one place, every end point joining exactly two curves,
+/// and all curves connected.
+void check_one_loop(const GeometrySpec& g, double tol, std::vector<MeshProblem>& errors) {
+  const int np = static_cast<int>(g.points.size());
   std::vector<int> degree(np, 0);
   for (const auto& cv : g.curves)
     for (int p : cv.points) ++degree[p];
@@ -381,12 +390,28 @@ std::vector<MeshProblem> validate_geometry(const GeometrySpec& g) {
                                           "where every end point joins exactly two curves"});
       loop_ok = false;
     }
-  if (loop_ok && walk_loop(g).empty()) {
+  if (loop_ok && walk_loop(g).empty())
     errors.push_back({kGeometryField + "/curves",
                       "the curves form several separate loops; the boundary must be one closed "
                       "loop (holes are not supported)"});
-    loop_ok = false;
+}
+
+}  // namespace
+
+std::vector<MeshProblem> validate_geometry(const GeometrySpec& g) {
+  std::vector<MeshProblem> errors;
+  if (g.curves.empty()) {
+    errors.push_back({kGeometryField + "/curves",
+                      "the geometry has no curves; give at least "
+                      "one closed loop of segments and arcs"});
+    return errors;
   }
+  std::vector<bool> point_ok(g.points.size(), true);
+  const double tol = check_points(g, point_ok, errors);
+  const std::vector<bool> curve_ok = check_curves(g, point_ok, tol, errors);
+  check_groups(g, errors);
+  if (std::find(curve_ok.begin(), curve_ok.end(), false) != curve_ok.end()) return errors;
+  check_one_loop(g, tol, errors);
   check_intersections(g, curve_ok, tol, errors);
   return errors;
 }

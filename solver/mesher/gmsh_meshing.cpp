@@ -235,20 +235,14 @@ std::optional<BoundaryCurve> circle_of_entity(int tag) {
 
 }  // namespace
 
-MeshData mesh_geometry_with_gmsh(const GeometryMeshRequest& request) {
-  const GeometrySpec& g = request.geometry;
-  const SizeField& size = request.size;
-  // The caller has refused sizes that are too small (coarse_mesh_estimate.hpp); the geometry is
-  // checked again because meshing relies on it forming one valid loop.
-  std::vector<MeshProblem> problems = check_size_field(size);
-  if (problems.empty()) problems = validate_geometry(g);
-  if (!problems.empty()) throw MeshError(std::move(problems));
-  const std::vector<int> loop = walk_loop(g);
+namespace {
 
-  // Arcs on one circle (same centre point, same radius) share one BoundaryCurve.
+/// Arcs on one circle (same centre point, same radius) share one BoundaryCurve: the circles,
+/// and each curve's circle (−1: a segment).
+std::vector<BoundaryCurve> shared_circles(const GeometrySpec& g, std::vector<int>& curve_circle) {
   std::vector<BoundaryCurve> circles;
   std::vector<int> circle_center;
-  std::vector<int> curve_circle(g.curves.size(), -1);
+  curve_circle.assign(g.curves.size(), -1);
   for (std::size_t k = 0; k < g.curves.size(); ++k) {
     const auto& cv = g.curves[k];
     if (!cv.is_arc) continue;
@@ -263,6 +257,67 @@ MeshData mesh_geometry_with_gmsh(const GeometryMeshRequest& request) {
       circle_center.push_back(cv.center);
     }
   }
+  return circles;
+}
+
+/// The geometry as gmsh's built-in (geo) model: points, curves, the loop, the surface and a
+/// physical group per boundary group.
+void add_geo_model(const GeometrySpec& g, const std::vector<int>& loop) {
+  namespace geo = gmsh::model::geo;
+  std::vector<bool> needed(g.points.size(), false);
+  for (const auto& cv : g.curves) {
+    needed[cv.points[0]] = needed[cv.points[1]] = true;
+    if (cv.is_arc) needed[cv.center] = true;
+  }
+  for (std::size_t i = 0; i < g.points.size(); ++i)
+    if (needed[i])
+      geo::addPoint(g.points[i].x(), g.points[i].y(), 0.0, 0.0, static_cast<int>(i) + 1);
+  for (std::size_t k = 0; k < g.curves.size(); ++k) {
+    const auto& cv = g.curves[k];
+    const int tag = static_cast<int>(k) + 1;
+    if (cv.is_arc)
+      geo::addCircleArc(cv.points[0] + 1, cv.center + 1, cv.points[1] + 1, tag);
+    else
+      geo::addLine(cv.points[0] + 1, cv.points[1] + 1, tag);
+  }
+  geo::addCurveLoop(loop, 1);
+  geo::addPlaneSurface({1}, 1);
+  for (std::size_t gi = 0; gi < g.groups.size(); ++gi) {
+    std::vector<int> tags;
+    for (int k : g.groups[gi].curves) tags.push_back(k + 1);
+    const int ptag = geo::addPhysicalGroup(1, tags, static_cast<int>(gi) + 1);
+    gmsh::model::setPhysicalName(1, ptag, g.groups[gi].name);
+  }
+  geo::addPhysicalGroup(2, {1}, 1);
+  geo::synchronize();
+}
+
+/// Triangles sized by the size field alone (no size from points, boundary or curvature).
+void set_size_field(const SizeField& size) {
+  gmsh::option::setNumber("Mesh.Algorithm", 6);
+  gmsh::option::setNumber("Mesh.MeshSizeMin", 0);
+  gmsh::option::setNumber("Mesh.MeshSizeMax", 1e22);
+  gmsh::option::setNumber("Mesh.MeshSizeFactor", 1);
+  gmsh::option::setNumber("Mesh.MeshSizeFromPoints", 0);
+  gmsh::option::setNumber("Mesh.MeshSizeExtendFromBoundary", 0);
+  gmsh::option::setNumber("Mesh.MeshSizeFromCurvature", 0);
+  gmsh::model::mesh::setSizeCallback(
+      [&size](int, int, double x, double y, double) { return size.at(Point(x, y)); });
+}
+
+}  // namespace
+
+MeshData mesh_geometry_with_gmsh(const GeometryMeshRequest& request) {
+  const GeometrySpec& g = request.geometry;
+  const SizeField& size = request.size;
+  // The caller has refused sizes that are too small (coarse_mesh_estimate.hpp); the geometry is
+  // checked again because meshing relies on it forming one valid loop.
+  std::vector<MeshProblem> problems = check_size_field(size);
+  if (problems.empty()) problems = validate_geometry(g);
+  if (!problems.empty()) throw MeshError(std::move(problems));
+  const std::vector<int> loop = walk_loop(g);
+  std::vector<int> curve_circle;
+  const std::vector<BoundaryCurve> circles = shared_circles(g, curve_circle);
   std::vector<CurveEntity> entities;
   std::vector<std::string> names;
   for (std::size_t gi = 0; gi < g.groups.size(); ++gi) {
@@ -276,44 +331,9 @@ MeshData mesh_geometry_with_gmsh(const GeometryMeshRequest& request) {
     ensure_gmsh_initialized();
     ModelScope scope;
     set_common_options();
-    namespace geo = gmsh::model::geo;
-    std::vector<bool> needed(g.points.size(), false);
-    for (const auto& cv : g.curves) {
-      needed[cv.points[0]] = needed[cv.points[1]] = true;
-      if (cv.is_arc) needed[cv.center] = true;
-    }
-    for (std::size_t i = 0; i < g.points.size(); ++i)
-      if (needed[i])
-        geo::addPoint(g.points[i].x(), g.points[i].y(), 0.0, 0.0, static_cast<int>(i) + 1);
-    for (std::size_t k = 0; k < g.curves.size(); ++k) {
-      const auto& cv = g.curves[k];
-      const int tag = static_cast<int>(k) + 1;
-      if (cv.is_arc)
-        geo::addCircleArc(cv.points[0] + 1, cv.center + 1, cv.points[1] + 1, tag);
-      else
-        geo::addLine(cv.points[0] + 1, cv.points[1] + 1, tag);
-    }
-    geo::addCurveLoop(loop, 1);
-    geo::addPlaneSurface({1}, 1);
-    for (std::size_t gi = 0; gi < g.groups.size(); ++gi) {
-      std::vector<int> tags;
-      for (int k : g.groups[gi].curves) tags.push_back(k + 1);
-      const int ptag = geo::addPhysicalGroup(1, tags, static_cast<int>(gi) + 1);
-      gmsh::model::setPhysicalName(1, ptag, g.groups[gi].name);
-    }
-    geo::addPhysicalGroup(2, {1}, 1);
-    geo::synchronize();
-
+    add_geo_model(g, loop);
     set_common_options();
-    gmsh::option::setNumber("Mesh.Algorithm", 6);
-    gmsh::option::setNumber("Mesh.MeshSizeMin", 0);
-    gmsh::option::setNumber("Mesh.MeshSizeMax", 1e22);
-    gmsh::option::setNumber("Mesh.MeshSizeFactor", 1);
-    gmsh::option::setNumber("Mesh.MeshSizeFromPoints", 0);
-    gmsh::option::setNumber("Mesh.MeshSizeExtendFromBoundary", 0);
-    gmsh::option::setNumber("Mesh.MeshSizeFromCurvature", 0);
-    gmsh::model::mesh::setSizeCallback(
-        [&size](int, int, double x, double y, double) { return size.at(Point(x, y)); });
+    set_size_field(size);
     gmsh::model::mesh::generate(2);
     return extract_mesh(entities, names, circles, kGeometryField, "");
   });
