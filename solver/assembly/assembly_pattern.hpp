@@ -1,7 +1,7 @@
 #pragma once
 // Pattern-first assembly: the sparsity of the FOSLS matrix follows from the mesh
 // topology alone, so it is computed once, the values are written into it in place and no
-// triplet lists are kept (they were the assembly's peak, about 1 KiB per DOF).
+// triplet lists are kept (they were the assembly's peak: docs/performance.md, "Assembly").
 
 #include <algorithm>
 #include <array>

@@ -4,12 +4,12 @@
 // J = J0 + c3·⟨u·n − g, σ_nn⟩ where J0 (the c1, c2, c4 terms) is a sum of squares and the
 // contact term is bilinear and indefinite. With A0 the matrix of J0 and B that of the contact
 // term, A0 + c3·B is positive definite exactly for c3 < c3* = −1/μ_min, μ_min the smallest
-// eigenvalue of the pencil B x = μ A0 x (docs/method.md §2.1). c3* depends on the geometry: it
-// is about 0.4 on a block and 0.02 on a strip 20 times longer than thick, so no fixed default
+// eigenvalue of the pencil B x = μ A0 x (docs/method.md §2.1). c3* depends on the geometry, by
+// more than an order of magnitude between a block and a long thin strip, so no fixed default
 // fits every case. The rule: c3 = min(0.1, c3* / 2), with c3* computed on the finest level of
 // at most kWeightLevelDofs unknowns (c3* converges under refinement — the trace inequality
 // bounds the contact term by the H¹ × H(div) norm — and the factor ½ covers the difference to
-// the finest level, measured below 30 % on every case we keep).
+// the finest level: docs/performance.md, "Measurements behind choices in the code").
 
 #include "assembly/problem_data.hpp"
 #include "mesh/refinement.hpp"

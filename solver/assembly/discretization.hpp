@@ -31,8 +31,7 @@ class Discretization {
   /// curves turn the boundary normal by at most `max_turn` radians. Where a coarse edge
   /// spans a large part of an arc, coarse and fine contact boundaries differ too much for the
   /// coarse functions to represent the tractions there (measured on a punch with rounded
-  /// corners of radius 2 × the coarse size: 77 iterations with its coarsest level, whose
-  /// edges turn by 0.5 rad, 57 without it; 23 from a coarse mesh of half the size).
+  /// corners: docs/performance.md, "Measurements behind choices in the code").
   int coarsest_solver_level(double max_turn = kMaxCoarseTurn) const;
   static constexpr double kMaxCoarseTurn = 0.3;
 
@@ -58,9 +57,9 @@ std::vector<std::vector<int>> vertex_patches(const FoslsSpace& space,
 std::vector<char> new_vertices_and_neighbours(const Mesh& fine, const RefinementMaps& maps);
 
 /// Free DOFs of the triangles within `layers` layers of the contact boundary (the strip
-/// smoother's block), sorted; empty without contact. Two layers make the measured iteration
-/// counts level-independent on the square benchmark (one layer does not: 32, 49 iterations
-/// at 4 and 5 levels against 32, 34, 30 with two).
+/// smoother's block), sorted; empty without contact. Two layers make the iteration counts
+/// level-independent on the square benchmark, one layer does not (docs/performance.md,
+/// "Measurements behind choices in the code").
 std::vector<int> contact_strip(const FoslsSpace& space, int layers = 2);
 
 }  // namespace fosls

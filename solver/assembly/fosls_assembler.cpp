@@ -110,8 +110,9 @@ FoslsAssembler::FoslsAssembler(const FoslsSpace& space, const ProblemData& data)
   if (!(mu_ > 0)) throw std::invalid_argument("mu must be positive");
   const double lambda = data.material.lambda / mu_;  // scaled: μ = 1
   kappa_ = data.material.incompressible() ? 0.5 : lambda / (2.0 * lambda + 2.0);
-  // Without a body force (most contact cases) nothing is stored: six zeros per triangle were
-  // 26 MiB of a 2.1M-unknown solve.
+  // Without a body force (most contact cases) nothing is stored: six zeros per triangle were a
+  // measurable part of a large solve (docs/performance.md, "Measurements behind choices in the
+  // code").
   if (data.body_force[0] || data.body_force[1]) body_force_.resize(mesh.num_triangles());
   for (int t = 0; t < static_cast<int>(body_force_.size()); ++t) {
     ElementGeometry g(mesh, t);

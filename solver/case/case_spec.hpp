@@ -90,9 +90,9 @@ struct Weights {
 struct AdaptivitySpec {
   int steps = 10;                ///< refinement steps at most (steps + 1 solves)
   long long max_dofs = 200'000;  ///< a refinement that would give more DOFs is not made
-  /// Dörfler parameter: refine the triangles of θ of J. 0.7, measured against 0.5, 0.6 and
-  /// 0.8 (docs/validation.md §10): the same J^½ per unknown on Hertz and the optimal rate on
-  /// the L-shaped corner, in 1.4–1.8 times less time, since fewer steps are solved.
+  /// Dörfler parameter: refine the triangles of θ of J. 0.7 against 0.5, 0.6 and 0.8: the
+  /// same accuracy per unknown in less time, since fewer steps are solved (docs/validation.md
+  /// §10; docs/performance.md, "Measurements behind choices in the code").
   double theta = 0.7;
   /// Stop once the estimator J^½ has fallen to `target` times its value on the starting mesh
   /// (0: no target).

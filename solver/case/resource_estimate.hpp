@@ -43,10 +43,8 @@ ResourceEstimate estimate_resources(long long unknowns, bool exact, SolverMethod
 
 /// An adaptive run's peak: its finest level has at most `max_dofs` unknowns, and mmg and tnnmg
 /// keep every level of the bisection hierarchy, whose sizes fall by about 2/3 per level (about
-/// 3 N in all against 4/3 N for uniform levels). Measured on hertz_adaptive in the same run as
-/// the coefficients (memory_calibration.py --adaptive): peak over the uniform estimate 2.05,
-/// 2.02, 2.14 at 6, 8, 10 steps (29 916 to 268 340 unknowns, 8 to 12 levels); 2.5 keeps a
-/// margin of 17 % for deeper hierarchies.
+/// 3 N in all against 4/3 N for uniform levels); 2.5 covers the measured factors with a margin
+/// for deeper hierarchies (memory_calibration.py --adaptive, docs/case-format.md "Resources").
 inline constexpr double kAdaptiveHierarchyFactor = 2.5;
 ResourceEstimate estimate_adaptive_resources(long long max_dofs, SolverMethod method);
 

@@ -12,12 +12,12 @@ std::optional<double> estimated_seconds(long long unknowns, SolverMethod method)
   switch (method) {
     case SolverMethod::kMmg:
     case SolverMethod::kTnnmg:
-      // O(N): 13–14 iterations at every level; 22–27 µs per unknown at 33k–525k unknowns
-      // (README solver table, two threads).
+      // O(N): the same iterations at every level (fitted on the solver table, two threads:
+      // docs/performance.md, "Measurements behind choices in the code").
       return 0.1 + 25e-6 * n;
     case SolverMethod::kPdas:
-      // The factorisation grows faster than N: 9.6 s at 131 200 unknowns and 357 s at
-      // 2 097 664 give the exponent 1.3 (the fit is within 40 % at 8k–525k).
+      // The factorisation grows faster than N (the fit: docs/performance.md, "Measurements
+      // behind choices in the code").
       return 9.6 * std::pow(n / 131200.0, 1.3);
     case SolverMethod::kPgs:
       return std::nullopt;

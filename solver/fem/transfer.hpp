@@ -21,9 +21,9 @@ namespace fosls {
 /// its parent edge's coarse flux only (so fixing or truncating it touches no other coarse
 /// function), and every fine triangle's divergence is the coarse one times an area ratio (so
 /// divergence-free coarse fields stay divergence-free). Evaluating the coarse field on the
-/// snapped geometry instead was measured to slow the multilevel method on the Hertz mesh
-/// (two-grid rate 0.66 → 0.75): the other coarse edges' fields then carry flux through curved
-/// Neumann halves, whose fixed fluxes drop it.
+/// snapped geometry instead slows the multilevel method on the Hertz mesh (docs/performance.md,
+/// "Measurements behind choices in the code"): the other coarse edges' fields then carry flux
+/// through curved Neumann halves, whose fixed fluxes drop it.
 Eigen::SparseMatrix<double> cartesian_prolongation(const Mesh& coarse, const Mesh& fine,
                                                    const RefinementMaps& maps);
 

@@ -17,8 +17,8 @@ inline constexpr double kMaxCoarseTriangles = 250000;
 /// Estimated coarse boundary edges above which meshing is refused. Within the triangle limit a
 /// mesh has this many boundary edges only when the domain is very long and thin (aspect ratio
 /// beyond ~400) or much thinner than the mesh size, and there gmsh's 2D Delaunay is slow and
-/// fragile. Measured on rectangles of height 1e-4 with size 1e-3 (gmsh 4.8, loaded machine):
-/// 18 000 boundary edges 6.4 s, 40 000 12.7 s, 200 000 59 s, 300 000 and more abort.
+/// fragile: minutes and aborts beyond a few times this limit (docs/performance.md, "Measurements
+/// behind choices in the code").
 inline constexpr double kMaxCoarseBoundaryEdges = 10000;
 
 /// Estimated counts of the coarse mesh for a size field.

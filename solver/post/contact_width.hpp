@@ -2,8 +2,7 @@
 // The contact width: the length of the contact zone along the boundary, with each contact front
 // placed where the pressure profile reaches zero. The edges with p > 0 overestimate it: the
 // front lies inside the outermost of them, and the discrete pressure has a small positive tail
-// (on Hertz, the loaded edges' extent is 8 % wide at 27k unknowns where the interpolated width
-// is 4 %, docs/validation.md §1).
+// (docs/validation.md §1; docs/performance.md, "Measurements behind choices in the code").
 
 #include "mesh/mesh.hpp"
 #include "post/contact_output.hpp"

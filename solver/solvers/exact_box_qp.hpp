@@ -24,14 +24,13 @@ bool solve_dense_box_qp(const Eigen::MatrixXd& A, const Vector& r, const Vector&
 /// the last free set is kept while the free set does not change. Not thread-safe: one solver
 /// per cycle or smoother.
 ///
-/// The primal method factorises once per bound it meets: from δ = 0 on a large coarsest level
-/// with many contact bounds (the rounded punch at refinements 1: 15 120 unknowns, one level)
-/// that was 3.4 s of a 4.2 s solve. So a solve first tries primal–dual active-set steps, which
-/// change many bounds per factorisation; when their active sets settle, the result is the exact
-/// minimiser, feasible (clipped for rounding) and with J(δ) ≤ J(0) = 0 (checked) — all the
-/// cycle's monotonicity needs of the coarse correction. Only when they do not settle
-/// (primal–dual steps can cycle) or the check fails in rounding does the primal method run,
-/// from δ = 0 as before.
+/// The primal method factorises once per bound it meets, which from δ = 0 on a large coarsest
+/// level with many contact bounds is most of a solve (docs/performance.md, "Measurements behind
+/// choices in the code"). So a solve first tries primal–dual active-set steps, which change many
+/// bounds per factorisation; when their active sets settle, the result is the exact minimiser,
+/// feasible (clipped for rounding) and with J(δ) ≤ J(0) = 0 (checked) — all the cycle's
+/// monotonicity needs of the coarse correction. Only when they do not settle (primal–dual steps can
+/// cycle) or the check fails in rounding does the primal method run, from δ = 0 as before.
 class SparseBoxQpSolver {
  public:
   /// Throws IndefiniteSystemError when A is not positive definite.

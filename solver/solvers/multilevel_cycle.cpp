@@ -39,10 +39,8 @@ MultilevelCycle::MultilevelCycle(const BoxQp& qp, const LevelHierarchy& hierarch
   // uniform level (factor ≈ 4) revisiting, as before, and on bisection levels (factor ≈ 1.1
   // to 1.5 each) revisits where the size has halved: a level of N_k unknowns is then visited
   // at most N/N_k times, so a cycle costs O(N log N) instead of the W-cycle's (γ/1.5)^levels
-  // N. Measured on the adaptive Hertz case, 9 steps to 27 242 unknowns on 10 levels:
-  // 15.2 s CPU with the W-cycle, 5.5 s with this rule, 4.7 s with a V-cycle on the
-  // bisection levels; iterations per step 10–26, 15–26 and 15–26; on the adaptive Signorini
-  // square the V-cycle's grow with the steps (13 → 42 over 6 steps), this rule's stay 15–28.
+  // N, with the iterations of the W-cycle, where a V-cycle's grow with the adaptive steps
+  // (docs/performance.md, "Measurements behind choices in the code").
   revisit_.assign(nl, 0);
   long long reference = qp.size();
   for (int j = nl - 1; j >= 2; --j) {

@@ -23,17 +23,16 @@ class PatchSmoother : public Smoother {
   /// One Gauss–Seidel sweep over the patches in the order [block 0, block 1, rest] (reversed
   /// backwards). With two or more OpenMP threads and large blocks, the two blocks run on two
   /// threads that meet once per sweep: the same iterate as the sequential sweep. (A sweep by
-  /// colours, a barrier per colour, was measured no faster, 2.01 s against 2.18 s at 131k DOFs,
-  /// and 6× slower when another process held a core.)
+  /// colours, a barrier per colour, was no faster, and much slower when another process held a
+  /// core: docs/performance.md, "Measurements behind choices in the code".)
   void sweep(Vector& x, Vector& r, const Vector& lo, const Vector& hi, bool forward) const override;
   /// Whether the patch factors are kept in single precision (small_cholesky_factors.hpp).
   bool single_precision() const { return factors_.single_precision(); }
   bool double_precision_factors() const override { return !single_precision(); }
 
-  /// Blocks with fewer patches are swept on one thread. 250 patches take ≈ 0.5 ms, far more
-  /// than the threads' meeting; lowering this from 2000 made the square 5–7 % faster at levels
-  /// 5–7 on two threads (the W-cycle's small levels are visited often), iterates bit for bit
-  /// the same (docs/performance.md, "Small levels on two threads").
+  /// Blocks with fewer patches are swept on one thread. This many take far longer than the
+  /// threads' meeting, and the W-cycle's small levels are visited often, so a low threshold
+  /// pays; iterates bit for bit the same (docs/performance.md, "Small levels on two threads").
   static constexpr int kMinParallelPatches = 250;
 
  private:

@@ -10,9 +10,8 @@
 // dᵀÃd ≥ (1 − ε) dᵀA_p d, so ½dᵀA_p d − rᵀd ≤ −½(1 − 2ε) dᵀA_p d < 0 (docs/method.md §4.1).
 // The residual stays in double, so the accuracy the iteration reaches does not change; only the
 // local solves are inexact, by ε. ε is bounded for every matrix (rounding_bound); if one bound
-// exceeds kMaxSinglePerturbation, all factors are kept in double. Measured: the largest bound
-// 1.3e-4 on the robustness cases and 1.7e-4 on the square at 524k unknowns, about doubling per
-// level — 10⁻² would be reached some six levels later, beyond the case limit.
+// exceeds kMaxSinglePerturbation, all factors are kept in double; the bounds met stay far below
+// it up to the case limit (docs/performance.md, "Measurements behind choices in the code").
 
 #include <Eigen/Dense>
 #include <cstddef>

@@ -54,8 +54,8 @@ struct SolverOptions {
   bool accelerate = true;
   /// mmg and tnnmg: run chain_is_definite before solving. An adaptive step after the first
   /// leaves it out: the weights were checked on the first step, and a step's check, a CHOLMOD
-  /// factorisation of up to 5·10⁴ unknowns, cost 15–25 % of the steps below that size
-  /// (docs/performance.md, adaptivity).
+  /// factorisation of up to 5·10⁴ unknowns, is a large part of a small step (docs/performance.md,
+  /// "Measurements behind choices in the code").
   bool check_definiteness = true;
 };
 

@@ -241,7 +241,8 @@ SparseMatrix TruncatedHierarchy::flux_moves(int j, std::vector<char>& coarse) {
     // Zeroing the flux of one half of a coarse contact edge leaves the edge's coarse S_n
     // function with a divergence of order 1/h² in that half's fine triangle: so stiff that the
     // coarse levels cannot represent a normal traction on coarse edges that straddle the end
-    // of the contact zone, and the linear phase slows to rates of 0.92–0.96. The function keeps
+    // of the contact zone, and the linear phase slows down (docs/performance.md, "Measurements
+    // behind choices in the code"). The function keeps
     // its flux instead: the truncated half's share goes to the free half, and the fine edges
     // between the halves carry it with the least energy, so the divergence stays bounded and
     // the truncated DOF is untouched.

@@ -3,7 +3,8 @@
 // level's truncated DOFs, plus the few flux moves that keep coarse contact functions'
 // divergence bounded. On coarse levels it is formed as a matrix (the Galerkin product of the
 // next level needs it); on the finest it is applied from P, the truncated set and the moves,
-// since there it would be a near-copy of the largest transfer (36 MiB at 2.1M unknowns).
+// since there it would be a near-copy of the largest transfer (docs/performance.md, "Measurements
+// behind choices in the code").
 
 #include <vector>
 

@@ -1,6 +1,7 @@
 // The rough time guide of `fosls-contact estimate` (docs/case-format.md, "Resources") against
-// the solver table it was fitted on (README, two threads): within a factor 1.5 of every
-// measured total up to 525k unknowns, O(N) for the multilevel methods, faster than N for pdas.
+// the solver table it was fitted on (docs/performance.md, "Solver table", two threads):
+// within a factor 1.5 of every measured total up to 525k unknowns, O(N) for the multilevel methods,
+// faster than N for pdas.
 #include <gtest/gtest.h>
 
 #include "case/solver_methods.hpp"
