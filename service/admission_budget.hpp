@@ -1,9 +1,9 @@
 #pragma once
-// The memory budget an API process admits cases against (docs/service.md, "Admission"): the
-// workers' --max-job-memory as they declared it in the store — the smallest of those running,
-// since any of them may claim any job — else, before any worker declared one, this process's
-// own --max-job-memory. An API-only process (--workers 0) therefore refuses what its workers
-// could not run, whatever memory its own host has.
+// The memory budget an API process admits cases against (docs/service.md, "Command line",
+// --max-job-memory): the workers' --max-job-memory as they declared it in the store — the smallest
+// of those running, since any of them may claim any job — else, before any worker declared one,
+// this process's own --max-job-memory. An API-only process (--workers 0) therefore refuses what its
+// workers could not run, whatever memory its own host has.
 
 #include <chrono>
 #include <cstddef>

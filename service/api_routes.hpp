@@ -2,8 +2,9 @@
 // The routes of the HTTP API as one table (docs/service.md, "API"): each entry is a method, a
 // path template, its handler in HttpApi and its OpenAPI operation, side by side. The server
 // registers exactly these (HttpApi::install), 405 answers and metrics labels are derived from
-// them, and the OpenAPI document is built from them (openapi.cpp). A new route is one entry
-// here and its handler in HttpApi (docs/architecture.md, "Where to add").
+// them, and the OpenAPI document is built from them (openapi.cpp). A new route touches three
+// files: its entry in the table (api_routes.cpp) and its handler in HttpApi (http_api.hpp,
+// http_api.cpp; docs/architecture.md, "Where to add").
 
 #include <httplib.h>
 

@@ -59,7 +59,7 @@ constexpr const char* kFinishedStates = "('succeeded', 'failed', 'cancelled')";
 // each text must run in both dialects (docs/service.md lists the versions).
 const std::vector<SchemaMigration> kSharedSteps = {
     // What each worker process may give a job (--max-job-memory), so that API-only processes
-    // admit cases against the workers' budget, not their own (docs/service.md, "Admission").
+    // admit cases against the workers' budget, not their own (docs/service.md, "Command line").
     {0, "the workers' memory budgets", R"sql(
 CREATE TABLE worker_budgets (
   process_id TEXT PRIMARY KEY,

@@ -1,10 +1,11 @@
 #pragma once
 // The rules of the case format as data: for every field its type, range, default and meaning,
 // stated once. The reader checks a case against them (rule_checker.hpp) and words its error
-// messages from them; the JSON Schema of the case (case_schema.hpp) and the field tables of
-// docs/case-format.md (case_docs.hpp) are generated from the same rules, so the three cannot
-// disagree. Rules a table cannot state (an expression must parse, a geometry must be one
-// closed loop, ...) are hooks of the section that owns them, described in words by `notes`.
+// messages from them; the JSON Schema of the case (rules_schema.hpp, `fosls-contact schema`)
+// and the field tables of docs/case-format.md (rules_markdown.hpp) are generated from the same
+// rules, so the three cannot disagree. Rules a table cannot state (an expression must parse, a
+// geometry must be one closed loop, ...) are hooks of the section that owns them, described in
+// words by `notes`.
 
 #include <functional>
 #include <limits>

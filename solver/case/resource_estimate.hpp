@@ -1,7 +1,7 @@
 #pragma once
 // How much memory a case's solve needs, from its unknowns and its method, before it is solved:
 // the service admits a case only when the estimate fits its per-job budget, and the CLI prints
-// the estimate (`fosls-contact solve --dry-run`). The coefficients are measured, not derived:
+// the estimate (`fosls-contact estimate`). The coefficients are measured, not derived:
 // tests/benchmarks/memory_calibration.py re-measures them (docs/case-format.md, "Resources").
 
 #include <cstddef>
@@ -30,7 +30,7 @@ long long unknowns_after_refinement(long long triangles, long long edges, long l
 /// the other counts follow from Euler's formula for a disk.
 long long unknowns_after_refinement(double triangles, double boundary_edges, int refinements);
 
-/// What admission and --dry-run report.
+/// What admission and `fosls-contact estimate` report.
 struct ResourceEstimate {
   long long unknowns = 0;
   bool unknowns_exact = false;  ///< false when the coarse mesh was estimated, not built

@@ -330,7 +330,7 @@ async function loadResult(job) {
   }
 }
 
-// A second job's result over the shown one's curves (docs/web.md, "Comparing two jobs").
+// A second job's result over the shown one's curves (docs/web.md, "Compare with").
 async function compareWith(job) {
   const view = state.view;
   if (!view?.result) return;
