@@ -11,7 +11,7 @@ build/public_headers.txt (the headers programs outside the library may include).
   - a file in solver/<folder>/ includes a header of a folder its library does not link,
     directly or through the libraries it links (the compiler fails too: each library sees
     only its own include roots; this check also catches "../" paths and names the file);
-  - a file in solver/cli/ or service/ includes a library header that is not public;
+  - a file in solver/cli/, service/ or examples/ includes a library header that is not public;
   - the folder graph of the includes or of the links has a cycle;
   - the generated graph in docs/architecture.md differs from the includes.
 """
@@ -107,7 +107,7 @@ def check(build):
                         "what it needs in a type of this layer")
                 elif target_folder != folder:
                     graph[folder].add(target_folder)
-    for where, own in (("solver/cli", "cli"), ("service", None)):
+    for where, own in (("solver/cli", "cli"), ("service", None), ("examples", None)):
         for path in sources(os.path.join(ROOT, where)):
             rel = os.path.relpath(path, ROOT)
             for target, written in includes(path):
