@@ -381,7 +381,7 @@ def main():
                 if not (exists("solver/" + path) or exists(path)):
                     problems.append(f"{where}: {path} does not exist (in solver/)")
             # Bare file names.
-            for m in re.finditer(r"(?<![\w./<*-])([\w-]+\.(?:hpp|cpp))(?![\w/])", piece):
+            for m in re.finditer(r"(?<![\w./<>*-])([\w-]+\.(?:hpp|cpp))(?![\w/])", piece):
                 if m.group(1) not in basenames:
                     problems.append(f"{where}: {m.group(1)} does not exist")
             # Sections by number.
