@@ -49,6 +49,90 @@ std::string url_host(const std::string& host) {
   return host.find(':') != std::string::npos ? "[" + host + "]" : host;
 }
 
+/// A --workers 0 process on SQLite queues jobs nothing can solve: said once at start.
+void warn_if_nothing_solves(fosls::service::EventLog& log, const ServeOptions& o,
+                            const fosls::service::OpenedStore& opened) {
+  using fosls::service::StoreLocation;
+  if (o.worker.workers == 0 && opened.location.kind == StoreLocation::Kind::kSqlite) {
+    log.write("warning", {{"message",
+                           "--workers 0 on a sqlite: store: nothing will solve the jobs queued "
+                           "here (a SQLite file belongs to one process; fosls-worker needs "
+                           "--store postgresql://…)"}});
+  }
+}
+
+fosls::service::HttpApiOptions api_options(const ServeOptions& o) {
+  fosls::service::HttpApiOptions api_options;
+  api_options.max_queue = o.max_queue;
+  api_options.max_body_bytes = o.max_body_bytes;
+  api_options.web_root = o.web_root;
+  // Large submissions are read on low-priority threads, one per core.
+  api_options.admission_threads =
+      static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
+  return api_options;
+}
+
+void configure_http_threads(fosls::service::BoundedHttpServer& server, int http_threads) {
+  // The Debian library is compiled: CPPHTTPLIB_THREAD_POOL_COUNT has no effect, only this.
+  // Grows up to 16 times that while every thread holds a connection, so slow or silent
+  // clients cannot keep /healthz and everyone else waiting; a silent one is dropped after
+  // the read timeout.
+  server.new_task_queue = [http_threads] {
+    return new fosls::service::ElasticThreadPool(http_threads, 16 * http_threads);
+  };
+  server.set_read_timeout(2);
+  server.set_keep_alive_timeout(2);
+  server.set_keep_alive_max_count(1000);
+}
+
+/// The port listened on (--port 0: a free one), or -1 after saying why not.
+int bind_port(fosls::service::BoundedHttpServer& server, const ServeOptions& o) {
+  const int port = o.port == 0 ? server.bind_to_any_port(o.host)
+                               : (server.bind_to_port(o.host, o.port) ? o.port : -1);
+  if (port < 0) {
+    std::cerr << "fosls-serve: cannot listen on " << o.host << ":" << o.port
+              << " (address in use or not available)\n";
+  }
+  return port;
+}
+
+/// The retention sweeper, started, or none when --retention-hours is 0.
+std::unique_ptr<fosls::service::RetentionSweeper> start_sweeper(fosls::service::JobStore& store,
+                                                                fosls::service::EventLog& log,
+                                                                double retention_hours) {
+  if (retention_hours <= 0) return nullptr;
+  const auto retention =
+      std::chrono::milliseconds(static_cast<std::int64_t>(retention_hours * 3600.0 * 1000.0));
+  const auto interval = std::clamp(retention / 4, std::chrono::milliseconds(1000),
+                                   std::chrono::milliseconds(10 * 60 * 1000));
+  auto sweeper =
+      std::make_unique<fosls::service::RetentionSweeper>(store, log, retention, interval);
+  sweeper->start();
+  return sweeper;
+}
+
+/// Serves on the bound server until a stop signal (or the server ending on its own), then
+/// stops accepting and lets running solves go back to the queue.
+void serve_until_stopped(fosls::service::BoundedHttpServer& server,
+                         fosls::service::WorkerPool& pool, fosls::service::EventLog& log,
+                         const sigset_t& stop_signals) {
+  std::atomic<bool> stopping{false};
+  std::thread http([&] {
+    if (!server.listen_after_bind()) log.write("http_error", {{"error", "listen failed"}});
+    // Wake the main thread if the server ended on its own (not through stop() below).
+    if (!stopping.load()) kill(getpid(), SIGTERM);
+  });
+
+  const int signal_number = fosls::service::wait_for_stop_signal(stop_signals);
+  log.write("stopping", {{"signal", signal_number}});
+
+  stopping = true;
+  pool.begin_shutdown();  // running solves see their cancel flag and go back to the queue
+  server.stop();          // stop accepting; finishes requests in progress
+  http.join();
+  pool.join();
+}
+
 int serve(const ServeOptions& o, const sigset_t& stop_signals) {
   using namespace fosls::service;
   EventLog log(std::cerr);
@@ -62,92 +146,43 @@ int serve(const ServeOptions& o, const sigset_t& stop_signals) {
   }
   JobStore& store = *opened.store;
   log_recovery(log, opened.recovered, opened.recovery_reason);
-  if (o.worker.workers == 0 && opened.location.kind == StoreLocation::Kind::kSqlite) {
-    log.write("warning", {{"message",
-                           "--workers 0 on a sqlite: store: nothing will solve the jobs queued "
-                           "here (a SQLite file belongs to one process; fosls-worker needs "
-                           "--store postgresql://…)"}});
-  }
+  warn_if_nothing_solves(log, o, opened);
 
   Metrics metrics;
   WorkerPool pool(store, service_job_runner(o.worker), log, metrics, o.worker.pool_options());
 
-  HttpApiOptions api_options;
-  api_options.max_queue = o.max_queue;
-  api_options.max_body_bytes = o.max_body_bytes;
-  api_options.web_root = o.web_root;
-  // Large submissions are read on low-priority threads, one per core.
-  api_options.admission_threads =
-      static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
   // Cases are admitted against what the workers declared in the store (an API-only process
   // included), against this process's own budget until one has (admission_budget.hpp).
   AdmissionBudget budget(store, o.worker.job_memory_bytes());
   std::function<MemoryBudget()> admission;
   if (!o.worker.admit_over_budget) admission = [&budget] { return budget.current(); };
-  HttpApi api(store, pool, submitted_case_validator(admission), metrics, log, api_options);
+  HttpApi api(store, pool, submitted_case_validator(admission), metrics, log, api_options(o));
 
   // Request heads are read under limits before cpp-httplib parses them (bounded_http_server.hpp).
   BoundedHttpServer server;
-  // The Debian library is compiled: CPPHTTPLIB_THREAD_POOL_COUNT has no effect, only this.
-  const int http_threads = o.http_threads;
-  // Grows up to 16 times that while every thread holds a connection, so slow or silent
-  // clients cannot keep /healthz and everyone else waiting; a silent one is dropped after
-  // the read timeout.
-  server.new_task_queue = [http_threads] {
-    return new ElasticThreadPool(http_threads, 16 * http_threads);
-  };
-  server.set_read_timeout(2);
-  server.set_keep_alive_timeout(2);
-  server.set_keep_alive_max_count(1000);
+  configure_http_threads(server, o.http_threads);
   api.install(server);
 
-  const int port = o.port == 0 ? server.bind_to_any_port(o.host)
-                               : (server.bind_to_port(o.host, o.port) ? o.port : -1);
-  if (port < 0) {
-    std::cerr << "fosls-serve: cannot listen on " << o.host << ":" << o.port
-              << " (address in use or not available)\n";
-    return 1;
-  }
+  const int port = bind_port(server, o);
+  if (port < 0) return 1;
   std::cout << "listening on http://" << url_host(o.host) << ":" << port << std::endl;
   log.write("started", {{"host", o.host},
                         {"port", port},
                         {"store", redacted(opened.location)},
                         {"workers", pool.size()},
-                        {"http_threads", http_threads},
+                        {"http_threads", o.http_threads},
                         {"web_root", o.web_root},
                         {"recovered", opened.recovered.requeued.size()}});
 
   pool.start();
-  std::unique_ptr<RetentionSweeper> sweeper;
-  if (o.retention_hours > 0) {
-    const auto retention =
-        std::chrono::milliseconds(static_cast<std::int64_t>(o.retention_hours * 3600.0 * 1000.0));
-    const auto interval = std::clamp(retention / 4, std::chrono::milliseconds(1000),
-                                     std::chrono::milliseconds(10 * 60 * 1000));
-    sweeper = std::make_unique<RetentionSweeper>(store, log, retention, interval);
-    sweeper->start();
-  }
+  std::unique_ptr<RetentionSweeper> sweeper = start_sweeper(store, log, o.retention_hours);
   // Every process on a shared store takes back the jobs of workers that died (the SQLite
   // owner recovered its file's running jobs above; its own leases only expire if a worker
   // thread stops renewing them).
   LeaseReaper reaper(store, log, o.worker.max_attempts, o.worker.reaper_interval());
   reaper.start();
 
-  std::atomic<bool> stopping{false};
-  std::thread http([&] {
-    if (!server.listen_after_bind()) log.write("http_error", {{"error", "listen failed"}});
-    // Wake the main thread if the server ended on its own (not through stop() below).
-    if (!stopping.load()) kill(getpid(), SIGTERM);
-  });
-
-  const int signal_number = wait_for_stop_signal(stop_signals);
-  log.write("stopping", {{"signal", signal_number}});
-
-  stopping = true;
-  pool.begin_shutdown();  // running solves see their cancel flag and go back to the queue
-  server.stop();          // stop accepting; finishes requests in progress
-  http.join();
-  pool.join();
+  serve_until_stopped(server, pool, log, stop_signals);
   if (sweeper) sweeper->stop();
   reaper.stop();
   log.write("stopped", {{"busy_workers", pool.busy()}});
