@@ -71,6 +71,9 @@ JobRunOutcome run_case_job(const nlohmann::json& case_json, const JobRunContext&
   } catch (const CaseException& e) {
     outcome.kind = JobRunOutcome::Kind::kFailed;
     outcome.error = "invalid case: " + describe(e.errors());
+  } catch (const TimeLimitReached& e) {
+    outcome.kind = JobRunOutcome::Kind::kFailed;
+    outcome.error = e.what();
   }
   return outcome;
 }

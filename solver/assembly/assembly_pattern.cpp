@@ -3,6 +3,8 @@
 #include <omp.h>
 
 #include <algorithm>
+#include <atomic>
+#include <string>
 
 namespace fosls {
 
@@ -42,9 +44,20 @@ DofTriangles dof_triangles(const FoslsSpace& space) {
 
 }  // namespace
 
-AssemblyPattern assembly_pattern(const FoslsSpace& space, int threads) {
+AssemblyPattern assembly_pattern(const FoslsSpace& space, int threads, const Deadline& deadline) {
   const int n = space.num_free(), nt = space.mesh().num_triangles();
+  // Each pass over the mesh takes as long as a part of the element loop: checked between them,
+  // and in the column passes every so many columns (an OpenMP loop cannot be left: the columns
+  // after the deadline are skipped, and the check after the pass throws).
+  const std::string stage = "assembling the finest level";
+  std::atomic<bool> late{false};
+  auto out_of_time = [&](int f) {
+    if (deadline.is_set() && f % Deadline::kPollEvery == 0 && deadline.passed())
+      late.store(true, std::memory_order_relaxed);
+    return late.load(std::memory_order_relaxed);
+  };
   const DofTriangles dt = dof_triangles(space);
+  deadline.check(stage);
   AssemblyPattern out;
 
   // Column f holds the free DOFs of the triangles around f: counted first, then filled.
@@ -61,27 +74,32 @@ AssemblyPattern assembly_pattern(const FoslsSpace& space, int threads) {
     std::vector<int> mark(n, -1), rows;
 #pragma omp for schedule(static)
     for (int f = 0; f < n; ++f) {
+      if (out_of_time(f)) continue;
       column(f, mark, rows);
       outer[f + 1] = static_cast<int>(rows.size());
     }
   }
   for (int f = 0; f < n; ++f) outer[f + 1] += outer[f];
+  deadline.check(stage);
   SparseMatrix& a = out.matrix;
   a.resize(n, n);
   a.resizeNonZeros(outer[n]);
   std::copy(outer.begin(), outer.end(), a.outerIndexPtr());
   std::fill(a.valuePtr(), a.valuePtr() + outer[n], 0.0);
+  deadline.check(stage);
 #pragma omp parallel
   {
     std::vector<int> mark(n, -1), rows;
 #pragma omp for schedule(static)
     for (int f = 0; f < n; ++f) {
+      if (out_of_time(f)) continue;
       column(f, mark, rows);
       std::sort(rows.begin(), rows.end());
       std::copy(rows.begin(), rows.end(), a.innerIndexPtr() + outer[f]);
     }
   }
 
+  deadline.check(stage);
   AssemblyPartition& p = out.partition;
   threads = std::max(1, threads);
   p.range_begin.resize(threads + 1);

@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "core/box_qp.hpp"
+#include "core/deadline.hpp"
 #include "fem/fosls_space.hpp"
 
 namespace fosls {
@@ -33,7 +34,9 @@ struct AssemblyPattern {
   SparseMatrix matrix;
   AssemblyPartition partition;
 };
-AssemblyPattern assembly_pattern(const FoslsSpace& space, int threads);
+/// Throws TimeLimitReached between its passes once `deadline` has passed.
+AssemblyPattern assembly_pattern(const FoslsSpace& space, int threads,
+                                 const Deadline& deadline = {});
 
 /// Position of entry (row, col) in the values of a compressed column-major `pattern`; the
 /// entry must be stored.

@@ -8,14 +8,16 @@
 
 namespace fosls {
 
-Discretization::Discretization(MeshHierarchy meshes, ProblemData data)
+Discretization::Discretization(MeshHierarchy meshes, ProblemData data, const Deadline& deadline)
     : meshes_(std::move(meshes)), data_(std::move(data)) {
   const auto roles = data_.roles();
-  for (const Mesh& m : meshes_.meshes)
+  for (const Mesh& m : meshes_.meshes) {
+    deadline.check("building the finite element spaces");
     spaces_.push_back(std::make_unique<FoslsSpace>(m, roles, obstacle_vertex_normals(m, data_)));
+  }
   assembler_ = std::make_unique<FoslsAssembler>(*spaces_.back(), data_);
   // Eigen 3.4's SparseMatrix has no move assignment: the matrix is swapped in, not copied.
-  AssembledProblem assembled = assembler_->assemble_system();
+  AssembledProblem assembled = assembler_->assemble_system(deadline);
   SparseMatrix a;
   a.swap(assembled.qp.A);
   problem_ = std::move(assembled);

@@ -13,8 +13,9 @@ namespace fosls {
 
 class Discretization {
  public:
-  /// Builds spaces on every level and assembles the finest one.
-  Discretization(MeshHierarchy meshes, ProblemData data);
+  /// Builds spaces on every level and assembles the finest one; throws TimeLimitReached once
+  /// `deadline` has passed (polled between the levels' spaces and in the element loop).
+  Discretization(MeshHierarchy meshes, ProblemData data, const Deadline& deadline = {});
 
   int num_levels() const { return meshes_.num_levels(); }
   const MeshHierarchy& meshes() const { return meshes_; }

@@ -4,6 +4,7 @@
 
 #include <Eigen/Dense>
 #include <algorithm>
+#include <atomic>
 #include <cmath>
 #include <stdexcept>
 
@@ -196,7 +197,7 @@ void FoslsAssembler::rotate_local(int t, Local& loc) const {
   }
 }
 
-AssembledProblem FoslsAssembler::assemble_system() const {
+AssembledProblem FoslsAssembler::assemble_system(const Deadline& deadline) const {
   const int n_free = space_.num_free();
   AssembledProblem out;
   out.stress_scale = mu_;
@@ -205,9 +206,9 @@ AssembledProblem FoslsAssembler::assemble_system() const {
   // Pattern first, values in place (assembly_pattern.hpp): each thread writes only
   // the columns it owns, visiting their triangles in increasing order (AssemblyPartition).
   const int threads = omp_get_max_threads();
-  AssemblyPattern pattern = assembly_pattern(space_, threads);
+  AssemblyPattern pattern = assembly_pattern(space_, threads, deadline);
   Vector b = Vector::Zero(n_free);
-  const std::vector<double> constants = add_element_terms(xd, pattern, threads, b);
+  const std::vector<double> constants = add_element_terms(xd, pattern, threads, b, deadline);
   add_contact_terms(xd, pattern.matrix, b);
   out.qp.A.swap(pattern.matrix);  // Eigen 3.4's SparseMatrix has no move: std::move would copy
   out.qp.b = std::move(b);
@@ -271,17 +272,27 @@ Vector FoslsAssembler::essential_values() const {
 }
 
 std::vector<double> FoslsAssembler::add_element_terms(const Vector& xd, AssemblyPattern& pattern,
-                                                      int threads, Vector& b) const {
+                                                      int threads, Vector& b,
+                                                      const Deadline& deadline) const {
   SparseMatrix& a = pattern.matrix;
   const AssemblyPartition& part = pattern.partition;
   double* values = a.valuePtr();
   std::vector<double> cs(threads, 0.0);
+  // An exception cannot leave the parallel region: a thread that sees the deadline passed
+  // stops every thread's loop, and the throw comes after the region.
+  std::atomic<bool> out_of_time{false};
 #pragma omp parallel num_threads(threads)
   // Each part once, also when the runtime gives fewer threads than asked for.
   for (int tid = omp_get_thread_num(); tid < threads; tid += omp_get_num_threads()) {
     double& c = cs[tid];
     Local loc;
+    int polled = 0;
     for (int t : part.triangles[tid]) {
+      if (deadline.is_set() && ++polled % Deadline::kPollEvery == 0 &&
+          (out_of_time.load(std::memory_order_relaxed) || deadline.passed())) {
+        out_of_time.store(true, std::memory_order_relaxed);
+        break;
+      }
       element_kernel(t, loc);
       rotate_local(t, loc);
       const auto dofs = triangle_dofs(space_, t);
@@ -312,6 +323,7 @@ std::vector<double> FoslsAssembler::add_element_terms(const Vector& xd, Assembly
       }
     }
   }
+  if (out_of_time) throw TimeLimitReached("assembling the finest level");
   return cs;
 }
 

@@ -7,6 +7,7 @@
 
 #include "assembly/problem_data.hpp"
 #include "core/box_qp.hpp"
+#include "core/deadline.hpp"
 #include "fem/fosls_space.hpp"
 
 namespace fosls {
@@ -40,8 +41,9 @@ class FoslsAssembler {
   /// Evaluates the data (not thread-safe functions) once, sequentially.
   FoslsAssembler(const FoslsSpace& space, const ProblemData& data);
 
-  /// A, b, bounds and constant of J on the free DOFs; O(N), element loop on both cores.
-  AssembledProblem assemble_system() const;
+  /// A, b, bounds and constant of J on the free DOFs; O(N), element loop on both cores. The
+  /// element loop polls `deadline` and throws TimeLimitReached once it has passed.
+  AssembledProblem assemble_system(const Deadline& deadline = {}) const;
 
   /// Full (rotated, scaled) DOF vector from the free DOFs of a solution.
   Vector full_vector(const AssembledProblem& p, const Vector& x_free) const;
@@ -67,7 +69,7 @@ class FoslsAssembler {
   /// The element terms into the pattern's matrix and b (the fixed DOFs' couplings moved to b),
   /// in parallel; returns each thread's part of the constant of J.
   std::vector<double> add_element_terms(const Vector& xd, AssemblyPattern& pattern, int threads,
-                                        Vector& b) const;
+                                        Vector& b, const Deadline& deadline) const;
   /// The contact term C3 ⟨u·n − g, σ_nn⟩ of every contact edge.
   void add_contact_terms(const Vector& xd, SparseMatrix& a, Vector& b) const;
   /// U_n ≤ g at contact vertices, S_n ≤ 0 on contact edges.

@@ -81,7 +81,9 @@ CaseSolution solve_case_levels(MeshHierarchy meshes, const ProblemData& data, co
   for (int step = 0;; ++step) {
     const auto t0 = Clock::now();
     solution.disc.reset();  // one level set in memory at a time
-    solution.disc = std::make_unique<Discretization>(std::move(meshes), data);
+    // Only the first step has no iterate to stop at (a later one has the prolongated solution).
+    solution.disc = std::make_unique<Discretization>(std::move(meshes), data,
+                                                     step == 0 ? observer.deadline : Deadline{});
     solution.assembly_s += seconds(t0, Clock::now());
     solution.assembly_mib = peak_rss_mib();
     const Discretization& disc = *solution.disc;
@@ -122,8 +124,10 @@ CaseSolution solve_case_levels(MeshHierarchy meshes, const ProblemData& data, co
     MeshHierarchy next = disc.meshes();
     BisectionState next_state = state;
     refine_finest_level(next, next_state, marked);
-    if (marked.empty() || dofs_total(next.finest()) > a.max_dofs) {
-      solution.stop_reason = marked.empty() ? "target" : "max_dofs";
+    if (marked.empty() || dofs_total(next.finest()) > a.max_dofs || observer.deadline.passed()) {
+      solution.stop_reason = marked.empty()                           ? "target"
+                             : dofs_total(next.finest()) > a.max_dofs ? "max_dofs"
+                                                                      : "time_limit";
       finish_step();
       break;
     }

@@ -15,6 +15,7 @@
 
 #include "assembly/discretization.hpp"
 #include "case/case_spec.hpp"
+#include "core/deadline.hpp"
 #include "post/contact_output.hpp"
 
 namespace fosls {
@@ -60,6 +61,10 @@ struct CaseSolveObserver {
   SolverObserver solver;
   /// Before each solve: the step (0 for the first) and the unknowns of its level.
   std::function<void(int step, long long dofs)> on_step;
+  /// solver.time_limit_s: the first step's assembly polls it (TimeLimitReached: no iterate
+  /// yet); a later step is not begun once it has passed (stop_reason "time_limit"), and its
+  /// solve stops at the prolongated iterate if it passes while the step is assembled.
+  Deadline deadline;
 };
 
 /// Solves on `meshes` and, when the case asks for it, adapts. `start`, when given and of the

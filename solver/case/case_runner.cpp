@@ -37,6 +37,23 @@ std::vector<CaseError> check_against_mesh(const CaseSpec& spec, const Mesh& mesh
                               true, limits);
 }
 
+/// solver.time_limit_s from the run's start, or none.
+Deadline run_deadline(Clock::time_point t0, double time_limit_s) {
+  if (time_limit_s <= 0) return {};
+  return Deadline(t0 + std::chrono::duration_cast<Clock::duration>(
+                           std::chrono::duration<double>(time_limit_s)));
+}
+
+/// What a run stopped by its time limit before the first iterate says (no result to return).
+std::string time_limit_message(const CaseSpec& spec, const std::string& stage) {
+  std::ostringstream m;
+  m << "solver.time_limit_s (" << spec.solver.time_limit_s << " s) ran out while " << stage
+    << ", before the solve had a first iterate, so there is no result to return; raise "
+       "solver.time_limit_s, or use fewer mesh.refinements or a coarser mesh.size";
+  if (!spec.sweep_points.empty()) m << " (each sweep point has the whole limit)";
+  return m.str();
+}
+
 RigidObstacle rigid_obstacle(const Obstacle& o) {
   RigidObstacle r;
   r.kind = o.kind == Obstacle::Kind::kPlane    ? RigidObstacle::Kind::kPlane
@@ -162,7 +179,10 @@ RunOutput run_point(const CaseSpec& spec, const RunControl& control, const CaseL
   used.weights.length_scale = length_scale(coarse);
   ProblemData data = problem_data(used, coarse);
   const Mesh coarse_mesh = coarse;  // small; for the message of indefinite weights
+  // The limit counts the whole run: a user sets it for the answer's latency, not the loop's.
+  const Deadline deadline = run_deadline(t0, spec.solver.time_limit_s);
   MeshHierarchy meshes = build_mesh_hierarchy(std::move(coarse), spec.mesh.refinements);
+  deadline.check("refining the mesh");  // refinement is a small part of the set-up
   const auto t_mesh = Clock::now();
   RunMemory memory;
   memory.mesh_mib = peak_rss_mib();
@@ -177,12 +197,8 @@ RunOutput run_point(const CaseSpec& spec, const RunControl& control, const CaseL
     observer.solver.cancelled = [&control] {
       return control.cancel->load(std::memory_order_relaxed);
     };
-  // The limit counts the whole run: a user sets it for the answer's latency, not the loop's.
-  if (spec.solver.time_limit_s > 0) {
-    const auto deadline = t0 + std::chrono::duration_cast<Clock::duration>(
-                                   std::chrono::duration<double>(spec.solver.time_limit_s));
-    observer.solver.out_of_time = [deadline] { return Clock::now() >= deadline; };
-  }
+  if (deadline.is_set()) observer.solver.out_of_time = [deadline] { return deadline.passed(); };
+  observer.deadline = deadline;
   observer.on_step = control.on_step;
   CaseSolution solution;
   try {
@@ -229,10 +245,14 @@ RunOutput run_point(const CaseSpec& spec, const RunControl& control, const CaseL
 }  // namespace
 
 RunOutput run_case(const CaseSpec& spec, const RunControl& control, const CaseLimits& limits) {
-  if (spec.sweep_points.empty()) return run_point(spec, control, limits);
-  return run_sweep(spec, control, [&limits](const CaseSpec& point, const RunControl& c) {
-    return run_point(point, c, limits);
-  });
+  try {
+    if (spec.sweep_points.empty()) return run_point(spec, control, limits);
+    return run_sweep(spec, control, [&limits](const CaseSpec& point, const RunControl& c) {
+      return run_point(point, c, limits);
+    });
+  } catch (const TimeLimitReached& e) {
+    throw TimeLimitReached(e.stage(), time_limit_message(spec, e.stage()));
+  }
 }
 
 }  // namespace fosls

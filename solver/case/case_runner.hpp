@@ -11,6 +11,7 @@
 #include "case/case_reader.hpp"
 #include "case/case_spec.hpp"
 #include "core/box_qp.hpp"
+#include "core/deadline.hpp"
 #include "mesh/gmsh_mesh.hpp"
 #include "solvers/iteration_record.hpp"
 
@@ -53,7 +54,10 @@ std::vector<CaseError> validate_case(const nlohmann::json& j, const CaseReadOpti
 /// Throws CaseException for problems a user caused that show up only with the coarse mesh (mesh
 /// errors, groups the mesh lacks, DOF limits: validate_case's checks, made here once the mesh is
 /// built) or while running (for example weights that make the matrix indefinite). A cancel while
-/// the coarse mesh is made returns at once with `cancelled` set and an empty result.
+/// the coarse mesh is made returns at once with `cancelled` set and an empty result. Throws
+/// TimeLimitReached (core/deadline.hpp), its message for the user, when solver.time_limit_s runs
+/// out before the solve has an iterate (while the mesh is refined or the finest level assembled);
+/// once it has one, the result is the last iterate with stop_reason time_limit.
 RunOutput run_case(const CaseSpec& spec, const RunControl& control = {},
                    const CaseLimits& limits = {});
 

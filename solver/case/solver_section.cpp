@@ -96,7 +96,8 @@ ObjectRulePtr solver_rule() {
       optional_field("time_limit_s", number_value(Range::closed(0, 1e7)), s.time_limit_s,
                      "wall-clock seconds the run may take, meshing and assembly included (0: no "
                      "limit); the solve then stops at the last iterate with stop_reason "
-                     "time_limit. The service's --max-job-seconds still caps a job"),
+                     "time_limit, or, before it has one, the run fails saying so. The "
+                     "service's --max-job-seconds still caps a job"),
       optional_field("smoother", choice_value(smoother_names()),
                      smoother_info(s.multilevel.smoother).name, "the smoother"),
       optional_field("pre_smoothing", smoothing, s.multilevel.pre_smoothing,

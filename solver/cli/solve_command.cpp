@@ -167,6 +167,11 @@ int run_solve(const SolveOptions& o) {
     progress.finish();
     print_errors(e.errors());
     return kExitBadInput;
+  } catch (const TimeLimitReached& e) {
+    // The case's own limit, before a first iterate: not converged, and nothing to write.
+    progress.finish();
+    std::cerr << "error: " << e.what() << '\n';
+    return kExitNotConverged;
   } catch (const std::exception& e) {
     progress.finish();
     std::cerr << "error: " << e.what() << '\n';

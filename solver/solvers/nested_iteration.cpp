@@ -63,13 +63,16 @@ SolverOptions coarse_solve_options(const SolverOptions& options) {
 }  // namespace
 
 bool nested_initial_guess(const BoxQp& qp, const LevelHierarchy& h, const SolverOptions& options,
-                          GalerkinChain& chain, Vector& x, SolverReport& report) {
+                          GalerkinChain& chain, Vector& x, SolverReport& report,
+                          const std::function<bool()>& out_of_time) {
   const int top = h.num_levels() - 1;
   if (top < 1) return false;
   for (int i = 0; i < qp.size(); ++i)
     if (qp.lower[i] > 0 || qp.upper[i] < 0) return false;
   std::vector<BoxQp> problems = coarser_problems(qp, h, options.multilevel.projection);
   SolverOptions inner = coarse_solve_options(options);
+  SolverObserver coarse;
+  coarse.out_of_time = out_of_time;
   Vector xc;
   for (int j = 0; j < top; ++j) {
     LevelHierarchy sub;
@@ -87,7 +90,7 @@ bool nested_initial_guess(const BoxQp& qp, const LevelHierarchy& h, const Solver
     // cycle's exact coarse solver met the bounds one at a time from x = 0 (docs/performance.md,
     // "Nested iteration"). The initial guess needs no monotone path: it is clipped to the bounds.
     inner.method = j == 0 ? SolverMethod::kPdas : options.method;
-    const SolverReport r = solve_with_chain(problems[j], sub, inner, {}, xc, sub_chain);
+    const SolverReport r = solve_with_chain(problems[j], sub, inner, coarse, xc, sub_chain);
     report.nested_iterations.push_back(r.iterations);
   }
   x = h.levels[top].prolongation * xc;

@@ -4,6 +4,8 @@
 // the prolongated solution of the one below, so that most of the search for the active set
 // happens where it is cheap.
 
+#include <functional>
+
 #include "core/box_qp.hpp"
 #include "core/level_hierarchy.hpp"
 #include "solvers/solve_loop.hpp"
@@ -19,8 +21,10 @@ BoxQp coarser_problem(const BoxQp& fine, const Level& level, CoarseProjection pr
 /// options.nested_tolerance; iterations per level appended to report.nested_iterations) and
 /// returns true; returns false with x untouched when there is no coarser level or x = 0 is not
 /// feasible (e.g. a negative gap), which the coarse problems assume. The chain's matrices are
-/// lent to the coarse solves and returned, unchanged, however they end.
+/// lent to the coarse solves and returned, unchanged, however they end. `out_of_time`, when set,
+/// stops each coarse solve at its last iterate once it returns true (solver.time_limit_s).
 bool nested_initial_guess(const BoxQp& qp, const LevelHierarchy& h, const SolverOptions& options,
-                          GalerkinChain& chain, Vector& x, SolverReport& report);
+                          GalerkinChain& chain, Vector& x, SolverReport& report,
+                          const std::function<bool()>& out_of_time = {});
 
 }  // namespace fosls

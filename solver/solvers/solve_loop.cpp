@@ -244,7 +244,7 @@ SolverReport solve_with_chain(const BoxQp& qp, const LevelHierarchy& hierarchy,
     if (options.nested) {
       // Where the nested iteration cannot start (one level, or x = 0 infeasible) x stays as is.
       const auto t_nested = Clock::now();
-      nested_initial_guess(qp, hierarchy, options, *chain, x, report);
+      nested_initial_guess(qp, hierarchy, options, *chain, x, report, observer.out_of_time);
       report.nested_s = seconds_since(t_nested);
     }
   }
