@@ -3,6 +3,7 @@
 #include "case/case_admission.hpp"
 #include "case/case_reader.hpp"
 #include "case/case_runner.hpp"
+#include "case/job_time.hpp"
 
 namespace fosls::service {
 
@@ -29,9 +30,11 @@ std::string describe(const std::vector<CaseError>& errors) {
 }  // namespace
 
 std::function<std::vector<CaseError>(const nlohmann::json&)> submitted_case_validator(
-    std::function<MemoryBudget()> budget) {
-  return [budget = std::move(budget)](const nlohmann::json& case_json) {
+    std::function<MemoryBudget()> budget, double max_job_seconds) {
+  return [budget = std::move(budget), max_job_seconds](const nlohmann::json& case_json) {
     CaseReadOptions options = service_read_options(0);
+    options.limits.max_seconds = max_job_seconds;
+    options.limits.time_budget_name = "a job may run (the service's --max-job-seconds)";
     if (budget) {
       const MemoryBudget now = budget();
       options.limits.max_memory_bytes = static_cast<double>(now.bytes);
@@ -39,6 +42,33 @@ std::function<std::vector<CaseError>(const nlohmann::json&)> submitted_case_vali
     }
     return admit_case(case_json, options).errors;
   };
+}
+
+JobTimeLimit job_time_limit(const nlohmann::json& case_json, double max_job_seconds) {
+  JobTimeLimit limit;
+  limit.cap_seconds = max_job_seconds;
+  if (max_job_seconds <= 0) return limit;
+  // The estimate admission made (the same rule and count; no gmsh): cheap next to a solve.
+  const CaseAdmission admission = admit_case(case_json, service_read_options(0));
+  if (admission.time) limit.estimate_seconds = admission.time->seconds;
+  limit.seconds = admission.time ? job_time_limit_seconds(admission.time->seconds, max_job_seconds)
+                                 : max_job_seconds;
+  return limit;
+}
+
+std::string JobTimeLimit::describe() const {
+  char text[400];
+  if (seconds >= cap_seconds)
+    std::snprintf(text, sizeof text,
+                  "%g s, the most a job may run (the service's --max-job-seconds); the case was "
+                  "estimated at %.3g s",
+                  seconds, estimate_seconds);
+  else
+    std::snprintf(text, sizeof text,
+                  "%g s, the time this job may run: %g times its estimate of %.3g s, at least "
+                  "%g s (the service's --max-job-seconds %g s caps it)",
+                  seconds, kJobTimeMargin, estimate_seconds, kJobTimeFloorSeconds, cap_seconds);
+  return text;
 }
 
 JobRunOutcome run_case_job(const nlohmann::json& case_json, const JobRunContext& context,

@@ -5,6 +5,7 @@
 #include <cstddef>
 #include <functional>
 #include <nlohmann/json.hpp>
+#include <string>
 #include <vector>
 
 #include "admission_budget.hpp"
@@ -19,8 +20,21 @@ namespace fosls::service {
 /// are found by the job (it fails naming them). A case whose estimated memory exceeds the
 /// budget `budget` gives at the time (none when it is empty: --admit-over-budget) is refused at
 /// the field that sets its size.
+/// A case whose whole time estimate (case/job_time.hpp) exceeds `max_job_seconds` (0: none) is
+/// refused too, at the field that sets its time.
 std::function<std::vector<CaseError>(const nlohmann::json&)> submitted_case_validator(
-    std::function<MemoryBudget()> budget);
+    std::function<MemoryBudget()> budget, double max_job_seconds = 0);
+
+/// The wall-clock time one job may run: kJobTimeMargin times its case's time estimate, at least
+/// kJobTimeFloorSeconds, at most `max_job_seconds` (--max-job-seconds; 0: no limit at all).
+struct JobTimeLimit {
+  double seconds = 0;           ///< 0: none
+  double estimate_seconds = 0;  ///< the case's estimate (0 when it could not be made)
+  double cap_seconds = 0;       ///< --max-job-seconds
+  /// "60 s, the time this job may run (…)": the limit and how it was derived, for messages.
+  std::string describe() const;
+};
+JobTimeLimit job_time_limit(const nlohmann::json& case_json, double max_job_seconds);
 
 /// Solves a case with read_case + run_case, honouring cancellation through RunControl::cancel
 /// and reporting every iteration. Case problems that only show while running (CaseException:

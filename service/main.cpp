@@ -156,7 +156,8 @@ int serve(const ServeOptions& o, const sigset_t& stop_signals) {
   AdmissionBudget budget(store, o.worker.job_memory_bytes());
   std::function<MemoryBudget()> admission;
   if (!o.worker.admit_over_budget) admission = [&budget] { return budget.current(); };
-  HttpApi api(store, pool, submitted_case_validator(admission), metrics, log, api_options(o));
+  HttpApi api(store, pool, submitted_case_validator(admission, o.worker.max_job_seconds), metrics,
+              log, api_options(o));
 
   // Request heads are read under limits before cpp-httplib parses them (bounded_http_server.hpp).
   BoundedHttpServer server;

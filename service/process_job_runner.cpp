@@ -4,6 +4,7 @@
 
 #include <cstdio>
 
+#include "case_job_runner.hpp"
 #include "job_process_protocol.hpp"
 #include "memory_budget.hpp"
 #include "process/child_process.hpp"
@@ -59,7 +60,7 @@ JobRunOutcome signal_outcome(const ChildResult& r, const ProcessJobRunnerOptions
 
 /// Every way the solve process can end, as the job's outcome.
 JobRunOutcome outcome_of(const ChildResult& r, const JobProcessReader& reader,
-                         const ProcessJobRunnerOptions& options) {
+                         const ProcessJobRunnerOptions& options, const JobTimeLimit& time) {
   const std::string memory =
       "the solve ran out of memory: a job may use " + format_bytes(options.memory_bytes) +
       " (the service's --max-job-memory); use fewer refinements, a coarser mesh.size or "
@@ -70,13 +71,11 @@ JobRunOutcome outcome_of(const ChildResult& r, const JobProcessReader& reader,
       o.kind = JobRunOutcome::Kind::kCancelled;
       return o;
     }
-    case ChildResult::End::kTimedOut: {
-      char limit[32];
-      std::snprintf(limit, sizeof limit, "%g", options.time_limit.count() / 1000.0);
-      return failed(std::string("the solve did not finish within ") + limit +
-                    " s (the service's --max-job-seconds); use fewer refinements, a looser "
-                    "solver.tolerance or fewer solver.max_iterations");
-    }
+    case ChildResult::End::kTimedOut:
+      return failed("the solve did not finish within " + time.describe() +
+                    "; use fewer refinements, a looser solver.tolerance, fewer "
+                    "solver.max_iterations, or a solver.time_limit_s to get the last iterate "
+                    "back");
     case ChildResult::End::kOutputTooLarge:
       return failed("the result is too large to be stored");
     case ChildResult::End::kSignaled:
@@ -106,12 +105,13 @@ JobRunner process_job_runner(ProcessJobRunnerOptions options) {
     child.input = case_json.dump(-1, ' ', false, nlohmann::json::error_handler_t::replace);
     child.limits.address_space_bytes = options.memory_bytes + kSolveAddressSpaceHeadroom;
     child.limits.max_output_bytes = std::size_t{4} << 30;
-    child.limits.wall = options.time_limit;
+    const JobTimeLimit time = job_time_limit(case_json, options.max_job_seconds);
+    child.limits.wall = std::chrono::milliseconds(static_cast<std::int64_t>(time.seconds * 1000));
     child.cancel = &context.cancel;
     child.on_output = [&reader](std::string_view data) { reader.feed(data); };
     const std::string threads = std::to_string(options.threads);
     child.environment = {"OMP_NUM_THREADS=" + threads, "OPENBLAS_NUM_THREADS=" + threads};
-    return outcome_of(run_child(child), reader, options);
+    return outcome_of(run_child(child), reader, options, time);
   };
 }
 

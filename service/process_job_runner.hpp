@@ -23,8 +23,9 @@ struct ProcessJobRunnerOptions {
   std::size_t memory_bytes = std::size_t{2} << 30;
   /// OpenMP and OpenBLAS threads of each solve process.
   int threads = 1;
-  /// Wall-clock time a job may run (--max-job-seconds); zero: no limit.
-  std::chrono::milliseconds time_limit{0};
+  /// The most wall-clock time a job may run (--max-job-seconds); 0: no limit. Each job gets
+  /// job_time_limit(its case) within it (case_job_runner.hpp), and is killed at it.
+  double max_job_seconds = 0;
   /// The budget cases were admitted against (0: none, --admit-over-budget): the solve process
   /// checks the exact mesh against it once built and fails at once if it outgrew it.
   std::size_t admission_memory_bytes = 0;

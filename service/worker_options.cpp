@@ -87,8 +87,9 @@ void add_worker_options(CLI::App& app, WorkerOptions& o, int min_workers) {
                                      : "expected a size such as 512M or 2G, got '" + text + "'";
       });
   app.add_option("--max-job-seconds", o.max_job_seconds,
-                 "Wall-clock time one job may run (0: no limit); a solve still running then is "
-                 "killed and its job fails")
+                 "The most wall-clock time one job may run (0: no limit at all): cases estimated "
+                 "above it are refused; each job may run 10 times its estimate, at least 60 s, "
+                 "at most this, and is then killed and fails")
       ->check(CLI::Range(0.0, 1e7))
       ->capture_default_str();
   app.add_flag("--fail-unconverged", o.fail_unconverged,
@@ -104,7 +105,7 @@ JobRunner service_job_runner(const WorkerOptions& options) {
   runner.memory_bytes = options.job_memory_bytes();
   const int cores = static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
   runner.threads = std::max(1, cores / std::max(1, options.workers));
-  runner.time_limit = seconds_to_ms(options.max_job_seconds);
+  runner.max_job_seconds = options.max_job_seconds;
   runner.admission_memory_bytes = options.admission_memory_bytes();
   return process_job_runner(runner);
 }

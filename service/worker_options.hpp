@@ -13,6 +13,9 @@
 
 namespace fosls::service {
 
+/// --max-job-seconds when not given: one hour.
+inline constexpr double kDefaultMaxJobSeconds = 3600;
+
 /// Options of the solver workers and their store.
 struct WorkerOptions {
   std::string store = "sqlite:data/fosls.db";  ///< --store URL (store_url.hpp)
@@ -22,8 +25,9 @@ struct WorkerOptions {
   double heartbeat_seconds = 1;
   /// --max-job-memory as written ("2G"); empty: default_job_memory(workers).
   std::string max_job_memory;
-  /// --max-job-seconds: wall-clock time one job may run, 0 for no limit.
-  double max_job_seconds = 0;
+  /// --max-job-seconds: the most wall-clock time one job may run (each job may run a margin
+  /// times its estimate within it, case_job_runner.hpp); 0, given explicitly: no limit at all.
+  double max_job_seconds = kDefaultMaxJobSeconds;
   /// --fail-unconverged: a solve that stops without converging fails its job.
   bool fail_unconverged = false;
   /// --admit-over-budget: cases estimated above --max-job-memory are queued and run anyway

@@ -102,7 +102,9 @@ class ClientTest(unittest.TestCase):
 
     def test_a_job_is_cancelled_and_deleted(self):
         case = small_case("slow", refinements=6)
-        case["solver"] = {"method": "pgs", "tolerance": 1e-14, "max_iterations": 100000}
+        # Its own time limit keeps it within the service's default --max-job-seconds.
+        case["solver"] = {"method": "pgs", "tolerance": 1e-14, "max_iterations": 100000,
+                          "time_limit_s": 3000}
         job = self.client.submit(case)
         self.client.cancel(job["id"])
         job = self.client.wait(self.client.job(job["id"]))

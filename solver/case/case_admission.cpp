@@ -57,7 +57,8 @@ std::vector<CaseError> group_problems(const CaseSpec& spec,
   return errors;
 }
 
-/// The size against the limits: unknowns against max_dofs, memory against max_memory_bytes.
+/// The size against the limits: unknowns against max_dofs, memory against max_memory_bytes,
+/// time against max_seconds.
 std::vector<CaseError> size_problems(const CaseSpec& spec, long long unknowns, bool exact,
                                      const CaseLimits& limits) {
   std::vector<CaseError> errors;
@@ -77,6 +78,9 @@ std::vector<CaseError> size_problems(const CaseSpec& spec, long long unknowns, b
       e->detail = built + e->detail;
       errors.push_back(std::move(*e));
     }
+  if (auto e = check_time_budget(estimate_case_time(spec, unknowns), spec, unknowns,
+                                 limits.max_seconds, limits.time_budget_name))
+    errors.push_back(std::move(*e));
   return errors;
 }
 
@@ -135,6 +139,7 @@ CaseAdmission admit_case(const nlohmann::json& j, const CaseReadOptions& options
     return out;
   }
   out.estimate = admission_estimate(spec, unknowns, exact);
+  out.time = estimate_case_time(spec, unknowns);
   out.errors = check_against_groups(spec, groups, unknowns, exact, options.limits);
   return out;
 }

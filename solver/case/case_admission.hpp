@@ -2,7 +2,8 @@
 // The one admission rule of every program that runs cases (the CLI's estimate, solve and bench,
 // the service): what can be said about a case before anything is meshed with gmsh — everything
 // read_case finds, the geometry checks and coarse-mesh size guards, the boundary groups, and the
-// unknowns and memory the solve will need against CaseLimits (max_dofs, max_memory_bytes).
+// unknowns, memory and time the solve will need against CaseLimits (max_dofs, max_memory_bytes,
+// max_seconds).
 // Cheap enough for a request thread: gmsh never runs here (the coarse mesh of a geometry or of
 // the built-in hertz is estimated from what drives it, mesh/coarse_mesh_estimate.hpp); a square
 // or msh mesh, built without gmsh, is counted exactly. Once a run has built the coarse mesh, the
@@ -16,6 +17,7 @@
 #include "case/case_error.hpp"
 #include "case/case_reader.hpp"
 #include "case/case_spec.hpp"
+#include "case/job_time.hpp"
 #include "case/resource_estimate.hpp"
 
 namespace fosls {
@@ -24,6 +26,7 @@ struct CaseAdmission {
   std::vector<CaseError> errors;             ///< empty when the case may run
   std::optional<CaseSpec> spec;              ///< set when read_case accepted the case
   std::optional<ResourceEstimate> estimate;  ///< set when the size could be estimated
+  std::optional<CaseTimeEstimate> time;      ///< set with `estimate`: the whole case's time
 };
 
 /// Checks a case without gmsh (see above); the size against `options.limits`.
@@ -34,7 +37,8 @@ CaseAdmission admit_case(const nlohmann::json& j, const CaseReadOptions& options
 ResourceEstimate admission_estimate(const CaseSpec& spec, long long unknowns, bool exact);
 
 /// Problems of the boundary conditions against the mesh's groups, and of the size (the
-/// unknowns against max_dofs, the memory estimate against max_memory_bytes) against `limits`.
+/// unknowns against max_dofs, the memory estimate against max_memory_bytes, the time estimate
+/// against max_seconds) against `limits`.
 /// Called before meshing with estimated unknowns and once the coarse mesh is built with exact
 /// ones (`unknowns_exact`), so a mesh larger than its estimate is stopped before it is refined.
 std::vector<CaseError> check_against_groups(const CaseSpec& spec,

@@ -30,6 +30,12 @@ struct CaseLimits {
   double max_memory_bytes = 0;
   /// What completes "more than the 2 GiB …" in messages: who sets the budget and for what.
   std::string memory_budget_name = "a solve may use";
+  /// Wall-clock seconds a whole case may take; 0: not checked. The service's --max-job-seconds
+  /// (the CLI sets none): a case whose time estimate (case/job_time.hpp) exceeds it is refused
+  /// before meshing.
+  double max_seconds = 0;
+  /// What completes "more than the 1 h …" in messages.
+  std::string time_budget_name = "a run may take";
 };
 
 /// What a reader accepts: the limits, and whether a case may name local files.

@@ -1,7 +1,8 @@
 #pragma once
 // A rough guide to how long a solve takes, from its unknowns and method (docs/case-format.md,
-// "Resources"): fitted on the curved-gap square on two cores of the development machine. It is
-// printed, never used to refuse a case — the same run varies 2–3× with the machine's load.
+// "Resources"): fitted on the curved-gap square on two cores of the development machine. The CLI
+// prints it; the service bounds a whole case's time by it (job_time.hpp) only with a wide
+// margin — the same run varies 2–3× with the machine's load.
 
 #include <optional>
 #include <string>

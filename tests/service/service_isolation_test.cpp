@@ -62,12 +62,15 @@ json slow_mesh_case() {
   return j;
 }
 
-/// The square at 7 refinements (2.1 million unknowns): assembly takes seconds.
+/// The square at 7 refinements (2.1 million unknowns): assembly takes seconds. Its own time
+/// limit keeps it within the service's default --max-job-seconds (pgs's 100 000 iterations
+/// alone are estimated at about 9 h).
 json large_case() {
   json j = example("signorini_square");
   j["name"] = "large";
   j["mesh"]["refinements"] = 7;
-  j["solver"] = {{"method", "pgs"}, {"max_iterations", 100000}, {"tolerance", 1e-15}};
+  j["solver"] = {
+      {"method", "pgs"}, {"max_iterations", 100000}, {"tolerance", 1e-15}, {"time_limit_s", 3000}};
   return j;
 }
 
@@ -118,27 +121,34 @@ TEST(ServiceIsolation, DegenerateGeometriesNeverTakeTheServerDown) {
   EXPECT_EQ(svc.server().stop(), 0) << "the server did not stop cleanly; log:\n" << svc.log();
 }
 
-/// Points FOSLS_MESHER (inherited by servers started afterwards) at a script that aborts.
-class AbortingMesher {
+/// Points FOSLS_MESHER (inherited by servers started afterwards) at a shell script.
+class MesherScript {
  public:
-  AbortingMesher() {
-    std::ofstream(path_) << "#!/bin/sh\ncat > /dev/null\n"
-                            "echo \"terminate called after throwing an instance of "
-                            "'std::string'\" >&2\nkill -ABRT $$\n";
+  MesherScript(const std::string& name, const std::string& script)
+      : path_("/tmp/fosls_" + name + "_mesher_" + std::to_string(::getpid()) + ".sh") {
+    std::ofstream(path_) << "#!/bin/sh\n" << script;
     ::chmod(path_.c_str(), 0755);
     ::setenv("FOSLS_MESHER", path_.c_str(), 1);
   }
-  ~AbortingMesher() {
+  ~MesherScript() {
     ::unsetenv("FOSLS_MESHER");
     std::remove(path_.c_str());
   }
 
  private:
-  std::string path_ = "/tmp/fosls_aborting_mesher_" + std::to_string(::getpid()) + ".sh";
+  std::string path_;
 };
 
+/// A mesher that aborts as gmsh 4.8 does on some outlines.
+MesherScript aborting_mesher() {
+  return MesherScript("aborting",
+                      "cat > /dev/null\n"
+                      "echo \"terminate called after throwing an instance of "
+                      "'std::string'\" >&2\nkill -ABRT $$\n");
+}
+
 TEST(ServiceIsolation, AMesherAbortFailsItsJobAtTheMeshAndTheServerStaysUp) {
-  AbortingMesher aborting;
+  const MesherScript aborting = aborting_mesher();
   Service svc(1);
   // The built-in Hertz geometry is meshed by gmsh too, in the job.
   const auto id = svc.submit(example("hertz"));
@@ -350,15 +360,58 @@ TEST(ServiceIsolation, SigtermDuringAssemblyEndsTheServerAndRequeuesTheJob) {
   svc.wait_for(id, testing::is_finished);
 }
 
-TEST(ServiceIsolation, AJobOverTheServiceTimeLimitFails) {
-  Service svc(1, {"--max-job-seconds", "2"});
-  const auto id = svc.submit(testing::endless_case());
+TEST(ServiceIsolation, AJobOverItsTimeLimitIsKilledAndFailsNamingIt) {
+  // Hertz is estimated at well under a second: its limit is the floor, capped by the flag at 3 s.
+  // A mesher that never ends: a job whose time the estimate cannot see. Like fosls-mesher it
+  // dies with the solve process that started it (it holds that process's pipes while it lives).
+  const MesherScript hanging("hanging", "exec setpriv --pdeathsig KILL sleep 600\n");
+  Service svc(1, {"--max-job-seconds", "3"});
+  const auto id = svc.submit(example("hertz"));
   const json job = svc.wait_state(id, "failed", 60);
   const std::string error = job["error"];
   std::printf("failed: %s\n", error.c_str());
-  EXPECT_NE(error.find("did not finish within 2 s"), std::string::npos) << error;
-  EXPECT_NE(error.find("--max-job-seconds"), std::string::npos) << error;
+  for (const char* part : {"did not finish within 3 s, the most a job may run", "--max-job-seconds",
+                           "the case was estimated at"})
+    EXPECT_NE(error.find(part), std::string::npos) << part << " in: " << error;
   svc.wait_state(svc.submit(testing::small_case(5)), "succeeded");
+}
+
+TEST(ServiceIsolation, APgsSweepOfDaysIsRefusedUnderTheDefaultTimeCap) {
+  // Issue 31's probe: accepted in 0.04 s, it would have held a worker for days.
+  Service svc(1);
+  json j = testing::endless_case();
+  json values = json::array();
+  for (int i = 0; i < 100; ++i) values.push_back(-0.01 - 0.0005 * i);
+  j["sweep"] = {{"pointer", "/boundary/top/displacement/1"}, {"values", values}};
+  auto res = svc.post(j);
+  expect_problem(res, 422);
+  const json p = json::parse(res->body);
+  ASSERT_EQ(p["errors"].size(), 1u) << res->body;
+  EXPECT_EQ(p["errors"][0]["pointer"], "/solver/max_iterations");
+  const std::string detail = p["errors"][0]["detail"];
+  std::printf("422: %s\n", detail.c_str());
+  for (const char* part : {" h: 100 sweep points", "more than the 1 h a job may run",
+                           "--max-job-seconds", "solver.method mmg"})
+    EXPECT_NE(detail.find(part), std::string::npos) << part << " in: " << detail;
+  // One point of it fits the hour: the endless case of the other tests is still admitted.
+  const auto id = svc.submit(testing::endless_case());
+  svc.client().Post("/v1/jobs/" + std::to_string(id) + "/cancel");
+  svc.wait_for(id, testing::is_finished);
+}
+
+TEST(ServiceIsolation, TheCasesTimeLimitStopsItsSetUp) {
+  // 526 338 unknowns: refining is quick next to the case's own 0.3 s, assembling is not; the job
+  // stops there (or, on a loaded machine, in an earlier stage).
+  Service svc(1);
+  json j = example("signorini_square");
+  j["mesh"]["refinements"] = 6;
+  j["solver"]["time_limit_s"] = 0.3;
+  const auto t0 = Clock::now();
+  const json job = svc.wait_state(svc.submit(j), "failed", 120);
+  const std::string error = job["error"];
+  std::printf("failed after %.2f s: %s\n", since(t0), error.c_str());
+  EXPECT_NE(error.find("solver.time_limit_s (0.3 s) ran out while"), std::string::npos) << error;
+  EXPECT_NE(error.find("before the solve had a first iterate"), std::string::npos) << error;
 }
 
 /// A loopback connection that sent part of a request's headers and then nothing.

@@ -614,9 +614,10 @@ test('an invalid case shows each error next to its field', async () => {
 });
 
 test('a running job can be cancelled and then deleted from the list', async () => {
-  // Projected Gauss–Seidel on a fine mesh with an unreachable tolerance runs for minutes.
+  // Projected Gauss–Seidel on a fine mesh with an unreachable tolerance runs for minutes (its own
+  // time limit keeps it within the service's default --max-job-seconds).
   const row = await submitHertzVariant('slow_hertz', 5, (c) => {
-    c.solver = { method: 'pgs', tolerance: 1e-15, max_iterations: 100000 };
+    c.solver = { method: 'pgs', tolerance: 1e-15, max_iterations: 100000, time_limit_s: 3000 };
   });
   // While it runs, the view plots the residuals the polls have seen.
   await row.locator('.state-running').waitFor();

@@ -1,0 +1,145 @@
+#include "case/job_time.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+
+#include "case/solver_methods.hpp"
+#include "case/time_estimate.hpp"
+
+namespace fosls {
+
+namespace {
+
+/// An adaptive run is taken as this many solves at its largest size (steps + 1 if fewer): its
+/// levels grow step by step, so most of its solves are far smaller than the last.
+constexpr double kAdaptiveSolves = 3.0;
+
+/// Seconds of one solve of `solver` on `unknowns`: the fitted estimate to the default tolerance,
+/// or for pgs the set-up and every iteration solver.max_iterations allows.
+double solve_seconds(const SolverOptions& solver, long long unknowns) {
+  if (auto s = estimated_seconds(unknowns, solver.method)) return *s;
+  // Mesh and assembly as measured with pgs (docs/service.md, "Time limits").
+  return 0.1 + 3e-6 * static_cast<double>(unknowns) +
+         solver.max_iterations * pgs_seconds_per_iteration(unknowns);
+}
+
+/// One sweep point (or the case without a sweep): its solves, bounded by its time limit.
+double point_seconds(const CaseSpec& point, long long unknowns, bool& bounded) {
+  double seconds = solve_seconds(point.solver, unknowns);
+  if (point.adaptivity && point.adaptivity->steps > 0) {
+    const long long largest = std::max(unknowns, point.adaptivity->max_dofs);
+    seconds = solve_seconds(point.solver, largest) *
+              std::min(kAdaptiveSolves, point.adaptivity->steps + 1.0);
+  }
+  const double limit = point.solver.time_limit_s;
+  bounded = limit > 0 && limit < seconds;
+  return bounded ? limit : seconds;
+}
+
+/// "1 h", "20 min", "2 s", "1.5 s": a budget as it was given.
+std::string budget_text(double seconds) {
+  char text[48];
+  if (seconds >= 3600 && std::fmod(seconds, 3600) == 0)
+    std::snprintf(text, sizeof text, "%g h", seconds / 3600);
+  else if (seconds >= 120 && std::fmod(seconds, 60) == 0)
+    std::snprintf(text, sizeof text, "%g min", seconds / 60);
+  else
+    std::snprintf(text, sizeof text, "%g s", seconds);
+  return text;
+}
+
+/// "about 55 h: 100 sweep points, each up to 100000 pgs iterations of about 0.02 s on about
+/// 131200 unknowns".
+std::string describe_time(const CaseTimeEstimate& e, const CaseSpec& spec, long long unknowns) {
+  const SolverOptions& solver =
+      spec.sweep_points.empty() ? spec.solver : spec.sweep_points[0].solver;
+  std::string text = describe_seconds(e.seconds) + ": ";
+  if (e.points > 1) text += std::to_string(e.points) + " sweep points, each ";
+  if (e.bounded_by_time_limit) {
+    char limit[32];
+    std::snprintf(limit, sizeof limit, "%g", solver.time_limit_s);
+    return text + "stopped by solver.time_limit_s " + limit + " s";
+  }
+  const std::string method = method_info(solver.method).name;
+  if (solver.method == SolverMethod::kPgs)
+    return text + "up to " + std::to_string(solver.max_iterations) + " pgs iterations (" +
+           describe_seconds(pgs_seconds_per_iteration(unknowns)) + " each) on about " +
+           std::to_string(unknowns) + " unknowns";
+  return text + method + " on about " + std::to_string(unknowns) + " unknowns";
+}
+
+/// What to change: methods that converge on fine meshes and fit, then the case's sizes.
+std::string advice(const CaseTimeEstimate& e, const CaseSpec& spec, long long unknowns,
+                   double budget_seconds) {
+  std::vector<std::string> options;
+  const SolverMethod method = spec.solver.method;
+  for (const MethodInfo& m : solver_methods()) {
+    if (m.method == method || !converges_on_fine_meshes(m.method)) continue;
+    CaseSpec other = spec;
+    other.solver.method = m.method;
+    for (CaseSpec& point : other.sweep_points) point.solver.method = m.method;
+    const CaseTimeEstimate t = estimate_case_time(other, unknowns);
+    if (t.seconds <= budget_seconds)
+      options.push_back("solver.method " + std::string(m.name) + " (" +
+                        describe_seconds(t.seconds) + " in all)");
+  }
+  if (e.points > 1) options.push_back("fewer sweep values");
+  if (method == SolverMethod::kPgs) options.push_back("fewer solver.max_iterations");
+  options.push_back("fewer refinements or a coarser mesh.size");
+  options.push_back(e.bounded_by_time_limit
+                        ? "a lower solver.time_limit_s"
+                        : "a solver.time_limit_s (each solve then stops at it with its last "
+                          "iterate)");
+  std::string text = "use ";
+  for (std::size_t i = 0; i < options.size(); ++i)
+    text += (i == 0 ? "" : i + 1 == options.size() ? ", or " : ", ") + options[i];
+  return text;
+}
+
+}  // namespace
+
+double pgs_seconds_per_iteration(long long unknowns) {
+  // Measured on the Signorini square on two cores (docs/service.md, "Time limits").
+  return 0.15e-6 * static_cast<double>(unknowns);
+}
+
+CaseTimeEstimate estimate_case_time(const CaseSpec& spec, long long unknowns) {
+  CaseTimeEstimate e;
+  const std::vector<CaseSpec> single =
+      spec.sweep_points.empty() ? std::vector<CaseSpec>{spec} : std::vector<CaseSpec>{};
+  const std::vector<CaseSpec>& points = spec.sweep_points.empty() ? single : spec.sweep_points;
+  e.points = static_cast<int>(points.size());
+  bool all_bounded = true;
+  for (const CaseSpec& point : points) {
+    bool bounded = false;
+    e.seconds += point_seconds(point, unknowns, bounded);
+    all_bounded &= bounded;
+  }
+  e.bounded_by_time_limit = all_bounded;
+  const bool adaptive_size =
+      spec.adaptivity && spec.adaptivity->steps > 0 && spec.adaptivity->max_dofs > unknowns;
+  e.limited_by = all_bounded                                ? "/solver/time_limit_s"
+                 : spec.solver.method == SolverMethod::kPgs ? "/solver/max_iterations"
+                 : e.points > 1                             ? "/sweep/values"
+                 : adaptive_size                            ? "/adaptivity/max_dofs"
+                                                            : "/mesh/refinements";
+  return e;
+}
+
+std::optional<CaseError> check_time_budget(const CaseTimeEstimate& estimate, const CaseSpec& spec,
+                                           long long unknowns, double budget_seconds,
+                                           const std::string& budget_name) {
+  if (budget_seconds <= 0 || estimate.seconds <= budget_seconds) return std::nullopt;
+  return CaseError{estimate.limited_by,
+                   "the case needs " + describe_time(estimate, spec, unknowns) +
+                       ", more than the " + budget_text(budget_seconds) + " " + budget_name + "; " +
+                       advice(estimate, spec, unknowns, budget_seconds)};
+}
+
+double job_time_limit_seconds(double estimate_seconds, double cap_seconds) {
+  if (cap_seconds <= 0) return 0;
+  return std::min(cap_seconds, std::max(kJobTimeFloorSeconds, kJobTimeMargin * estimate_seconds));
+}
+
+}  // namespace fosls
