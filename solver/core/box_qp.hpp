@@ -61,6 +61,11 @@ struct BoxQp {
   Vector lower;
   Vector upper;
   double constant = 0.0;
+  /// DOFs whose bounds the multilevel cycle carries to coarse levels through the rows of the
+  /// prolongation (row_obstacle.hpp): the frictional contact DOFs, bounded on both sides or on
+  /// the side of a kink, which the contact links' projections do not describe. Empty without
+  /// friction.
+  std::vector<int> row_obstacles;
 
   int size() const { return static_cast<int>(b.size()); }
   /// J(x).

@@ -1,5 +1,7 @@
 #include "solvers/multilevel_cycle.hpp"
 
+#include "solvers/row_obstacle.hpp"
+
 #include <algorithm>
 #include <chrono>
 
@@ -42,6 +44,11 @@ MultilevelCycle::MultilevelCycle(const BoxQp& qp, const LevelHierarchy& hierarch
   // N, with the iterations of the W-cycle, where a V-cycle's grow with the adaptive steps
   // (docs/performance.md, "Measurements behind choices in the code").
   revisit_.assign(nl, 0);
+  if (!qp.row_obstacles.empty()) {
+    row_bounded_.resize(nl);
+    row_bounded_[nl - 1].assign(qp.size(), 0);
+    for (int i : qp.row_obstacles) row_bounded_[nl - 1][i] = 1;
+  }
   long long reference = qp.size();
   for (int j = nl - 1; j >= 2; --j) {
     const long long coarse = hierarchy.levels[j - 1].num_dofs;
@@ -134,6 +141,9 @@ void MultilevelCycle::coarse_correction(int j, CycleShape shape, Vector& c, Vect
   P.restrict_to(r, rc);
   Vector lo_c = Vector::Constant(nc, -kNoBound), hi_c = Vector::Constant(nc, kNoBound);
   if (constrained) project_obstacle(j, c, hi, hi_c);
+  if (constrained && !row_bounded_.empty())
+    project_row_obstacles(P, row_bounded_[j], truncation_.truncated(j), c, lo, hi, lo_c, hi_c,
+                          row_bounded_[j - 1]);
   Vector cc = Vector::Zero(nc);
   // W and F visit the coarse problem twice; its bounds are on the total coarse correction, so
   // the second visit continues from the first (each visit is monotone, hence both are).

@@ -113,6 +113,9 @@ class MultilevelCycle {
   /// revisit_[j]: level j visits level j−1 as the cycle's shape says (else once, with the same
   /// shape); see the constructor.
   std::vector<char> revisit_;
+  /// Per level, the DOFs whose bounds go to the next coarser level by the rows of P̃
+  /// (row_obstacle.hpp): on the finest the QP's row_obstacles; empty without them.
+  std::vector<std::vector<char>> row_bounded_;
   std::unique_ptr<SparseBoxQpSolver> coarse_solver_;
   std::function<void(const Vector&, const Vector&)> sweep_hook_;
   CycleStatistics stats_;

@@ -14,14 +14,19 @@ PdasStep::PdasStep(const BoxQp& qp) : qp_(qp), m_(qp.A), diagonal_(qp.A.diagonal
 
 std::vector<char> PdasStep::next_active_set(const Vector& x, const Vector& r) {
   // Active-set test λ_i + c_i (x_i − ψ_i) > 0 with λ = b − A x on the current active set
-  // (zero elsewhere) and c_i = A_ii, which makes the test invariant to scaling of DOFs.
-  // The first iteration takes λ = b − A x everywhere as its multiplier estimate.
+  // (zero elsewhere) and c_i = A_ii, which makes the test invariant to scaling of DOFs; at a
+  // lower bound the same with the signs turned. The first iteration takes λ = b − A x
+  // everywhere as its multiplier estimate. kUpper or kLower per DOF, 0 for inactive.
   const int n = qp_.size();
   std::vector<char> active(n, 0);
   for (int i = 0; i < n; ++i) {
-    if (!is_bounded_above(qp_.upper[i])) continue;
     const double lambda = (first_ || current_[i]) ? r[i] : 0.0;
-    active[i] = lambda + diagonal_[i] * (x[i] - qp_.upper[i]) > 0;
+    if (qp_.lower[i] == qp_.upper[i])
+      active[i] = kUpper;  // a DOF held at a kink
+    else if (is_bounded_above(qp_.upper[i]) && lambda + diagonal_[i] * (x[i] - qp_.upper[i]) > 0)
+      active[i] = kUpper;
+    else if (is_bounded_below(qp_.lower[i]) && lambda + diagonal_[i] * (x[i] - qp_.lower[i]) < 0)
+      active[i] = kLower;
   }
   first_ = false;
   current_ = active;
@@ -48,7 +53,7 @@ void PdasStep::iterate(Vector& x, Vector& r) {
   Vector rhs = qp_.b;
   Vector psi = Vector::Zero(n);
   for (int i = 0; i < n; ++i)
-    if (active[i]) psi[i] = qp_.upper[i];
+    if (active[i]) psi[i] = bound(active[i], i);
   Vector apsi;
   symmetric_multiply(qp_.A, psi, apsi);
   for (int i = 0; i < n; ++i) rhs[i] = active[i] ? psi[i] : rhs[i] - apsi[i];
@@ -58,7 +63,7 @@ void PdasStep::iterate(Vector& x, Vector& r) {
     throw IndefiniteSystemError("CHOLMOD: the matrix is not positive definite");
   x = llt_.solve(rhs);
   for (int i = 0; i < n; ++i)
-    if (active[i]) x[i] = qp_.upper[i];
+    if (active[i]) x[i] = bound(active[i], i);
   Vector ax;
   symmetric_multiply(qp_.A, x, ax);
   r = qp_.b - ax;

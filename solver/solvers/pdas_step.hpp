@@ -18,6 +18,9 @@ class PdasStep : public IterationStep {
   void iterate(Vector& x, Vector& r) override;
 
  private:
+  static constexpr char kUpper = 1, kLower = 2;
+  /// The bound a DOF is active at.
+  double bound(char side, int i) const { return side == kUpper ? qp_.upper[i] : qp_.lower[i]; }
   /// The active set of the next Newton step: the DOFs whose multiplier test says so.
   std::vector<char> next_active_set(const Vector& x, const Vector& r);
   /// A with the rows and columns of active DOFs replaced by the identity, into m_'s values.

@@ -5,12 +5,14 @@
 #include <cmath>
 #include <limits>
 #include <memory>
+#include <stdexcept>
 
 #include "core/fosls_assert.hpp"
 #include "core/indefinite_system.hpp"
 #include "core/peak_memory.hpp"
 #include "solvers/algebraic_error.hpp"
 #include "solvers/algebraic_error_stop.hpp"
+#include "solvers/kink_sides.hpp"
 #include "solvers/kkt_residual_stop.hpp"
 #include "solvers/mmg_step.hpp"
 #include "solvers/nested_iteration.hpp"
@@ -25,6 +27,10 @@ namespace fosls {
 namespace {
 
 using Clock = std::chrono::steady_clock;
+
+/// Coulomb: the slip bounds are updated each time the KKT residual has fallen by this factor
+/// since the last update (docs/method.md §7.4).
+constexpr double kUpdateReduction = 0.3;
 
 double seconds_since(Clock::time_point t0) {
   return std::chrono::duration<double>(Clock::now() - t0).count();
@@ -53,12 +59,15 @@ std::unique_ptr<IterationStep> make_step(const BoxQp& qp, const LevelHierarchy& 
 
 /// The stopping criteria in the order they are asked (the first met ends the solve). pdas, not
 /// monotone, stops by the KKT test only: its energy history says nothing about its error.
+/// With updates of the problem (Coulomb) J jumps at each update, which the algebraic error
+/// estimate from J's history does not allow for: the KKT test decides.
 std::vector<std::unique_ptr<StoppingCriterion>> stopping_criteria(const BoxQp& qp,
                                                                   const SolverOptions& options,
-                                                                  const Vector& x) {
+                                                                  const Vector& x, bool updates) {
   std::vector<std::unique_ptr<StoppingCriterion>> criteria;
   criteria.push_back(std::make_unique<KktResidualStop>(options.tolerance));
-  if (options.stopping == StoppingRule::kDiscretisation && options.method != SolverMethod::kPdas)
+  if (options.stopping == StoppingRule::kDiscretisation && options.method != SolverMethod::kPdas &&
+      !updates)
     criteria.push_back(std::make_unique<AlgebraicErrorStop>(options.discretisation_fraction));
   criteria.push_back(std::make_unique<RoundingLevelStop>(qp, x));
   return criteria;
@@ -69,8 +78,11 @@ std::vector<std::unique_ptr<StoppingCriterion>> stopping_criteria(const BoxQp& q
 class IterationLoop {
  public:
   IterationLoop(const BoxQp& qp, IterationStep& step, const SolverOptions& options,
-                const SolverObserver& observer, Vector& x, SolverReport& report)
+                const SolverObserver& observer, Vector& x, SolverReport& report,
+                KinkSides* sides = nullptr, const KinkedProblem* kinked = nullptr)
       : qp_(qp),
+        sides_(sides),
+        update_(kinked && kinked->update ? kinked : nullptr),
         step_(step),
         options_(options),
         observer_(observer),
@@ -85,11 +97,13 @@ class IterationLoop {
     t0_ = Clock::now();
     symmetric_multiply(qp_.A, x_, r_);
     r_ = qp_.b - r_;
+    if (sides_) sides_->choose(x_, r_);
     active_ = qp_.active_set(x_);
     report_.initial_kkt = record(0, 0.0, 0).kkt_residual;
     report_.final_kkt = report_.initial_kkt;
-    report_.converged = report_.initial_kkt == 0.0;
-    const auto criteria = stopping_criteria(qp_, options_, x_);
+    report_.converged = report_.initial_kkt == 0.0 && !update_;
+    const auto criteria = stopping_criteria(qp_, options_, x_, update_ != nullptr);
+    double kkt_at_update = report_.initial_kkt;
     for (int k = 1; k <= options_.max_iterations && !report_.converged; ++k) {
       if (stopped_by_observer()) break;
       const IterationRecord rec = iterate(k);
@@ -100,6 +114,11 @@ class IterationLoop {
           report_.converged_by = criterion->reason();
           break;
         }
+      const bool met = report_.converged_by != ConvergedBy::kNone;
+      if (update_ && (met || rec.kkt_residual <= kUpdateReduction * kkt_at_update)) {
+        kkt_at_update = rec.kkt_residual;
+        if (update_problem() > update_->update_tolerance) report_.converged_by = ConvergedBy::kNone;
+      }
       report_.converged = report_.converged_by != ConvergedBy::kNone;
     }
     if (report_.converged && report_.converged_by == ConvergedBy::kNone)
@@ -116,7 +135,21 @@ class IterationLoop {
   }
 
   /// Iteration k: the step, the acceleration, the residual recomputed, the checks, the record.
+  /// The update of the problem at x (Coulomb's slip bounds), x clipped to the new bounds:
+  /// returns its relative change.
+  double update_problem() {
+    const double change = update_->update(x_);
+    report_.update_changes.push_back(change);
+    qp_.clip(x_);
+    symmetric_multiply(qp_.A, x_, r_);
+    r_ = qp_.b - r_;
+    if (sides_) sides_->choose(x_, r_);
+    active_ = qp_.active_set(x_);
+    return change;
+  }
+
   IterationRecord iterate(int k) {
+    if (sides_) sides_->choose(x_, r_);
     const Vector x_old = x_, r_old = r_;
     step_.iterate(x_, r_);
     if (accelerate_ && acceleration_.accelerate(x_old, r_old, x_, r_) > 0.0)
@@ -156,6 +189,10 @@ class IterationLoop {
     rec.energy = qp_.energy_from_residual(x_, r_);
     rec.correction = correction;
     rec.kkt_residual = qp_.kkt_residual(x_, r_);
+    if (sides_) {
+      rec.energy += sides_->energy_offset();
+      rec.kkt_residual = sides_->kkt_residual(x_, r_, rec.kkt_residual);
+    }
     rec.active = static_cast<int>(std::count(active_.begin(), active_.end(), 1));
     rec.changed = changed;
     rec.time_s = seconds_since(t0_);
@@ -165,6 +202,8 @@ class IterationLoop {
   }
 
   const BoxQp& qp_;
+  KinkSides* sides_;
+  const KinkedProblem* update_;
   IterationStep& step_;
   const SolverOptions& options_;
   const SolverObserver& observer_;
@@ -210,32 +249,13 @@ void summarise(const SolverOptions& options, const IterationStep& step, SolverRe
 
 }  // namespace
 
-SolverReport solve_box_qp(const BoxQp& qp, const LevelHierarchy& hierarchy,
-                          const SolverOptions& options, const SolverObserver& observer, Vector& x) {
-  const bool multilevel = is_multilevel(options.method);
-  const auto t0 = Clock::now();
-  std::shared_ptr<GalerkinChain> chain;
-  if (multilevel) {
-    // The definiteness check and the nested iteration read the coarse levels' untruncated
-    // matrices; without them a solve needs only the second-finest one up front (the rest is
-    // formed if a cycle runs untruncated): an adaptive step from its prolongated start.
-    const bool whole_chain = options.check_definiteness || options.nested;
-    chain = std::make_shared<GalerkinChain>(
-        galerkin_chain(qp.A, hierarchy, whole_chain ? std::numeric_limits<int>::max() : 1));
-    if (options.check_definiteness && !chain_is_definite(qp.A, *chain))
-      throw IndefiniteSystemError("the FOSLS matrix is not positive definite");
-  }
-  const double chain_s = seconds_since(t0);
-  const double chain_mib = multilevel ? peak_rss_mib() : 0.0;
-  SolverReport report = solve_with_chain(qp, hierarchy, options, observer, x, chain);
-  report.setup_s += chain_s;
-  report.chain_mib = chain_mib;
-  return report;
-}
+namespace {
 
-SolverReport solve_with_chain(const BoxQp& qp, const LevelHierarchy& hierarchy,
+/// solve_with_chain's work, with the kinks' sides and the problem's update when there are.
+SolverReport solve_from_start(const BoxQp& qp, const LevelHierarchy& hierarchy,
                               const SolverOptions& options, const SolverObserver& observer,
-                              Vector& x, std::shared_ptr<GalerkinChain> chain) {
+                              Vector& x, std::shared_ptr<GalerkinChain> chain, KinkSides* sides,
+                              const KinkedProblem* kinked) {
   SolverReport report;
   const auto t_setup = Clock::now();
   start_feasible(qp, x);
@@ -251,13 +271,63 @@ SolverReport solve_with_chain(const BoxQp& qp, const LevelHierarchy& hierarchy,
   const std::unique_ptr<IterationStep> step = make_step(qp, hierarchy, options, chain);
   if (observer.on_sweep)
     step->set_sweep_hook([&](const Vector& xs, const Vector& rs) {
-      observer.on_sweep(qp.energy_from_residual(xs, rs));
+      observer.on_sweep(qp.energy_from_residual(xs, rs) + (sides ? sides->energy_offset() : 0.0));
     });
   report.setup_s = seconds_since(t_setup);
   report.setup_mib = peak_rss_mib();
-  IterationLoop(qp, *step, options, observer, x, report).run();
+  IterationLoop(qp, *step, options, observer, x, report, sides, kinked).run();
   summarise(options, *step, report);
   return report;
+}
+
+/// The Galerkin chain (mmg, tnnmg; checked for definiteness when asked), then the solve.
+SolverReport solve_with_new_chain(const BoxQp& qp, const LevelHierarchy& hierarchy,
+                                  const SolverOptions& options, const SolverObserver& observer,
+                                  Vector& x, KinkSides* sides, const KinkedProblem* kinked) {
+  const bool multilevel = is_multilevel(options.method);
+  const auto t0 = Clock::now();
+  std::shared_ptr<GalerkinChain> chain;
+  if (multilevel) {
+    // The definiteness check and the nested iteration read the coarse levels' untruncated
+    // matrices; without them a solve needs only the second-finest one up front (the rest is
+    // formed if a cycle runs untruncated): an adaptive step from its prolongated start.
+    const bool whole_chain = options.check_definiteness || options.nested;
+    chain = std::make_shared<GalerkinChain>(
+        galerkin_chain(qp.A, hierarchy, whole_chain ? std::numeric_limits<int>::max() : 1));
+    if (options.check_definiteness && !chain_is_definite(qp.A, *chain))
+      throw IndefiniteSystemError("the FOSLS matrix is not positive definite");
+  }
+  const double chain_s = seconds_since(t0);
+  const double chain_mib = multilevel ? peak_rss_mib() : 0.0;
+  SolverReport report =
+      solve_from_start(qp, hierarchy, options, observer, x, chain, sides, kinked);
+  report.setup_s += chain_s;
+  report.chain_mib = chain_mib;
+  return report;
+}
+
+}  // namespace
+
+SolverReport solve_box_qp(const BoxQp& qp, const LevelHierarchy& hierarchy,
+                          const SolverOptions& options, const SolverObserver& observer, Vector& x) {
+  return solve_with_new_chain(qp, hierarchy, options, observer, x, nullptr, nullptr);
+}
+
+SolverReport solve_with_chain(const BoxQp& qp, const LevelHierarchy& hierarchy,
+                              const SolverOptions& options, const SolverObserver& observer,
+                              Vector& x, std::shared_ptr<GalerkinChain> chain) {
+  return solve_from_start(qp, hierarchy, options, observer, x, std::move(chain), nullptr, nullptr);
+}
+
+SolverReport solve_kinked_qp(BoxQp& qp, const KinkedProblem& kinked,
+                             const LevelHierarchy& hierarchy, const SolverOptions& options,
+                             const SolverObserver& observer, Vector& x) {
+  // tnnmg's linear correction and line search see the sided QP's kinks as bounds it would
+  // cross in one Newton step; it is not extended to them.
+  if (options.method == SolverMethod::kTnnmg)
+    throw std::invalid_argument("solver.method tnnmg does not handle friction");
+  KinkSides sides(qp, *kinked.kinks, options.method == SolverMethod::kPdas);
+  return solve_with_new_chain(qp, hierarchy, options, observer, x, &sides, &kinked);
 }
 
 }  // namespace fosls

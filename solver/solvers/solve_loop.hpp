@@ -3,11 +3,13 @@
 // the norms, the history and the observer; the methods are iteration steps (iteration_step.hpp),
 // the nested iteration a start (nested_iteration.hpp).
 
+#include <functional>
 #include <memory>
 #include <string>
 #include <vector>
 
 #include "core/box_qp.hpp"
+#include "core/kinks.hpp"
 #include "core/level_hierarchy.hpp"
 #include "solvers/iteration_record.hpp"
 #include "solvers/multilevel_cycle.hpp"
@@ -57,6 +59,9 @@ struct SolverOptions {
   /// factorisation of up to 5·10⁴ unknowns, is a large part of a small step (docs/performance.md,
   /// "Measurements behind choices in the code").
   bool check_definiteness = true;
+  /// Coulomb friction: the largest relative change of the slip bounds at the last update for a
+  /// solve to count as converged (docs/method.md §7.4).
+  double friction_tolerance = 1e-6;
 };
 
 struct SolverReport {
@@ -90,6 +95,21 @@ struct SolverReport {
   double setup_mib = 0.0;
   CycleStatistics cycle;
   std::string message;
+  /// solve_kinked_qp with an update (Coulomb): the largest relative change of the slip bounds
+  /// at each update, in order; the solve has converged only if the last is within tolerance.
+  std::vector<double> update_changes;
+};
+
+/// A change of the problem with its own solution (Coulomb friction: the slip bounds from the
+/// normal stress, docs/method.md §7): sets the QP's bounds and kink weights for x and returns
+/// the largest relative change.
+using ProblemUpdate = std::function<double(const Vector& x)>;
+
+/// The non-smooth parts of a frictional solve.
+struct KinkedProblem {
+  const Kinks* kinks = nullptr;
+  ProblemUpdate update;  ///< empty for fixed bounds (Tresca)
+  double update_tolerance = 1e-6;
 };
 
 /// The solve loop: minimises the bound-constrained QP from x (projected onto the bounds
@@ -98,6 +118,16 @@ struct SolverReport {
 /// definite throws IndefiniteSystemError.
 SolverReport solve_box_qp(const BoxQp& qp, const LevelHierarchy& hierarchy,
                           const SolverOptions& options, const SolverObserver& observer, Vector& x);
+
+/// solve_box_qp for J + Σ w_k |x_k − o_k| (docs/method.md §7): methods mmg, pdas and pgs. The
+/// QP's b and bounds change at the kinked DOFs during the solve (kink_sides.hpp) and are
+/// restored; the bounds an update sets stay. With an update, it is called whenever the KKT
+/// residual has fallen by the factor kUpdateReduction since the last one and whenever a
+/// stopping criterion is met; the solve converges when a criterion is met and the update then
+/// changes no bound by more than update_tolerance.
+SolverReport solve_kinked_qp(BoxQp& qp, const KinkedProblem& kinked,
+                             const LevelHierarchy& hierarchy, const SolverOptions& options,
+                             const SolverObserver& observer, Vector& x);
 
 /// solve_box_qp on the Galerkin chain of the hierarchy (formed here when null, for mmg and
 /// tnnmg), without the definiteness check: the nested iteration's coarse solves.

@@ -32,6 +32,19 @@ class TruncatedProlongation {
   void restrict_to(const Vector& r, Vector& rc) const;
   /// v = P̃ c.
   void prolongate(const Vector& c, Vector& v) const;
+  /// visit(row, col, value) for every stored entry of P̃ (an entry of P and one of a move at the
+  /// same place are visited apart).
+  template <class Visit>
+  void for_each_entry(Visit visit) const {
+    const SparseMatrix& m = p_ ? *p_ : formed_;
+    for (int col = 0; col < m.outerSize(); ++col)
+      for (SparseMatrix::InnerIterator it(m, col); it; ++it)
+        if (!p_ || kept(static_cast<int>(it.row()))) visit(static_cast<int>(it.row()), col, it.value());
+    if (p_)
+      for (int col = 0; col < moves_.outerSize(); ++col)
+        for (SparseMatrix::InnerIterator it(moves_, col); it; ++it)
+          visit(static_cast<int>(it.row()), col, it.value());
+  }
   /// vanished[J]: column J of P̃ is empty (the coarse function was truncated away entirely).
   std::vector<char> vanished_columns() const;
 
