@@ -87,7 +87,8 @@ ContactWeightLimit contact_weight_limit(const MeshHierarchy& meshes, const Probl
   std::unique_ptr<FoslsSpace> chosen;
   for (int level = 0; level < meshes.num_levels(); ++level) {
     const Mesh& mesh = meshes.meshes[level];
-    auto space = std::make_unique<FoslsSpace>(mesh, roles, obstacle_vertex_normals(mesh, data));
+    auto space = std::make_unique<FoslsSpace>(mesh, roles, obstacle_vertex_normals(mesh, data),
+                                              data.frictional_groups());
     if (chosen && space->num_free() > max_dofs) break;
     chosen = std::move(space);
     out.level = level;

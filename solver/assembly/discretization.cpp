@@ -13,7 +13,8 @@ Discretization::Discretization(MeshHierarchy meshes, ProblemData data, const Dea
   const auto roles = data_.roles();
   for (const Mesh& m : meshes_.meshes) {
     deadline.check("building the finite element spaces");
-    spaces_.push_back(std::make_unique<FoslsSpace>(m, roles, obstacle_vertex_normals(m, data_)));
+    spaces_.push_back(std::make_unique<FoslsSpace>(m, roles, obstacle_vertex_normals(m, data_),
+                                                   data_.frictional_groups()));
   }
   assembler_ = std::make_unique<FoslsAssembler>(*spaces_.back(), data_);
   // Eigen 3.4's SparseMatrix has no move assignment: the matrix is swapped in, not copied.

@@ -23,6 +23,9 @@ class Discretization {
   const FoslsSpace& finest_space() const { return *spaces_.back(); }
   const FoslsAssembler& assembler() const { return *assembler_; }
   const AssembledProblem& problem() const { return problem_; }
+  /// The problem for a frictional solve, which changes its bounds (Coulomb) and, while it
+  /// runs, its kinked DOFs' b and bounds (solvers/kink_sides.hpp).
+  AssembledProblem& mutable_problem() { return problem_; }
   const ProblemData& data() const { return data_; }
   /// Builds the transfers, patches and contact links of the levels from
   /// coarsest_solver_level() up (not needed by pdas).

@@ -217,6 +217,13 @@ AssembledProblem FoslsAssembler::assemble_system(const Deadline& deadline) const
   out.qp.lower = Vector::Constant(n_free, -kNoBound);
   out.qp.upper = Vector::Constant(n_free, kNoBound);
   set_contact_bounds(out.qp.upper);
+  out.friction = friction_layout(space_, data_, xd, out.kinks);
+  if (!out.friction.empty()) {
+    set_friction_bounds(out.friction, Vector::Zero(n_free), out.qp, out.kinks);
+    for (const FrictionEdge& f : out.friction.edges) out.qp.row_obstacles.push_back(f.st);
+    out.qp.row_obstacles.insert(out.qp.row_obstacles.end(), out.kinks.dof.begin(),
+                                out.kinks.dof.end());
+  }
   out.fixed_values = std::move(xd);
   return out;
 }
@@ -332,33 +339,45 @@ void FoslsAssembler::add_contact_terms(const Vector& xd, SparseMatrix& a, Vector
   double* values = a.valuePtr();
   // Contact term C3 ⟨u·n − g, σ_nn⟩ on each contact edge: σ_nn = S_n/|e| is constant, u·n and
   // g are linear along the edge, so the term is C3 S_n ((u·n)_p + (u·n)_q − g_p − g_q) / 2.
+  // On a frictional edge C3 ⟨u·t − o, σ_nt⟩ likewise, o the reference state's u·t.
   // Its entries couple DOFs of the edge's triangle, so they are in the pattern.
   const double c3 = data_.weights.c3;
+  // C3 S (d·u_v)/2 for the flux DOF s: U_n or U_t (`component`) at a contact vertex, else d·u.
+  auto couple = [&](int s, int v, int component, const Point& d) {
+    std::array<std::pair<int, double>, 2> terms;
+    if (space_.is_contact_vertex(v))
+      terms = {{{space_.u_dof(v, component), 0.5 * c3}, {space_.u_dof(v, 1 - component), 0.0}}};
+    else
+      terms = {{{space_.u_dof(v, 0), 0.5 * c3 * d.x()}, {space_.u_dof(v, 1), 0.5 * c3 * d.y()}}};
+    for (auto [dof, val] : terms) {
+      if (val == 0.0) continue;
+      const int fj = space_.free_index(dof);
+      if (fj >= 0) {
+        values[entry_position(a, s, fj)] += val;
+        values[entry_position(a, fj, s)] += val;
+      } else {
+        b[s] -= val * xd[dof];
+      }
+    }
+  };
   for (int e = 0; e < mesh.num_edges(); ++e) {
     if (!space_.is_contact_edge(e) || c3 == 0.0) continue;
     const int sn = space_.free_index(space_.sigma_dof(e, 0));
-    const Point ne = mesh.edge_normal(e);
-    double gbar = 0.0;
+    const int st = space_.role(space_.sigma_dof(e, 1)) == DofRole::kTangentialS
+                       ? space_.free_index(space_.sigma_dof(e, 1))
+                       : -1;
+    const Point ne = mesh.edge_normal(e), te(-ne.y(), ne.x());
+    double gbar = 0.0, obar = 0.0;
     for (int v : mesh.edge(e)) {
       gbar += 0.5 * vertex_gap_[v];
-      std::array<std::pair<int, double>, 2> terms;
-      if (space_.is_contact_vertex(v))
-        terms = {{{space_.u_dof(v, 0), 0.5 * c3}, {space_.u_dof(v, 1), 0.0}}};
-      else
-        terms = {
-            {{space_.u_dof(v, 0), 0.5 * c3 * ne.x()}, {space_.u_dof(v, 1), 0.5 * c3 * ne.y()}}};
-      for (auto [dof, val] : terms) {
-        if (val == 0.0) continue;
-        const int fj = space_.free_index(dof);
-        if (fj >= 0) {
-          values[entry_position(a, sn, fj)] += val;
-          values[entry_position(a, fj, sn)] += val;
-        } else {
-          b[sn] -= val * xd[dof];
-        }
-      }
+      couple(sn, v, 0, ne);
+      if (st < 0) continue;
+      const Point n = space_.is_contact_vertex(v) ? space_.vertex_normal(v) : ne;
+      obar += 0.5 * reference_slip_origin(data_, v, Point(-n.y(), n.x()));
+      couple(st, v, 1, te);
     }
     b[sn] += c3 * gbar;
+    if (st >= 0) b[st] += c3 * obar;
   }
 }
 

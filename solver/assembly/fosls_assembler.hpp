@@ -5,6 +5,7 @@
 #include <Eigen/Core>
 #include <vector>
 
+#include "assembly/friction_terms.hpp"
 #include "assembly/problem_data.hpp"
 #include "core/box_qp.hpp"
 #include "core/deadline.hpp"
@@ -23,6 +24,10 @@ struct AssembledProblem {
   double stress_scale = 1.0;
   /// Gap g(v) at every vertex of a contact edge along its constraint direction, +inf elsewhere.
   std::vector<double> vertex_gap;
+  /// Frictional contact edges and the kinks of their slip (friction_terms.hpp); empty without
+  /// friction. Coulomb's bounds in qp and kinks are those of S_n = 0 until updated.
+  FrictionLayout friction;
+  Kinks kinks;
 };
 
 /// The functional split into its terms; `element` holds the C1 + C2 + C4 terms of each
@@ -32,8 +37,10 @@ struct FunctionalParts {
   double constitutive = 0.0;  ///< C2 ‖Aσ − ε(u)‖² (volumetric part × c2_volumetric)
   double contact = 0.0;       ///< C3 ⟨u·n − g, σ_nn⟩
   double asymmetry = 0.0;     ///< C4 ‖as σ‖²
+  /// C3 ∫ (σ_nt Δu_t + s |Δu_t|)/μ on frictional edges (docs/method.md §7; not in `element`).
+  double friction = 0.0;
   std::vector<double> element;
-  double total() const { return momentum + constitutive + contact + asymmetry; }
+  double total() const { return momentum + constitutive + contact + asymmetry + friction; }
 };
 
 class FoslsAssembler {
@@ -70,7 +77,8 @@ class FoslsAssembler {
   /// in parallel; returns each thread's part of the constant of J.
   std::vector<double> add_element_terms(const Vector& xd, AssemblyPattern& pattern, int threads,
                                         Vector& b, const Deadline& deadline) const;
-  /// The contact term C3 ⟨u·n − g, σ_nn⟩ of every contact edge.
+  /// The contact term C3 ⟨u·n − g, σ_nn⟩ of every contact edge, and on frictional ones the
+  /// bilinear part C3 ⟨Δu_t, σ_nt⟩ of the friction term.
   void add_contact_terms(const Vector& xd, SparseMatrix& a, Vector& b) const;
   /// U_n ≤ g at contact vertices, S_n ≤ 0 on contact edges.
   void set_contact_bounds(Vector& upper) const;

@@ -46,12 +46,22 @@ struct RigidObstacle {
 /// Along which direction the constraint u·d ≤ g is imposed (docs/method.md §1).
 enum class ConstraintDirection { kBodyNormal, kObstacleNormal };
 
+/// Friction on a contact group (docs/method.md §7): Coulomb |σ_nt| ≤ 𝔣 |σ_nn| when coefficient
+/// > 0, else Tresca |σ_nt| ≤ s(x, y) when `bound` is set, else none.
+struct FrictionData {
+  double coefficient = 0.0;
+  ScalarFunction bound;
+  bool coulomb() const { return coefficient > 0.0; }
+  bool frictional() const { return coulomb() || static_cast<bool>(bound); }
+};
+
 /// Contact data of one group: the rigid obstacle and the constraint direction (docs/method.md
 /// §1).
 struct ContactData {
   RigidObstacle obstacle;
   ScalarFunction gap;  ///< g(x, y) along the body normal, for RigidObstacle::Kind::kGap
   ConstraintDirection direction = ConstraintDirection::kBodyNormal;
+  FrictionData friction;
 };
 
 /// Boundary condition of one mesh group.
@@ -69,10 +79,21 @@ struct ProblemData {
   std::array<ScalarFunction, 2> body_force;  ///< an empty component is zero
   std::vector<GroupData> groups;             ///< indexed like Mesh::group_names()
 
+  /// The displacement of each vertex of the finest mesh that friction measures slip from: the
+  /// state a load step starts from (empty: zero).
+  std::vector<Point> reference_displacement;
+
   std::vector<GroupRole> roles() const {
     std::vector<GroupRole> r;
     for (const auto& g : groups) r.push_back(g.role);
     return r;
+  }
+  /// 1 for each frictional contact group.
+  std::vector<char> frictional_groups() const {
+    std::vector<char> f;
+    for (const auto& g : groups)
+      f.push_back(g.role == GroupRole::kContact && g.contact.friction.frictional());
+    return f;
   }
 };
 

@@ -28,7 +28,8 @@ struct FoslsSpace::VertexMarks {
 };
 
 FoslsSpace::FoslsSpace(const Mesh& mesh, const std::vector<GroupRole>& roles,
-                       const std::vector<Point>& vertex_normals)
+                       const std::vector<Point>& vertex_normals,
+                       const std::vector<char>& frictional)
     : mesh_(&mesh) {
   const int nv = mesh.num_vertices(), ne = mesh.num_edges();
   if (roles.size() != mesh.group_names().size())
@@ -37,11 +38,12 @@ FoslsSpace::FoslsSpace(const Mesh& mesh, const std::vector<GroupRole>& roles,
   contact_vertex_.assign(nv, 0);
   contact_edge_.assign(ne, 0);
   vertex_normal_.assign(nv, Point::Zero());
-  set_vertex_roles(mark_boundary_edges(roles), vertex_normals);
+  set_vertex_roles(mark_boundary_edges(roles, frictional), vertex_normals);
   number_free_dofs();
 }
 
-FoslsSpace::VertexMarks FoslsSpace::mark_boundary_edges(const std::vector<GroupRole>& roles) {
+FoslsSpace::VertexMarks FoslsSpace::mark_boundary_edges(const std::vector<GroupRole>& roles,
+                                                        const std::vector<char>& frictional) {
   const int nv = mesh_->num_vertices(), ne = mesh_->num_edges();
   VertexMarks m;
   m.prescribed.assign(nv, 0);
@@ -70,7 +72,8 @@ FoslsSpace::VertexMarks FoslsSpace::mark_boundary_edges(const std::vector<GroupR
       case GroupRole::kContact:
         contact_edge_[e] = 1;
         roles_[sigma_dof(e, 0)] = DofRole::kNormalS;
-        roles_[sigma_dof(e, 1)] = DofRole::kFixed;  // σ_nt = 0
+        roles_[sigma_dof(e, 1)] = !frictional.empty() && frictional[g] ? DofRole::kTangentialS
+                                                                        : DofRole::kFixed;  // σ_nt = 0
         for (int v : pq) {
           contact_vertex_[v] = 1;
           m.averaged[v] += mesh_->edge_normal(e);

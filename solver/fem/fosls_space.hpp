@@ -23,6 +23,7 @@ enum class DofRole : unsigned char {
   kFixed,    ///< essential: Dirichlet u, Neumann σ flux, tangential σ on contact edges
   kNormalU,  ///< U_n at a contact vertex: U_n ≤ g
   kNormalS,  ///< S_n on a contact edge: S_n ≤ 0
+  kTangentialS,  ///< S_t on a frictional contact edge: |S_t| ≤ s̄ (docs/method.md §7)
 };
 
 /// Full DOF vector layout: u_c at vertex v is 2v + c; σ row i on edge e is 2·nv + 2e + i.
@@ -32,9 +33,11 @@ class FoslsSpace {
  public:
   /// `roles[g]` is the role of mesh group g. `vertex_normals` gives the constraint direction
   /// at each contact vertex (ignored elsewhere; empty = the normalised average of the adjacent
-  /// contact edge normals).
+  /// contact edge normals). `frictional[g]` (empty: none) makes S_t of group g's contact edges
+  /// free and bounded instead of fixed at σ_nt = 0.
   FoslsSpace(const Mesh& mesh, const std::vector<GroupRole>& roles,
-             const std::vector<Point>& vertex_normals = {});
+             const std::vector<Point>& vertex_normals = {},
+             const std::vector<char>& frictional = {});
 
   const Mesh& mesh() const { return *mesh_; }
   int num_dofs() const { return 2 * mesh_->num_vertices() + 2 * mesh_->num_edges(); }
@@ -60,7 +63,8 @@ class FoslsSpace {
   /// What the boundary groups say about each vertex (the constructor's first step).
   struct VertexMarks;
   /// Roles of the edges' DOFs from their group's role; contact edges and vertices marked.
-  VertexMarks mark_boundary_edges(const std::vector<GroupRole>& roles);
+  VertexMarks mark_boundary_edges(const std::vector<GroupRole>& roles,
+                                  const std::vector<char>& frictional);
   /// Roles of the vertices' DOFs and the contact normals, from the marks.
   void set_vertex_roles(const VertexMarks& marks, const std::vector<Point>& vertex_normals);
   /// The normal of contact vertex v: given, the arc's exact one, or the edges' average.

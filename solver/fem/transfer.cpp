@@ -113,6 +113,7 @@ Eigen::SparseMatrix<double> free_prolongation(const FoslsSpace& coarse, const Fo
   for (int f = 0; f < mesh.num_edges(); ++f) {
     const int e = maps.parent_edge[f];
     if (e < 0 || !fine.is_contact_edge(f) || coarse.mesh().edge_curve(e) < 0) continue;
+    if (fine.free_index(fine.sigma_dof(f, 1)) >= 0) continue;  // frictional: S_t carries it
     auto& h = halves.try_emplace(e, std::array<int, 2>{-1, -1}).first->second;
     h[h[0] < 0 ? 0 : 1] = f;
   }

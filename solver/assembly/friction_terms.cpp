@@ -1,0 +1,135 @@
+#include "assembly/friction_terms.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+#include <sstream>
+#include <stdexcept>
+
+namespace fosls {
+
+namespace {
+
+/// ∫_e s/μ by 3-point Gauss–Legendre; s must not be negative.
+double tresca_bound(const ScalarFunction& s, const Point& a, const Point& b, double mu) {
+  constexpr std::array<double, 3> x = {0.1127016653792583, 0.5, 0.8872983346207417};
+  constexpr std::array<double, 3> w = {5.0 / 18.0, 8.0 / 18.0, 5.0 / 18.0};
+  double sum = 0.0;
+  for (int q = 0; q < 3; ++q) {
+    const Point p = a + x[q] * (b - a);
+    const double value = s(p.x(), p.y());
+    if (!(value >= 0.0)) {
+      std::ostringstream m;
+      m << "the friction bound is " << value << " at (" << p.x() << ", " << p.y()
+        << "); it must be a number >= 0 everywhere on the contact boundary";
+      throw std::domain_error(m.str());
+    }
+    sum += w[q] * value;
+  }
+  return sum * (b - a).norm() / mu;
+}
+
+}  // namespace
+
+bool FrictionLayout::coulomb() const {
+  return std::any_of(edges.begin(), edges.end(),
+                     [](const FrictionEdge& f) { return f.coefficient > 0.0; });
+}
+
+double reference_slip_origin(const ProblemData& data, int v, const Point& tangent) {
+  if (data.reference_displacement.empty()) return 0.0;
+  return tangent.dot(data.reference_displacement[v]);
+}
+
+FrictionLayout friction_layout(const FoslsSpace& space, const ProblemData& data, const Vector& xd,
+                               Kinks& kinks) {
+  const Mesh& mesh = space.mesh();
+  FrictionLayout layout;
+  layout.c3 = data.weights.c3;
+  std::map<int, int> kink_of;  // free U_t → kink index
+  kinks = Kinks{};
+  for (int e = 0; e < mesh.num_edges(); ++e) {
+    if (!space.is_contact_edge(e) || space.role(space.sigma_dof(e, 1)) != DofRole::kTangentialS)
+      continue;
+    const FrictionData& friction = data.groups[mesh.edge_group(e)].contact.friction;
+    FrictionEdge f;
+    f.edge = e;
+    f.st = space.free_index(space.sigma_dof(e, 1));
+    f.sn = space.free_index(space.sigma_dof(e, 0));
+    f.coefficient = friction.coefficient;
+    const auto& pq = mesh.edge(e);
+    if (!friction.coulomb())
+      f.tresca = tresca_bound(friction.bound, mesh.vertex(pq[0]), mesh.vertex(pq[1]),
+                              data.material.mu);
+    const Point ne = mesh.edge_normal(e);
+    for (int k = 0; k < 2; ++k) {
+      const int v = pq[k];
+      const bool rotated = space.is_contact_vertex(v);
+      const Point n = rotated ? space.vertex_normal(v) : ne;
+      const Point t(-n.y(), n.x());
+      const double origin = reference_slip_origin(data, v, t);
+      const int ut = rotated ? space.free_index(space.u_dof(v, 1)) : -1;
+      if (ut >= 0) {
+        auto [it, added] = kink_of.try_emplace(ut, kinks.size());
+        if (added) {
+          kinks.dof.push_back(ut);
+          kinks.at.push_back(origin);
+          kinks.weight.push_back(0.0);
+        }
+        f.kink[k] = it->second;
+      } else {
+        // A fixed tangential displacement: a roller's U_t, or both Dirichlet components.
+        const double ut_fixed =
+            rotated ? xd[space.u_dof(v, 1)]
+                    : t.x() * xd[space.u_dof(v, 0)] + t.y() * xd[space.u_dof(v, 1)];
+        f.fixed_slip[k] = ut_fixed - origin;
+      }
+    }
+    layout.edges.push_back(f);
+  }
+  return layout;
+}
+
+double slip_bound(const FrictionEdge& f, const Vector& x) {
+  return f.coefficient > 0.0 ? f.coefficient * std::max(0.0, -x[f.sn]) : f.tresca;
+}
+
+double set_friction_bounds(const FrictionLayout& layout, const Vector& x, BoxQp& qp, Kinks& kinks) {
+  std::fill(kinks.weight.begin(), kinks.weight.end(), 0.0);
+  kinks.constant = 0.0;
+  double largest = 0.0, change = 0.0;
+  bool first = false;
+  for (const FrictionEdge& f : layout.edges) {
+    const double s = slip_bound(f, x);
+    first |= !is_bounded_above(qp.upper[f.st]);
+    if (is_bounded_above(qp.upper[f.st])) change = std::max(change, std::abs(s - qp.upper[f.st]));
+    largest = std::max(largest, s);
+    qp.lower[f.st] = -s;
+    qp.upper[f.st] = s;
+    for (int k = 0; k < 2; ++k) {
+      if (f.kink[k] >= 0)
+        kinks.weight[f.kink[k]] += 0.5 * layout.c3 * s;
+      else
+        kinks.constant += 0.5 * layout.c3 * s * std::abs(f.fixed_slip[k]);
+    }
+  }
+  if (first) return 1.0;
+  return largest > 0.0 ? change / largest : 0.0;
+}
+
+}  // namespace fosls
+
+namespace fosls {
+
+double friction_functional(const FrictionLayout& layout, const Kinks& kinks, const Vector& x) {
+  double sum = kinks.energy(x);
+  for (const FrictionEdge& f : layout.edges) {
+    double slip = 0.0;
+    for (int k = 0; k < 2; ++k)
+      slip += f.kink[k] >= 0 ? x[kinks.dof[f.kink[k]]] - kinks.at[f.kink[k]] : f.fixed_slip[k];
+    sum += 0.5 * layout.c3 * x[f.st] * slip;
+  }
+  return sum;
+}
+
+}  // namespace fosls
