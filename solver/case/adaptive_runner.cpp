@@ -7,6 +7,7 @@
 #include "assembly/definiteness.hpp"
 #include "assembly/error_indicators.hpp"
 #include "assembly/solution_prolongation.hpp"
+#include "case/friction_solve.hpp"
 #include "case/solver_methods.hpp"
 #include "core/indefinite_system.hpp"
 #include "core/peak_memory.hpp"
@@ -49,12 +50,16 @@ void solve_finest(CaseSolution& solution, const CaseSpec& spec, bool from_start,
       method_info(options.method).needs_hierarchy ? disc.build_level_hierarchy() : LevelHierarchy{};
   const auto t_assembled = Clock::now();
   solution.hierarchy_mib = peak_rss_mib();
-  solution.report = solve_box_qp(problem.qp, hierarchy, options, observer.solver, solution.x);
+  solution.report =
+      problem.friction.empty()
+          ? solve_box_qp(problem.qp, hierarchy, options, observer.solver, solution.x)
+          : solve_frictional(*solution.disc, hierarchy, options, observer.solver, solution.x);
   const auto t_solved = Clock::now();
   solution.assembly_s += seconds(t0, t_assembled);
   solution.solve_s += seconds(t_assembled, t_solved);
   solution.full = disc.assembler().full_vector(problem, solution.x);
   solution.parts = disc.assembler().functional(solution.full);
+  solution.parts.friction = friction_functional(problem.friction, problem.kinks, solution.x);
   solution.contact = contact_output(disc.assembler(), problem, solution.full);
 }
 

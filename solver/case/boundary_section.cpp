@@ -73,6 +73,25 @@ ObjectRulePtr obstacle_rule(const CaseReadOptions& options) {
   return r;
 }
 
+ObjectRulePtr friction_rule(const CaseReadOptions& options) {
+  auto r = std::make_shared<ObjectRule>();
+  r->title = "the friction law";
+  r->anchor = "friction";
+  r->fields = {
+      optional_field("coefficient", number_value(Range::closed(0, 10)), nullptr,
+                     "Coulomb's coefficient 𝔣: |σ_nt| ≤ 𝔣 |σ_nn|; 0 is frictionless"),
+      optional_field("bound", scalar_value(options.limits.max_expression_length), nullptr,
+                     "Tresca's slip bound s ≥ 0 in stress units, a number or an expression of "
+                     "x and y: |σ_nt| ≤ s"),
+  };
+  r->exclusive = {{{{"coefficient"}, {"bound"}},
+                   "give the Coulomb coefficient or the Tresca bound",
+                   "give either the Coulomb coefficient or the Tresca bound, not {given}"}};
+  r->notes = "a bound given as an expression must be >= 0 on the contact boundary (checked "
+             "when the case runs)";
+  return r;
+}
+
 /// [0, null] is a roller; [null, null] would prescribe nothing.
 void check_displacement(const json& j, const std::string& pointer, RuleChecker& checker) {
   if (!j.contains("displacement") || !checker.usable(j, pointer, {"displacement"})) return;
@@ -119,8 +138,10 @@ ObjectRulePtr condition_rule(const CaseReadOptions& options) {
        ""},
       {"contact",
        "a contact condition",
-       "frictionless contact with a rigid obstacle",
+       "contact with a rigid obstacle, frictionless unless `friction` is given",
        {required_field("obstacle", object_value(obstacle_rule(options)), "a plane, circle or gap"),
+        optional_field("friction", object_value(friction_rule(options)), nullptr,
+                       "Coulomb or Tresca friction (docs/method.md §7); absent: frictionless"),
         optional_field("direction", choice_value({"body_normal", "obstacle_normal"}), "body_normal",
                        "the constrained displacement component: u·n with the body's normal, "
                        "or u·ν with the obstacle's normal")},
@@ -170,6 +191,11 @@ BoundaryCondition read_condition(const json& j) {
     bc.obstacle = read_obstacle(j["obstacle"]);
     if (j.value("direction", "body_normal") == "obstacle_normal")
       bc.direction = ContactDirection::kObstacleNormal;
+    if (j.contains("friction")) {
+      const json& f = j["friction"];
+      bc.friction_coefficient = f.value("coefficient", 0.0);
+      if (f.contains("bound")) bc.friction_bound = read_scalar(f["bound"]);
+    }
   }
   return bc;
 }

@@ -1,5 +1,7 @@
 #include "case/case_reader.hpp"
 
+#include <algorithm>
+
 #include "case/case_sections.hpp"
 #include "case/early_group_check.hpp"
 #include "case/rule_checker.hpp"
@@ -38,6 +40,25 @@ ObjectRulePtr case_rule(const CaseReadOptions& options) {
   return r;
 }
 
+namespace {
+
+/// What friction is not (yet) combined with (docs/method.md §7.5).
+void check_friction_support(const CaseSpec& spec, std::vector<CaseError>& errors) {
+  const bool frictional = std::any_of(spec.boundary.begin(), spec.boundary.end(), [](const auto& b) {
+    return b.second.type == BoundaryCondition::Type::kContact && b.second.frictional();
+  });
+  if (!frictional) return;
+  if (spec.solver.method == SolverMethod::kTnnmg)
+    errors.push_back({"/solver/method",
+                      "tnnmg does not handle friction; use mmg (the default) or pdas"});
+  if (spec.adaptivity)
+    errors.push_back({"/adaptivity",
+                      "adaptive refinement is not available with friction yet; refine "
+                      "uniformly with mesh.refinements"});
+}
+
+}  // namespace
+
 CaseReadResult read_case(const nlohmann::json& j, const CaseReadOptions& options) {
   CaseReadResult result;
   if (!j.is_object()) {
@@ -70,6 +91,8 @@ CaseReadResult read_case(const nlohmann::json& j, const CaseReadOptions& options
   // unless the case gives a tolerance (docs/method.md §5.1).
   if (spec.adaptivity && !(j.contains("solver") && j["solver"].contains("tolerance")))
     spec.solver.stopping = StoppingRule::kDiscretisation;
+  check_friction_support(spec, result.errors);
+  if (!result.errors.empty()) return result;
   if (j.contains("sweep")) {
     read_sweep_section(j, options, spec, result.errors);
     if (!result.errors.empty()) return result;

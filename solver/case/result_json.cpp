@@ -59,14 +59,22 @@ const char* obstacle_name(Obstacle::Kind kind) {
 
 json contact_json(const ContactResult& contact, const CaseSpec& spec) {
   json c;
-  std::vector<double> xs, ys, ss, ls, ps, gs;
+  std::vector<double> xs, ys, ss, ls, ps, gs, shear, slip;
   std::vector<bool> active;
+  std::vector<std::string> state;
   for (const auto& e : contact.edges) {
     xs.push_back(e.x), ys.push_back(e.y), ss.push_back(e.s), ls.push_back(e.length);
     ps.push_back(e.pressure), gs.push_back(e.gap), active.push_back(e.active);
+    shear.push_back(e.shear), slip.push_back(e.slip), state.push_back(state_name(e.state));
   }
   c["x"] = xs, c["y"] = ys, c["s"] = ss, c["length"] = ls;
   c["pressure"] = ps, c["gap"] = gs, c["active"] = active;
+  c["shear"] = shear, c["slip"] = slip, c["state"] = state;
+  const ContactZone stick = contact.stick_zone();
+  c["stick_zone"] = {{"edges", stick.edges},
+                     {"length", stick.length},
+                     {"s_start", stick.edges ? json(stick.s_start) : json(nullptr)},
+                     {"s_end", stick.edges ? json(stick.s_end) : json(nullptr)}};
   c["force"] = {contact.force_x, contact.force_y};
   const ContactZone z = contact.zone();
   c["zone"] = {{"edges", z.edges},
@@ -85,6 +93,28 @@ json contact_json(const ContactResult& contact, const CaseSpec& spec) {
   c["direction"] = obstacle_normal ? "obstacle_normal" : "body_normal";
   c["obstacles"] = obstacles;
   return c;
+}
+
+/// The friction laws and, for Coulomb, the updates of the slip bounds; null without friction.
+json friction_json(const CaseSpec& spec, const SolverReport& report) {
+  json groups = json::object();
+  for (const auto& [name, bc] : spec.boundary)
+    if (bc.type == BoundaryCondition::Type::kContact && bc.frictional())
+      groups[name] = bc.friction_coefficient > 0
+                         ? json{{"law", "coulomb"}, {"coefficient", bc.friction_coefficient}}
+                         : json{{"law", "tresca"}, {"coefficient", nullptr}};
+  if (groups.empty()) return nullptr;
+  const std::vector<double>& c = report.update_changes;
+  // The mean factor by which successive updates shrank, from the second update on (the first
+  // sets the bounds from S_n = 0).
+  json contraction = nullptr;
+  if (c.size() >= 3 && c[1] > 0 && c.back() > 0)
+    contraction = std::pow(c.back() / c[1], 1.0 / static_cast<double>(c.size() - 2));
+  return {{"groups", groups},
+          {"updates", c.size()},
+          {"update_changes", c},
+          {"contraction", contraction},
+          {"last_change", c.empty() ? json(nullptr) : json(c.back())}};
 }
 
 json mesh_json(const MeshSpec& mesh) {
@@ -207,8 +237,10 @@ json result_json(const CaseSpec& spec, const SolverReport& report, const Contact
                      {"constitutive", functional.constitutive},
                      {"contact", functional.contact},
                      {"asymmetry", functional.asymmetry},
+                     {"friction", functional.friction},
                      {"estimator", std::sqrt(std::max(0.0, functional.total()))},
                      {"units", "stresses scaled by mu"}};
+  if (json f = friction_json(spec, report); !f.is_null()) r["friction"] = std::move(f);
   r["material"] = {
       {"mu", spec.material.mu},
       {"lambda", spec.material.incompressible() ? json("inf") : json(spec.material.lambda)}};

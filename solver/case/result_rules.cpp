@@ -152,6 +152,42 @@ ObjectRulePtr sweep_rule(ValueRule reasons) {
                                    "", "each point of the sweep")});
 }
 
+ObjectRulePtr friction_result_rule() {
+  ValueRule maybe = one_of_value({number_value(), null_value()}, "a number or null");
+  ValueRule law = object_value(object_rule(
+      "a friction law", "friction_law",
+      {output_field("law", choice_value({"coulomb", "tresca"}), "", "the law"),
+       output_field("coefficient", maybe, "1", "Coulomb's coefficient (null for Tresca)")}));
+  ValueRule groups = map_value(name_value(1000, "the group name"), law, 100000,
+                               "object mapping frictional contact groups to their laws", "groups");
+  groups.range.lo = 0;
+  return object_rule(
+      "the friction", "friction",
+      {output_field("groups", groups, "", "each frictional contact group's law"),
+       output_field("updates", count(), "1",
+                    "Coulomb: updates of the slip bounds 𝔣|S_n| during the solve (0 for Tresca)"),
+       output_field("update_changes", numbers("per update"), "1",
+                    "the largest change of a slip bound at each update, relative to the largest "
+                    "bound (the first is 1: the bounds of S_n = 0 replaced)"),
+       output_field("contraction", maybe, "1",
+                    "the mean factor by which successive changes shrank (null for fewer than "
+                    "3 updates)"),
+       output_field("last_change", maybe, "1",
+                    "the last update's change: within solver.friction_tolerance when the "
+                    "solve converged")});
+}
+
+ObjectRulePtr stick_zone_rule() {
+  ValueRule where = one_of_value({number_value(), null_value()}, "a number or null");
+  return object_rule("the stick zone", "stick_zone",
+                     {output_field("edges", count(), "1", "contact edges in state stick"),
+                      output_field("length", number(), "L", "their total length"),
+                      output_field("s_start", where, "L",
+                                   "arc length at the start of the first stick edge (null: none)"),
+                      output_field("s_end", where, "L",
+                                   "arc length at the end of the last stick edge (null: none)")});
+}
+
 ObjectRulePtr contact_rule() {
   ValueRule obstacles =
       map_value(name_value(1000, "the group name"), choice_value({"plane", "circle", "gap"}),
@@ -178,6 +214,18 @@ ObjectRulePtr contact_rule() {
                     "[F_x, F_y] = ∫ σn ds over the contact boundary: the force of the obstacle "
                     "on the body, per unit thickness (plane strain)"),
        output_field("zone", object_value(zone_rule()), "", "where the body touches the obstacle"),
+       output_field("shear", numbers("per contact edge"), "S",
+                    "tangential traction σ_nt on each edge, t = (−n_y, n_x) with the body's "
+                    "outward normal n (t runs counter-clockwise around the body); 0 on a "
+                    "frictionless edge"),
+       output_field("slip", numbers("per contact edge"), "L",
+                    "the tangential slip u·t minus its value in the reference state (the "
+                    "previous load step; zero without one), mean over the edge"),
+       output_field("state", list_value(choice_value({"open", "stick", "slip"}), "per contact edge"),
+                    "", "open: not in contact; stick: in contact with |σ_nt| below the slip "
+                    "bound; slip: at the bound (every edge in contact on frictionless contact)"),
+       output_field("stick_zone", object_value(stick_zone_rule()), "",
+                    "where the body sticks: the edges in state stick"),
        output_field("direction", choice_value({"body_normal", "obstacle_normal"}), "",
                     "the constraint direction (obstacle_normal when any contact group uses it)"),
        output_field("obstacles", obstacles, "", "the obstacle type of each contact group"),
@@ -199,6 +247,9 @@ ObjectRulePtr functional_rule() {
                     "C2 ‖Aσ − ε(u)‖², its volumetric part weighted by weights.c2_volumetric"),
        output_field("contact", number(), "scaled", "C3 ⟨u·n − g, σ_nn⟩"),
        output_field("asymmetry", number(), "scaled", "C4 ‖as σ‖²"),
+       output_field("friction", number(), "scaled",
+                    "C3 ∫ (σ_nt Δu_t + s |Δu_t|)/μ on frictional edges (docs/method.md §7; 0 "
+                    "without friction)"),
        output_field("estimator", number(), "scaled",
                     "J^½, the a posteriori error estimator of the least-squares method"),
        output_field("units", text(), "",
@@ -434,6 +485,9 @@ std::vector<FieldRule> solution_fields(const std::vector<std::string>& reasons) 
       output_field("timing", object_value(timing_rule()), "", "wall-clock times"),
       output_field("memory", object_value(memory_rule()), "",
                    "peak resident set of the process at the end of each stage"),
+      optional_field("friction", object_value(friction_result_rule()), nullptr,
+                     "the friction laws and the updates of Coulomb's slip bounds (only when a "
+                     "contact group has friction)"),
       optional_field("adaptivity", object_value(adaptivity_result_rule()), nullptr,
                      "the adaptive loop, step by step (only when the case has an adaptivity "
                      "section; the other fields describe its last step)"),

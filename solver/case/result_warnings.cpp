@@ -197,12 +197,7 @@ void add_warnings(json& result, const std::vector<ResultWarning>& warnings) {
   result["review_required"] = review;
 }
 
-bool is_frictionless(const BoundaryCondition& condition) {
-  // Friction hook: return false here for a condition with a friction coefficient > 0 or a
-  // friction bound once the case format has them.
-  (void)condition;
-  return true;
-}
+bool is_frictionless(const BoundaryCondition& condition) { return !condition.frictional(); }
 
 std::optional<ResultWarning> large_strain_warning(double strain, double largest,
                                                   const Point& where) {

@@ -98,6 +98,10 @@ ObjectRulePtr solver_rule() {
                      "limit); the solve then stops at the last iterate with stop_reason "
                      "time_limit, or, before it has one, the run fails saying so. The "
                      "service's --max-job-seconds still caps a job"),
+      optional_field("friction_tolerance", number_value(Range::open(0, 1)), s.friction_tolerance,
+                     "Coulomb friction: the solve converges only when the last update of the "
+                     "slip bounds 𝔣|σ_nn| changed none by more than this, relative to the "
+                     "largest (docs/method.md §8.4)"),
       optional_field("smoother", choice_value(smoother_names()),
                      smoother_info(s.multilevel.smoother).name, "the smoother"),
       optional_field("pre_smoothing", smoothing, s.multilevel.pre_smoothing,
@@ -133,6 +137,7 @@ SolverOptions read_solver_section(const json& j) {
   s.discretisation_fraction = j.value("discretisation_fraction", s.discretisation_fraction);
   s.max_iterations = j.value("max_iterations", s.max_iterations);
   s.time_limit_s = j.value("time_limit_s", s.time_limit_s);
+  s.friction_tolerance = j.value("friction_tolerance", s.friction_tolerance);
   if (j.contains("smoother")) s.multilevel.smoother = find_smoother(j["smoother"])->type;
   s.multilevel.pre_smoothing = j.value("pre_smoothing", s.multilevel.pre_smoothing);
   s.multilevel.post_smoothing = j.value("post_smoothing", s.multilevel.post_smoothing);

@@ -1,6 +1,7 @@
 #include "post/contact_output.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <map>
 
 namespace fosls {
@@ -41,7 +42,49 @@ std::vector<int> chain_order(const FoslsSpace& space) {
     if (!used[e]) walk(e, mesh.edge(e)[0]);
   return order;
 }
+
+/// Shear, slip and state of contact edge r.edge.
+void set_friction_state(const FoslsAssembler& assembler, const AssembledProblem& problem,
+                        const Vector& x_full, ContactEdgeResult& r) {
+  const FoslsSpace& space = assembler.space();
+  const Mesh& mesh = space.mesh();
+  const int e = r.edge;
+  const Point ne = mesh.edge_normal(e);
+  for (int v : mesh.edge(e)) {
+    const bool rotated = space.is_contact_vertex(v);
+    const Point n = rotated ? space.vertex_normal(v) : ne, t(-n.y(), n.x());
+    const double ut = rotated ? x_full[space.u_dof(v, 1)]
+                              : t.x() * x_full[space.u_dof(v, 0)] + t.y() * x_full[space.u_dof(v, 1)];
+    r.slip += 0.5 * (ut - reference_slip_origin(assembler.data(), v, t));
+  }
+  const int st = space.sigma_dof(e, 1);
+  if (space.role(st) != DofRole::kTangentialS) {
+    r.state = r.active ? ContactEdgeResult::State::kSlip : ContactEdgeResult::State::kOpen;
+    return;
+  }
+  r.shear = x_full[st] * problem.stress_scale / r.length;
+  const double bound = problem.qp.upper[space.free_index(st)];
+  // At the bound up to the solver's tolerance, relative to the largest bound.
+  double largest = 0.0;
+  for (const FrictionEdge& f : problem.friction.edges) largest = std::max(largest, problem.qp.upper[f.st]);
+  const bool at_bound = std::abs(x_full[st]) >= bound - 1e-6 * largest;
+  r.state = !r.active ? ContactEdgeResult::State::kOpen
+            : at_bound ? ContactEdgeResult::State::kSlip
+                       : ContactEdgeResult::State::kStick;
+}
 }  // namespace
+
+const char* state_name(ContactEdgeResult::State state) {
+  switch (state) {
+    case ContactEdgeResult::State::kOpen:
+      return "open";
+    case ContactEdgeResult::State::kStick:
+      return "stick";
+    case ContactEdgeResult::State::kSlip:
+      return "slip";
+  }
+  return "?";
+}
 
 ContactResult contact_output(const FoslsAssembler& assembler, const AssembledProblem& problem,
                              const Vector& x_full) {
@@ -63,9 +106,14 @@ ContactResult contact_output(const FoslsAssembler& assembler, const AssembledPro
     const Point ne = mesh.edge_normal(e);
     r.gap = 0.0 - assembler.edge_mean_penetration(x_full, e);  // +0.0, not −0.0, where closed
     r.active = r.pressure > 0.0;
-    // σn = σ_nn n on a frictionless contact edge.
+    // σn = σ_nn n + σ_nt t; σ_nt = 0 on a frictionless contact edge.
     out.force_x += sn * ne.x();
     out.force_y += sn * ne.y();
+    set_friction_state(assembler, problem, x_full, r);
+    if (r.shear != 0.0) {
+      out.force_x += r.shear * len * -ne.y();
+      out.force_y += r.shear * len * ne.x();
+    }
     out.edges.push_back(r);
   }
   struct Adjacent {
@@ -94,6 +142,18 @@ ContactResult contact_output(const FoslsAssembler& assembler, const AssembledPro
     out.vertices.push_back(r);
   }
   return out;
+}
+
+ContactZone ContactResult::stick_zone() const {
+  ContactZone z;
+  for (const auto& e : edges) {
+    if (e.state != ContactEdgeResult::State::kStick) continue;
+    if (z.edges == 0) z.s_start = e.s - 0.5 * e.length;
+    z.s_end = e.s + 0.5 * e.length;
+    ++z.edges;
+    z.length += e.length;
+  }
+  return z;
 }
 
 ContactZone ContactResult::zone() const {

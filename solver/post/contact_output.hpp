@@ -17,7 +17,16 @@ struct ContactEdgeResult {
   double pressure = 0;  ///< p = −σ_nn (physical units), constant on the edge
   double gap = 0;       ///< remaining gap g − u·n, mean over the edge
   bool active = false;  ///< in contact: pressure > 0
+  /// σ_nt (physical units) with t = (−n_y, n_x) for the body's outward normal n: the tangential
+  /// traction of the obstacle on the body (0 on a frictionless edge).
+  double shear = 0;
+  double slip = 0;  ///< u·t − its reference value, mean over the edge: the slip of the step
+  /// kOpen out of contact; in contact kStick below the slip bound, kSlip at it (always on a
+  /// frictionless edge).
+  enum class State { kOpen, kStick, kSlip } state = State::kOpen;
 };
+
+const char* state_name(ContactEdgeResult::State state);
 
 /// A vertex of the contact boundary.
 struct ContactVertexResult {
@@ -41,6 +50,8 @@ struct ContactResult {
   std::vector<ContactVertexResult> vertices;  ///< the vertices of the contact edges
   double force_x = 0, force_y = 0;            ///< ∫_Γ_C σn ds: the obstacle's force on the body
   ContactZone zone() const;
+  /// The edges in state kStick: `edges`, `length`, and the extent s_start..s_end.
+  ContactZone stick_zone() const;
 };
 
 ContactResult contact_output(const FoslsAssembler& assembler, const AssembledProblem& problem,

@@ -1,0 +1,20 @@
+#include "case/friction_solve.hpp"
+
+namespace fosls {
+
+SolverReport solve_frictional(Discretization& disc, const LevelHierarchy& hierarchy,
+                              const SolverOptions& options,
+                              const SolverObserver& observer, Vector& x) {
+  AssembledProblem& problem = disc.mutable_problem();
+  KinkedProblem kinked;
+  kinked.kinks = &problem.kinks;
+  if (problem.friction.coulomb()) {
+    kinked.update = [&problem](const Vector& at) {
+      return set_friction_bounds(problem.friction, at, problem.qp, problem.kinks);
+    };
+    kinked.update_tolerance = options.friction_tolerance;
+  }
+  return solve_kinked_qp(problem.qp, kinked, hierarchy, options, observer, x);
+}
+
+}  // namespace fosls
