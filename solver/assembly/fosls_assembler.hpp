@@ -37,7 +37,7 @@ struct FunctionalParts {
   double constitutive = 0.0;  ///< C2 ‖Aσ − ε(u)‖² (volumetric part × c2_volumetric)
   double contact = 0.0;       ///< C3 ⟨u·n − g, σ_nn⟩
   double asymmetry = 0.0;     ///< C4 ‖as σ‖²
-  /// C3 ∫ (σ_nt Δu_t + s |Δu_t|)/μ on frictional edges (docs/method.md §7; not in `element`).
+  /// C3 ∫ (σ_nt Δu_t + s |Δu_t|)/μ on frictional edges (docs/method.md §8; not in `element`).
   double friction = 0.0;
   std::vector<double> element;
   double total() const { return momentum + constitutive + contact + asymmetry + friction; }

@@ -1,5 +1,5 @@
 #pragma once
-// Friction on contact edges (docs/method.md §7). On a frictional edge e the functional has the
+// Friction on contact edges (docs/method.md §8). On a frictional edge e the functional has the
 // term C3 ∫_e (σ_nt Δu_t + s |Δu_t|)/μ, Δu_t the slip from the reference state: its bilinear
 // part C3 S_t (ΔU_t,p + ΔU_t,q)/2 is assembled with the normal term (fosls_assembler.cpp), its
 // kinks C3 s̄_e/2 |ΔU_t,v| at the end points (trapezoidal rule) and the bounds |S_t| ≤ s̄_e,

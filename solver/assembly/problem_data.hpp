@@ -46,7 +46,7 @@ struct RigidObstacle {
 /// Along which direction the constraint u·d ≤ g is imposed (docs/method.md §1).
 enum class ConstraintDirection { kBodyNormal, kObstacleNormal };
 
-/// Friction on a contact group (docs/method.md §7): Coulomb |σ_nt| ≤ 𝔣 |σ_nn| when coefficient
+/// Friction on a contact group (docs/method.md §8): Coulomb |σ_nt| ≤ 𝔣 |σ_nn| when coefficient
 /// > 0, else Tresca |σ_nt| ≤ s(x, y) when `bound` is set, else none.
 struct FrictionData {
   double coefficient = 0.0;

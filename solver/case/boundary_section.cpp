@@ -141,7 +141,7 @@ ObjectRulePtr condition_rule(const CaseReadOptions& options) {
        "contact with a rigid obstacle, frictionless unless `friction` is given",
        {required_field("obstacle", object_value(obstacle_rule(options)), "a plane, circle or gap"),
         optional_field("friction", object_value(friction_rule(options)), nullptr,
-                       "Coulomb or Tresca friction (docs/method.md §7); absent: frictionless"),
+                       "Coulomb or Tresca friction (docs/method.md §8); absent: frictionless"),
         optional_field("direction", choice_value({"body_normal", "obstacle_normal"}), "body_normal",
                        "the constrained displacement component: u·n with the body's normal, "
                        "or u·ν with the obstacle's normal")},

@@ -42,7 +42,7 @@ ObjectRulePtr case_rule(const CaseReadOptions& options) {
 
 namespace {
 
-/// What friction is not (yet) combined with (docs/method.md §7.5).
+/// What friction is not (yet) combined with (docs/method.md §8.5).
 void check_friction_support(const CaseSpec& spec, std::vector<CaseError>& errors) {
   const bool frictional = std::any_of(spec.boundary.begin(), spec.boundary.end(), [](const auto& b) {
     return b.second.type == BoundaryCondition::Type::kContact && b.second.frictional();

@@ -68,7 +68,7 @@ struct BoundaryCondition {
   std::array<bool, 2> prescribed = {true, true};
   Obstacle obstacle;  ///< contact
   ContactDirection direction = ContactDirection::kBodyNormal;
-  /// Contact: Coulomb's coefficient 𝔣 (0: none), or Tresca's slip bound s (docs/method.md §7).
+  /// Contact: Coulomb's coefficient 𝔣 (0: none), or Tresca's slip bound s (docs/method.md §8).
   double friction_coefficient = 0.0;
   std::optional<Scalar> friction_bound;
   bool frictional() const { return friction_coefficient > 0.0 || friction_bound.has_value(); }

@@ -1,5 +1,5 @@
 #pragma once
-// A frictional solve of a discretisation (docs/method.md §7): the kinks of the slip and, for
+// A frictional solve of a discretisation (docs/method.md §8): the kinks of the slip and, for
 // Coulomb friction, the slip bounds 𝔣 |S_n| updated from the iterate as it settles.
 
 #include "assembly/discretization.hpp"

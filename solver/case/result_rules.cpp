@@ -248,7 +248,7 @@ ObjectRulePtr functional_rule() {
        output_field("contact", number(), "scaled", "C3 ⟨u·n − g, σ_nn⟩"),
        output_field("asymmetry", number(), "scaled", "C4 ‖as σ‖²"),
        output_field("friction", number(), "scaled",
-                    "C3 ∫ (σ_nt Δu_t + s |Δu_t|)/μ on frictional edges (docs/method.md §7; 0 "
+                    "C3 ∫ (σ_nt Δu_t + s |Δu_t|)/μ on frictional edges (docs/method.md §8; 0 "
                     "without friction)"),
        output_field("estimator", number(), "scaled",
                     "J^½, the a posteriori error estimator of the least-squares method"),

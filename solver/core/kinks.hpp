@@ -1,5 +1,5 @@
 #pragma once
-// The non-smooth part of a frictional problem (docs/method.md §7): J(x) + Σ_k w_k |x_{d_k} − o_k|,
+// The non-smooth part of a frictional problem (docs/method.md §8): J(x) + Σ_k w_k |x_{d_k} − o_k|,
 // one kink per tangential contact displacement, separable like the bounds.
 
 #include <cmath>

@@ -23,7 +23,7 @@ enum class DofRole : unsigned char {
   kFixed,    ///< essential: Dirichlet u, Neumann σ flux, tangential σ on contact edges
   kNormalU,  ///< U_n at a contact vertex: U_n ≤ g
   kNormalS,  ///< S_n on a contact edge: S_n ≤ 0
-  kTangentialS,  ///< S_t on a frictional contact edge: |S_t| ≤ s̄ (docs/method.md §7)
+  kTangentialS,  ///< S_t on a frictional contact edge: |S_t| ≤ s̄ (docs/method.md §8)
 };
 
 /// Full DOF vector layout: u_c at vertex v is 2v + c; σ row i on edge e is 2·nv + 2e + i.

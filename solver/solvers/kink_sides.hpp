@@ -1,5 +1,5 @@
 #pragma once
-// The kinks of a frictional problem (core/kinks.hpp) for the box-QP methods (docs/method.md §7):
+// The kinks of a frictional problem (core/kinks.hpp) for the box-QP methods (docs/method.md §8):
 // before each iteration every kinked DOF is held on one side of its kink — above it (the kink
 // is the linear term +w, the kink its lower bound), below it, or at it (both bounds there) —
 // chosen from the iterate and the subgradient. On its side J + kinks is a box QP up to a

@@ -29,7 +29,7 @@ namespace {
 using Clock = std::chrono::steady_clock;
 
 /// Coulomb: the slip bounds are updated each time the KKT residual has fallen by this factor
-/// since the last update (docs/method.md §7.4).
+/// since the last update (docs/method.md §8.4).
 constexpr double kUpdateReduction = 0.3;
 
 double seconds_since(Clock::time_point t0) {

@@ -60,7 +60,7 @@ struct SolverOptions {
   /// "Measurements behind choices in the code").
   bool check_definiteness = true;
   /// Coulomb friction: the largest relative change of the slip bounds at the last update for a
-  /// solve to count as converged (docs/method.md §7.4).
+  /// solve to count as converged (docs/method.md §8.4).
   double friction_tolerance = 1e-6;
 };
 
@@ -101,7 +101,7 @@ struct SolverReport {
 };
 
 /// A change of the problem with its own solution (Coulomb friction: the slip bounds from the
-/// normal stress, docs/method.md §7): sets the QP's bounds and kink weights for x and returns
+/// normal stress, docs/method.md §8): sets the QP's bounds and kink weights for x and returns
 /// the largest relative change.
 using ProblemUpdate = std::function<double(const Vector& x)>;
 
@@ -119,7 +119,7 @@ struct KinkedProblem {
 SolverReport solve_box_qp(const BoxQp& qp, const LevelHierarchy& hierarchy,
                           const SolverOptions& options, const SolverObserver& observer, Vector& x);
 
-/// solve_box_qp for J + Σ w_k |x_k − o_k| (docs/method.md §7): methods mmg, pdas and pgs. The
+/// solve_box_qp for J + Σ w_k |x_k − o_k| (docs/method.md §8): methods mmg, pdas and pgs. The
 /// QP's b and bounds change at the kinked DOFs during the solve (kink_sides.hpp) and are
 /// restored; the bounds an update sets stay. With an update, it is called whenever the KKT
 /// residual has fallen by the factor kUpdateReduction since the last one and whenever a
