@@ -1,6 +1,6 @@
 #pragma once
 // Coarse obstacles for DOFs with bounds of any kind (the frictional contact DOFs, docs/method.md
-// §7), from the rows of the truncated prolongation: a fine DOF i with room [l_i, u_i] (l ≤ 0 ≤
+// §8), from the rows of the truncated prolongation: a fine DOF i with room [l_i, u_i] (l ≤ 0 ≤
 // u) for its correction, reached by the coarse DOFs J of its row with weights P_iJ, stays
 // within it when each P_iJ c_J lies in |P_iJ| [l_i, u_i] / Σ_J |P_iJ|. Each coarse DOF so
 // bounded carries its bounds on to the next coarser level in the same way. Coarser than the
