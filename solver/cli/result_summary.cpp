@@ -53,6 +53,27 @@ void print_contact(std::ostream& out, const json& r) {
   }
 }
 
+/// Where the body sticks and slides, and how the Coulomb bounds settled.
+void print_friction(std::ostream& out, const json& r) {
+  const auto& c = r["contact"];
+  const auto& stick = c["stick_zone"];
+  const std::string L = unit(r, "length");
+  int slip = 0;
+  for (const auto& state : c["state"]) slip += state == "slip";
+  out << "  friction            ";
+  if (stick["edges"] == 0)
+    out << "no edge sticks";
+  else
+    out << stick["edges"].get<int>() << " edges stick, length " << g(stick["length"]) << L
+        << " (s = " << g(stick["s_start"]) << " to " << g(stick["s_end"]) << ")";
+  out << ", " << slip << " slip";
+  const auto& f = r["friction"];
+  if (f["updates"].get<int>() > 0)
+    out << "; Coulomb bounds updated " << f["updates"].get<int>() << " times, last change "
+        << g(f["last_change"], 2);
+  out << "\n";
+}
+
 /// Why an adaptive run stopped, and what its target means.
 void print_adaptivity(std::ostream& out, const json& a) {
   const auto& steps = a["steps"];
@@ -107,6 +128,7 @@ void print_result_summary(std::ostream& out, const json& r) {
   print_contact(out, r);
   out << "  error estimator     J^1/2 = " << g(r["functional"]["estimator"], 3)
       << " (scaled units)\n";
+  if (r.contains("friction")) print_friction(out, r);
   if (r.contains("adaptivity")) print_adaptivity(out, r["adaptivity"]);
   if (r.contains("sweep")) print_sweep(out, r["sweep"]);
   if (converged && r.value("review_required", false))

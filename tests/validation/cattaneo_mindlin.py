@@ -1,0 +1,80 @@
+#!/usr/bin/env python3
+"""Cattaneo–Mindlin check of Coulomb friction (docs/validation.md, "Cattaneo–Mindlin").
+
+The incompressible half disk of hertz_incompressible pressed onto the rigid plane and moved
+sideways: with ν = 0.5 against a rigid body Dundurs' β = 0, the normal problem does not feel
+the tangential one, so pressing and shifting in one step gives the same slip as pressing first
+and shifting after. Per refinement: the stick-zone half-width c/a against √(1 − Q/(𝔣P)) and
+the relative L2 error of the shear traction against 𝔣p₀(√(1 − x²/a²) − (c/a)√(1 − x²/c²)) over
+the contact zone (the second term only inside the stick zone), with the computed P, Q, a.
+
+usage: cattaneo_mindlin.py FOSLS_CONTACT [refinements ...]
+"""
+import json
+import math
+import subprocess
+import sys
+import tempfile
+
+F = 0.3
+
+
+def case(binary, refinements, shift):
+    c = json.loads(subprocess.run([binary, "example", "hertz_incompressible"],
+                                  capture_output=True, text=True, check=True).stdout)
+    c["name"] = "cattaneo_mindlin"
+    c["mesh"]["refinements"] = refinements
+    c["boundary"]["top"]["displacement"] = [shift, -0.01]
+    c["boundary"]["contact"]["friction"] = {"coefficient": F}
+    return c
+
+
+def solve(binary, c):
+    with tempfile.TemporaryDirectory() as d:
+        path, out = d + "/case.json", d + "/result.json"
+        json.dump(c, open(path, "w"))
+        subprocess.run([binary, "solve", path, "--out", out], capture_output=True)
+        return json.load(open(out))
+
+
+def compare(r):
+    c = r["contact"]
+    P = sum(p * l for p, l in zip(c["pressure"], c["length"]))
+    Q = abs(sum(s * l for s, l in zip(c["shear"], c["length"])))
+    a = c["zone"]["width"] / 2
+    x0 = sum(x * p * l for x, p, l in zip(c["x"], c["pressure"], c["length"])) / P
+    p0 = 2 * P / (math.pi * a)
+    ratio = math.sqrt(max(0.0, 1 - Q / (F * P)))
+    stick = c["stick_zone"]["length"] / 2 / a
+    num = den = 0.0
+    for x, s, l, active in zip(c["x"], c["shear"], c["length"], c["active"]):
+        xi = (x - x0) / a
+        if abs(xi) >= 1:
+            continue
+        ref = F * p0 * math.sqrt(1 - xi * xi)
+        if abs(xi) < ratio:
+            ref -= F * p0 * ratio * math.sqrt(1 - (xi / ratio) ** 2)
+        num += (abs(s) - ref) ** 2 * l
+        den += ref * ref * l
+    return {"Q/fP": Q / (F * P), "c/a": stick, "theory c/a": ratio,
+            "shear L2": math.sqrt(num / den) if den else float("nan"),
+            "edges in zone": c["zone"]["edges"], "iterations": r["iterations"],
+            "updates": r.get("friction", {}).get("updates")}
+
+
+def main():
+    binary = sys.argv[1]
+    levels = [int(v) for v in sys.argv[2:]] or [3, 4, 5]
+    print("| refinements | shift | edges in zone | Q/(𝔣P) | c/a computed | √(1 − Q/𝔣P) | "
+          "shear rel. L2 | mmg iterations | updates |")
+    print("|---|---|---|---|---|---|---|---|---|")
+    for r in levels:
+        for shift in (0.001, 0.002):
+            m = compare(solve(binary, case(binary, r, shift)))
+            print(f"| {r} | {shift} | {m['edges in zone']} | {m['Q/fP']:.3f} | {m['c/a']:.3f} | "
+                  f"{m['theory c/a']:.3f} | {m['shear L2']:.3f} | {m['iterations']} | "
+                  f"{m['updates']} |", flush=True)
+
+
+if __name__ == "__main__":
+    main()
