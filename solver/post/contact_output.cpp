@@ -117,14 +117,16 @@ ContactResult contact_output(const FoslsAssembler& assembler, const AssembledPro
     out.edges.push_back(r);
   }
   struct Adjacent {
-    double pressure = 0;
-    int edges = 0;
+    double pressure = 0, shear = 0;
+    int edges = 0, state = 0;
     Point normal = Point::Zero();
   };
   std::map<int, Adjacent> adjacent;  // vertex of a contact edge → its contact edges
   for (const auto& r : out.edges)
     for (int v : mesh.edge(r.edge)) {
       adjacent[v].pressure += r.pressure;
+      adjacent[v].shear += r.shear;
+      adjacent[v].state = std::max(adjacent[v].state, static_cast<int>(r.state));
       adjacent[v].edges += 1;
       adjacent[v].normal += mesh.edge_normal(r.edge);
     }
@@ -132,6 +134,8 @@ ContactResult contact_output(const FoslsAssembler& assembler, const AssembledPro
     ContactVertexResult r;
     r.vertex = v;
     r.pressure = a.pressure / a.edges;
+    r.shear = a.shear / a.edges;
+    r.state = a.state;
     // U_n in the rotated coordinates of a contact vertex; at a vertex held by a Dirichlet
     // condition the displacement along the mean normal of its contact edges.
     const Point n = a.normal.normalized();

@@ -33,6 +33,8 @@ struct ContactVertexResult {
   int vertex = -1;
   double gap = 0;       ///< remaining gap g − u·n along the constraint direction
   double pressure = 0;  ///< mean pressure of the adjacent contact edges
+  double shear = 0;     ///< mean σ_nt of the adjacent contact edges
+  int state = 0;        ///< the adjacent edges' largest state: 0 open, 1 stick, 2 slip
 };
 
 /// Where the body touches the obstacle: the edges with pressure > 0.

@@ -29,6 +29,19 @@ const std::vector<VtuArray>& array_table() {
        "S",
        "contact pressure p = −σ_nn ≥ 0 at a contact vertex (the mean of its contact edges), 0 "
        "elsewhere"},
+      {"contact_shear",
+       true,
+       {},
+       "S",
+       "tangential traction σ_nt at a contact vertex (the mean of its contact edges; t = (−n_y, "
+       "n_x)), 0 elsewhere and on frictionless contact"},
+      {"contact_state",
+       true,
+       {},
+       "1",
+       "at a contact vertex the largest state of its contact edges: 0 open, 1 stick, 2 slip "
+       "(frictionless contact in contact slips); 0 elsewhere",
+       "UInt8"},
       {"gap",
        true,
        {},
@@ -199,7 +212,7 @@ std::string write_vtu(const FoslsAssembler& assembler, const AssembledProblem& p
   const int nv = mesh.num_vertices(), nt = mesh.num_triangles();
 
   std::vector<double> points(3 * nv, 0.0), u(3 * nv, 0.0), on_contact(nv, 0.0), pressure(nv, 0.0),
-      gap(nv, 0.0);
+      shear(nv, 0.0), state(nv, 0.0), gap(nv, 0.0);
   for (int v = 0; v < nv; ++v) {
     points[3 * v] = mesh.vertex(v).x(), points[3 * v + 1] = mesh.vertex(v).y();
     u[3 * v] = field.cartesian(space.u_dof(v, 0));
@@ -208,6 +221,8 @@ std::string write_vtu(const FoslsAssembler& assembler, const AssembledProblem& p
   for (const auto& r : contact.vertices) {
     on_contact[r.vertex] = 1.0;
     pressure[r.vertex] = r.pressure;
+    shear[r.vertex] = r.shear;
+    state[r.vertex] = r.state;
     gap[r.vertex] = r.gap;
   }
   std::vector<std::int32_t> connectivity(3 * nt), offsets(nt);
@@ -235,6 +250,8 @@ std::string write_vtu(const FoslsAssembler& assembler, const AssembledProblem& p
   write_array(o, "u", u, encoding);
   write_array(o, "contact_boundary", on_contact, encoding);
   write_array(o, "contact_pressure", pressure, encoding);
+  write_array(o, "contact_shear", shear, encoding);
+  write_array(o, "contact_state", state, encoding);
   write_array(o, "gap", gap, encoding);
   write_array(o, "sigma_nodal", stress.sigma_nodal, encoding);
   write_array(o, "von_mises_nodal", stress.von_mises_nodal, encoding);
