@@ -59,8 +59,8 @@ FrictionLayout friction_layout(const FoslsSpace& space, const ProblemData& data,
     f.coefficient = friction.coefficient;
     const auto& pq = mesh.edge(e);
     if (!friction.coulomb())
-      f.tresca = tresca_bound(friction.bound, mesh.vertex(pq[0]), mesh.vertex(pq[1]),
-                              data.material.mu);
+      f.tresca =
+          tresca_bound(friction.bound, mesh.vertex(pq[0]), mesh.vertex(pq[1]), data.material.mu);
     const Point ne = mesh.edge_normal(e);
     for (int k = 0; k < 2; ++k) {
       const int v = pq[k];
@@ -79,9 +79,9 @@ FrictionLayout friction_layout(const FoslsSpace& space, const ProblemData& data,
         f.kink[k] = it->second;
       } else {
         // A fixed tangential displacement: a roller's U_t, or both Dirichlet components.
-        const double ut_fixed =
-            rotated ? xd[space.u_dof(v, 1)]
-                    : t.x() * xd[space.u_dof(v, 0)] + t.y() * xd[space.u_dof(v, 1)];
+        const double ut_fixed = rotated
+                                    ? xd[space.u_dof(v, 1)]
+                                    : t.x() * xd[space.u_dof(v, 0)] + t.y() * xd[space.u_dof(v, 1)];
         f.fixed_slip[k] = ut_fixed - origin;
       }
     }

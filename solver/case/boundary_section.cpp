@@ -87,8 +87,9 @@ ObjectRulePtr friction_rule(const CaseReadOptions& options) {
   r->exclusive = {{{{"coefficient"}, {"bound"}},
                    "give the Coulomb coefficient or the Tresca bound",
                    "give either the Coulomb coefficient or the Tresca bound, not {given}"}};
-  r->notes = "a bound given as an expression must be >= 0 on the contact boundary (checked "
-             "when the case runs)";
+  r->notes =
+      "a bound given as an expression must be >= 0 on the contact boundary (checked "
+      "when the case runs)";
   return r;
 }
 

@@ -103,13 +103,13 @@ ProblemData problem_data(const CaseSpec& spec, const Mesh& mesh) {
         g.contact.friction.coefficient = bc.friction_coefficient;
         if (bc.friction_bound)
           g.contact.friction.bound = [s = compile_scalar(*bc.friction_bound),
-                                      pointer = "/boundary/" + name + "/friction/bound"](
-                                         double x, double y) {
+                                      pointer = "/boundary/" + name + "/friction/bound"](double x,
+                                                                                         double y) {
             const double value = s(x, y);
             if (!(value >= 0.0))
-              throw CaseException(pointer, "the slip bound is " + std::to_string(value) +
-                                               " at (" + std::to_string(x) + ", " +
-                                               std::to_string(y) + "); it must be >= 0");
+              throw CaseException(pointer, "the slip bound is " + std::to_string(value) + " at (" +
+                                               std::to_string(x) + ", " + std::to_string(y) +
+                                               "); it must be >= 0");
             return value;
           };
         break;

@@ -3,8 +3,8 @@
 namespace fosls {
 
 SolverReport solve_frictional(Discretization& disc, const LevelHierarchy& hierarchy,
-                              const SolverOptions& options,
-                              const SolverObserver& observer, Vector& x) {
+                              const SolverOptions& options, const SolverObserver& observer,
+                              Vector& x) {
   AssembledProblem& problem = disc.mutable_problem();
   KinkedProblem kinked;
   kinked.kinks = &problem.kinks;

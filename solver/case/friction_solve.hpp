@@ -11,7 +11,7 @@ namespace fosls {
 /// The bounds of the last update stay in the problem (the results' stick/slip states read
 /// them).
 SolverReport solve_frictional(Discretization& disc, const LevelHierarchy& hierarchy,
-                              const SolverOptions& options,
-                              const SolverObserver& observer, Vector& x);
+                              const SolverOptions& options, const SolverObserver& observer,
+                              Vector& x);
 
 }  // namespace fosls

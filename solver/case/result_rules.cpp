@@ -221,8 +221,9 @@ ObjectRulePtr contact_rule() {
        output_field("slip", numbers("per contact edge"), "L",
                     "the tangential slip u·t minus its value in the reference state (the "
                     "previous load step; zero without one), mean over the edge"),
-       output_field("state", list_value(choice_value({"open", "stick", "slip"}), "per contact edge"),
-                    "", "open: not in contact; stick: in contact with |σ_nt| below the slip "
+       output_field("state",
+                    list_value(choice_value({"open", "stick", "slip"}), "per contact edge"), "",
+                    "open: not in contact; stick: in contact with |σ_nt| below the slip "
                     "bound; slip: at the bound (every edge in contact on frictionless contact)"),
        output_field("stick_zone", object_value(stick_zone_rule()), "",
                     "where the body sticks: the edges in state stick"),

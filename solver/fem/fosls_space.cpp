@@ -72,8 +72,9 @@ FoslsSpace::VertexMarks FoslsSpace::mark_boundary_edges(const std::vector<GroupR
       case GroupRole::kContact:
         contact_edge_[e] = 1;
         roles_[sigma_dof(e, 0)] = DofRole::kNormalS;
-        roles_[sigma_dof(e, 1)] = !frictional.empty() && frictional[g] ? DofRole::kTangentialS
-                                                                        : DofRole::kFixed;  // σ_nt = 0
+        roles_[sigma_dof(e, 1)] = !frictional.empty() && frictional[g]
+                                      ? DofRole::kTangentialS
+                                      : DofRole::kFixed;  // σ_nt = 0
         for (int v : pq) {
           contact_vertex_[v] = 1;
           m.averaged[v] += mesh_->edge_normal(e);

@@ -19,10 +19,10 @@ int prescribed_components(GroupRole role);
 
 /// How a DOF enters the quadratic program.
 enum class DofRole : unsigned char {
-  kFree,     ///< unconstrained
-  kFixed,    ///< essential: Dirichlet u, Neumann σ flux, tangential σ on contact edges
-  kNormalU,  ///< U_n at a contact vertex: U_n ≤ g
-  kNormalS,  ///< S_n on a contact edge: S_n ≤ 0
+  kFree,         ///< unconstrained
+  kFixed,        ///< essential: Dirichlet u, Neumann σ flux, tangential σ on contact edges
+  kNormalU,      ///< U_n at a contact vertex: U_n ≤ g
+  kNormalS,      ///< S_n on a contact edge: S_n ≤ 0
   kTangentialS,  ///< S_t on a frictional contact edge: |S_t| ≤ s̄ (docs/method.md §8)
 };
 

@@ -53,8 +53,9 @@ void set_friction_state(const FoslsAssembler& assembler, const AssembledProblem&
   for (int v : mesh.edge(e)) {
     const bool rotated = space.is_contact_vertex(v);
     const Point n = rotated ? space.vertex_normal(v) : ne, t(-n.y(), n.x());
-    const double ut = rotated ? x_full[space.u_dof(v, 1)]
-                              : t.x() * x_full[space.u_dof(v, 0)] + t.y() * x_full[space.u_dof(v, 1)];
+    const double ut = rotated
+                          ? x_full[space.u_dof(v, 1)]
+                          : t.x() * x_full[space.u_dof(v, 0)] + t.y() * x_full[space.u_dof(v, 1)];
     r.slip += 0.5 * (ut - reference_slip_origin(assembler.data(), v, t));
   }
   const int st = space.sigma_dof(e, 1);
@@ -66,9 +67,10 @@ void set_friction_state(const FoslsAssembler& assembler, const AssembledProblem&
   const double bound = problem.qp.upper[space.free_index(st)];
   // At the bound up to the solver's tolerance, relative to the largest bound.
   double largest = 0.0;
-  for (const FrictionEdge& f : problem.friction.edges) largest = std::max(largest, problem.qp.upper[f.st]);
+  for (const FrictionEdge& f : problem.friction.edges)
+    largest = std::max(largest, problem.qp.upper[f.st]);
   const bool at_bound = std::abs(x_full[st]) >= bound - 1e-6 * largest;
-  r.state = !r.active ? ContactEdgeResult::State::kOpen
+  r.state = !r.active  ? ContactEdgeResult::State::kOpen
             : at_bound ? ContactEdgeResult::State::kSlip
                        : ContactEdgeResult::State::kStick;
 }

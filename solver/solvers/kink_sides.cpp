@@ -6,7 +6,11 @@
 namespace fosls {
 
 KinkSides::KinkSides(BoxQp& qp, const Kinks& kinks, bool newton)
-    : qp_(qp), kinks_(kinks), b_(kinks.size()), lower_(kinks.size()), upper_(kinks.size()),
+    : qp_(qp),
+      kinks_(kinks),
+      b_(kinks.size()),
+      lower_(kinks.size()),
+      upper_(kinks.size()),
       side_(kinks.size(), 0) {
   if (newton) diagonal_.resize(kinks.size());
   for (int k = 0; k < kinks.size(); ++k) {

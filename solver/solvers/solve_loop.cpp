@@ -299,8 +299,7 @@ SolverReport solve_with_new_chain(const BoxQp& qp, const LevelHierarchy& hierarc
   }
   const double chain_s = seconds_since(t0);
   const double chain_mib = multilevel ? peak_rss_mib() : 0.0;
-  SolverReport report =
-      solve_from_start(qp, hierarchy, options, observer, x, chain, sides, kinked);
+  SolverReport report = solve_from_start(qp, hierarchy, options, observer, x, chain, sides, kinked);
   report.setup_s += chain_s;
   report.chain_mib = chain_mib;
   return report;

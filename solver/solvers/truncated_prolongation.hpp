@@ -39,7 +39,8 @@ class TruncatedProlongation {
     const SparseMatrix& m = p_ ? *p_ : formed_;
     for (int col = 0; col < m.outerSize(); ++col)
       for (SparseMatrix::InnerIterator it(m, col); it; ++it)
-        if (!p_ || kept(static_cast<int>(it.row()))) visit(static_cast<int>(it.row()), col, it.value());
+        if (!p_ || kept(static_cast<int>(it.row())))
+          visit(static_cast<int>(it.row()), col, it.value());
     if (p_)
       for (int col = 0; col < moves_.outerSize(); ++col)
         for (SparseMatrix::InnerIterator it(moves_, col); it; ++it)

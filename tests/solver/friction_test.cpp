@@ -49,8 +49,9 @@ json block(double coefficient, double shift) {
 
 json solve(const json& j) {
   const CaseReadResult read = read_case(j);
-  EXPECT_TRUE(read.spec) << (read.errors.empty() ? "" : read.errors[0].pointer + ": " +
-                                                            read.errors[0].detail);
+  EXPECT_TRUE(read.spec) << (read.errors.empty()
+                                 ? ""
+                                 : read.errors[0].pointer + ": " + read.errors[0].detail);
   return read.spec ? run_case(*read.spec).result : json();
 }
 
@@ -82,8 +83,7 @@ TEST(Friction, MmgIsMonotoneAndMatchesPdasWithTresca) {
   // J + the kinks never increases (the loop also asserts feasibility in checked builds).
   const json& h = mmg["history"];
   for (std::size_t k = 1; k < h.size(); ++k)
-    EXPECT_LE(h[k]["energy"].get<double>(),
-              h[k - 1]["energy"].get<double>() * (1 + 1e-12) + 1e-15)
+    EXPECT_LE(h[k]["energy"].get<double>(), h[k - 1]["energy"].get<double>() * (1 + 1e-12) + 1e-15)
         << "iteration " << k;
   // The tangential traction within the bound, and some edges stick, some slip.
   int stick = 0, slip = 0;
