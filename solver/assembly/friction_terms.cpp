@@ -37,7 +37,9 @@ bool FrictionLayout::coulomb() const {
 }
 
 double reference_slip_origin(const ProblemData& data, int v, const Point& tangent) {
-  if (data.reference_displacement.empty()) return 0.0;
+  // Only the finest level has a reference; the coarser ones the c3 limit assembles need only
+  // the matrix, which the reference does not change.
+  if (v >= static_cast<int>(data.reference_displacement.size())) return 0.0;
   return tangent.dot(data.reference_displacement[v]);
 }
 

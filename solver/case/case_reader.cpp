@@ -33,6 +33,10 @@ ObjectRulePtr case_rule(const CaseReadOptions& options) {
       optional_field("adaptivity", object_value(adaptivity_rule(options)), nullptr,
                      "adaptive refinement driven by the functional (absent: uniform refinement "
                      "only)"),
+      optional_field("load_steps", load_steps_rule(options), nullptr,
+                     "quasi-static steps after the case as given: each an object of JSON pointers "
+                     "and their new values, applied to the case as the previous step left it and "
+                     "solved from the previous step's state; friction acts on each step's slip"),
       optional_field("sweep", object_value(sweep_rule(options)), nullptr,
                      "a number of the case that takes several values, solved in order with "
                      "continuation"),
@@ -94,6 +98,10 @@ CaseReadResult read_case(const nlohmann::json& j, const CaseReadOptions& options
     spec.solver.stopping = StoppingRule::kDiscretisation;
   check_friction_support(spec, result.errors);
   if (!result.errors.empty()) return result;
+  if (j.contains("load_steps")) {
+    read_load_steps_section(j, options, spec, result.errors);
+    if (!result.errors.empty()) return result;
+  }
   if (j.contains("sweep")) {
     read_sweep_section(j, options, spec, result.errors);
     if (!result.errors.empty()) return result;

@@ -1,5 +1,6 @@
 #include "case/case_runner.hpp"
 
+#include "case/load_step_runner.hpp"
 #include "case/sweep_runner.hpp"
 
 #include <chrono>
@@ -175,6 +176,15 @@ std::vector<CaseError> validate_case(const nlohmann::json& j, const CaseReadOpti
 
 namespace {
 
+/// u at every vertex from a full (rotated) DOF vector.
+std::vector<Point> vertex_displacements(const FoslsSpace& space, const Vector& x_full) {
+  const Vector cartesian = space.rotation() * x_full;
+  std::vector<Point> u(space.mesh().num_vertices());
+  for (int v = 0; v < static_cast<int>(u.size()); ++v)
+    u[v] = Point(cartesian[space.u_dof(v, 0)], cartesian[space.u_dof(v, 1)]);
+  return u;
+}
+
 RunOutput run_point(const CaseSpec& spec, const RunControl& control, const CaseLimits& limits) {
   const auto t0 = Clock::now();
   Mesh coarse;
@@ -190,6 +200,7 @@ RunOutput run_point(const CaseSpec& spec, const RunControl& control, const CaseL
   CaseSpec used = spec;  // the case with the weights as used
   used.weights.length_scale = length_scale(coarse);
   ProblemData data = problem_data(used, coarse);
+  if (control.reference) data.reference_displacement = *control.reference;
   const Mesh coarse_mesh = coarse;  // small; for the message of indefinite weights
   // The limit counts the whole run: a user sets it for the answer's latency, not the loop's.
   const Deadline deadline = run_deadline(t0, spec.solver.time_limit_s);
@@ -251,6 +262,7 @@ RunOutput run_point(const CaseSpec& spec, const RunControl& control, const CaseL
   annotate_result(out.result, spec, disc.meshes().finest(), solution.contact,
                   largest_strain(disc.assembler(), problem, solution.full));
   out.solution = std::move(solution.x);
+  out.displacement = vertex_displacements(disc.finest_space(), solution.full);
   return out;
 }
 
@@ -258,6 +270,10 @@ RunOutput run_point(const CaseSpec& spec, const RunControl& control, const CaseL
 
 RunOutput run_case(const CaseSpec& spec, const RunControl& control, const CaseLimits& limits) {
   try {
+    if (!spec.load_step_points.empty())
+      return run_load_steps(spec, control, [&limits](const CaseSpec& step, const RunControl& c) {
+        return run_point(step, c, limits);
+      });
     if (spec.sweep_points.empty()) return run_point(spec, control, limits);
     return run_sweep(spec, control, [&limits](const CaseSpec& point, const RunControl& c) {
       return run_point(point, c, limits);

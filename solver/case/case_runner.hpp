@@ -35,13 +35,17 @@ struct RunControl {
   /// Continuation: the solution of a case on the same mesh to start from (instead of the
   /// nested iteration); ignored when its size does not match.
   const Vector* start = nullptr;
+  /// Load steps: the displacement of each vertex of the finest mesh in the state the step
+  /// starts from; friction measures slip from it (ignored when its size does not match).
+  const std::vector<Point>* reference = nullptr;
 };
 
 struct RunOutput {
   nlohmann::json result;  ///< docs/result-format.md
   std::string vtu;        ///< VTK XML unstructured grid (empty unless want_vtu)
   bool cancelled = false;
-  Vector solution;  ///< the final iterate (unknowns of the QP), for continuation
+  Vector solution;                  ///< the final iterate (unknowns of the QP), for continuation
+  std::vector<Point> displacement;  ///< u at each vertex of the finest mesh, for load steps
 };
 
 /// Everything that validation can say about a case JSON, including what needs the coarse mesh

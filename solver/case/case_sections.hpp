@@ -47,6 +47,13 @@ ObjectRulePtr sweep_rule(const CaseReadOptions& options);
 void read_sweep_section(const nlohmann::json& case_json, const CaseReadOptions& options,
                         CaseSpec& spec, std::vector<CaseError>& errors);
 
+ValueRule load_steps_rule(const CaseReadOptions& options);
+/// Reads the case after each load step into spec.load_step_points (with the step's changes in
+/// spec.load_step_changes); a bad pointer or a value that makes the case invalid is an error at
+/// /load_steps/<k>/<pointer> or /load_steps/<k> naming the field and the reason.
+void read_load_steps_section(const nlohmann::json& case_json, const CaseReadOptions& options,
+                             CaseSpec& spec, std::vector<CaseError>& errors);
+
 /// [f_x, f_y], [u_x, u_y], ...: two numbers or expressions of x and y.
 ValueRule scalar_pair_value(const CaseReadOptions& options);
 Scalar read_scalar(const nlohmann::json& j);

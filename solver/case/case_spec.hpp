@@ -6,6 +6,7 @@
 #include <array>
 #include <limits>
 #include <map>
+#include <nlohmann/json.hpp>
 #include <optional>
 #include <string>
 #include <vector>
@@ -123,6 +124,11 @@ struct CaseSpec {
   UnitsSpec units;  ///< the case's `units`; none declared by default (units.hpp)
   /// With a sweep: the case at each value, in order (without a sweep of their own).
   std::vector<CaseSpec> sweep_points;
+  /// With load steps: the case after each step, in order, and each step's changes (pointer →
+  /// value); the case itself is step 0's state before the first step (docs/case-format.md,
+  /// "Load steps").
+  std::vector<CaseSpec> load_step_points;
+  std::vector<nlohmann::json> load_step_changes;
 };
 
 }  // namespace fosls

@@ -177,6 +177,34 @@ ObjectRulePtr friction_result_rule() {
                     "solve converged")});
 }
 
+/// A load step's result: the result's own fields but the history, with its number and changes.
+ObjectRulePtr load_step_rule(const std::vector<FieldRule>& result_fields) {
+  std::vector<FieldRule> fields = {
+      output_field("step", count(), "1", "the step's number, 0 for the case as given"),
+      output_field(
+          "changes",
+          map_value(name_value(4096, "a JSON pointer"),
+                    one_of_value({number_value(), text(), boolean_value(), null_value(),
+                                  list_value(one_of_value({number_value(), text(), null_value()},
+                                                          "a number, string or null"),
+                                             "an array")},
+                                 "a JSON value"),
+                    50, "object mapping JSON pointers to values", "changes"),
+          "", "the step's changes as the case gave them (empty for step 0)")};
+  for (const FieldRule& f : result_fields)
+    if (f.key != "history") fields.push_back(f);
+  return object_rule("a load step", "load_step", std::move(fields));
+}
+
+ObjectRulePtr load_steps_result_rule(const std::vector<FieldRule>& result_fields) {
+  return object_rule(
+      "the load steps", "load_steps",
+      {output_field("count", count(), "1", "steps solved, the case as given included"),
+       output_field("steps",
+                    list_value(object_value(load_step_rule(result_fields)), "one per step"), "",
+                    "each step's result (as a result without load steps, without its history)")});
+}
+
 ObjectRulePtr stick_zone_rule() {
   ValueRule where = one_of_value({number_value(), null_value()}, "a number or null");
   return object_rule("the stick zone", "stick_zone",
@@ -507,6 +535,11 @@ ObjectRulePtr result_rule() {
     reasons.push_back(stop_reason_name(reason));
   std::vector<FieldRule> fields = outcome_fields(reasons);
   for (FieldRule& f : solution_fields(reasons)) fields.push_back(std::move(f));
+  fields.push_back(optional_field(
+      "load_steps", object_value(load_steps_result_rule(fields)), nullptr,
+      "a case with load steps: every step's result in order (the case as given is step 0); the "
+      "other fields are the last step's, except converged and stop_reason, which say whether "
+      "every step converged"));
   return object_rule("the result", "result", std::move(fields));
 }
 

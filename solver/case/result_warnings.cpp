@@ -181,7 +181,8 @@ std::vector<std::string> warning_codes() {
           "time_limit",
           "rounding_level",
           "coarse_corrections_shortened",
-          "sweep_point_not_converged"};
+          "sweep_point_not_converged",
+          "load_step_not_converged"};
 }
 
 void add_warnings(json& result, const std::vector<ResultWarning>& warnings) {
