@@ -55,7 +55,9 @@ std::string describe_time(const CaseTimeEstimate& e, const CaseSpec& spec, long 
   const SolverOptions& solver =
       spec.sweep_points.empty() ? spec.solver : spec.sweep_points[0].solver;
   std::string text = describe_seconds(e.seconds) + ": ";
-  if (e.points > 1) text += std::to_string(e.points) + " sweep points, each ";
+  if (e.points > 1)
+    text += std::to_string(e.points) +
+            (spec.load_step_points.empty() ? " sweep points, each " : " load steps, each ");
   if (e.bounded_by_time_limit) {
     char limit[32];
     std::snprintf(limit, sizeof limit, "%g", solver.time_limit_s);
@@ -106,8 +108,11 @@ double pgs_seconds_per_iteration(long long unknowns) {
 
 CaseTimeEstimate estimate_case_time(const CaseSpec& spec, long long unknowns) {
   CaseTimeEstimate e;
-  const std::vector<CaseSpec> single =
+  // Load steps: the case as given and every step, one solve each.
+  std::vector<CaseSpec> single =
       spec.sweep_points.empty() ? std::vector<CaseSpec>{spec} : std::vector<CaseSpec>{};
+  if (spec.sweep_points.empty())
+    single.insert(single.end(), spec.load_step_points.begin(), spec.load_step_points.end());
   const std::vector<CaseSpec>& points = spec.sweep_points.empty() ? single : spec.sweep_points;
   e.points = static_cast<int>(points.size());
   bool all_bounded = true;
@@ -119,11 +124,12 @@ CaseTimeEstimate estimate_case_time(const CaseSpec& spec, long long unknowns) {
   e.bounded_by_time_limit = all_bounded;
   const bool adaptive_size =
       spec.adaptivity && spec.adaptivity->steps > 0 && spec.adaptivity->max_dofs > unknowns;
-  e.limited_by = all_bounded                                ? "/solver/time_limit_s"
-                 : spec.solver.method == SolverMethod::kPgs ? "/solver/max_iterations"
-                 : e.points > 1                             ? "/sweep/values"
-                 : adaptive_size                            ? "/adaptivity/max_dofs"
-                                                            : "/mesh/refinements";
+  e.limited_by = all_bounded                                      ? "/solver/time_limit_s"
+                 : spec.solver.method == SolverMethod::kPgs       ? "/solver/max_iterations"
+                 : e.points > 1 && !spec.load_step_points.empty() ? "/load_steps"
+                 : e.points > 1                                   ? "/sweep/values"
+                 : adaptive_size                                  ? "/adaptivity/max_dofs"
+                                                                  : "/mesh/refinements";
   return e;
 }
 
