@@ -1,6 +1,6 @@
 #include "case/load_step_runner.hpp"
 
-#include "case/result_warnings.hpp"
+#include "case/sweep_runner.hpp"
 
 namespace fosls {
 
@@ -48,13 +48,8 @@ RunOutput run_load_steps(
     displacement = std::move(last.displacement);
   }
   json& r = last.result;
-  r["name"] = spec.name;
-  r["converged"] = first_failure.empty();
-  r["stop_reason"] = first_failure.empty() ? "converged" : first_failure;
-  if (!first_failure.empty() && !r.contains("message"))
-    r["message"] = std::to_string(warnings.size()) + " of " + std::to_string(n) +
-                   " load steps did not converge (see warnings and load_steps.steps)";
-  add_warnings(r, warnings);
+  close_series(r, spec.name, first_failure, warnings, n,
+               "load steps did not converge (see warnings and load_steps.steps)");
   r["load_steps"] = {{"count", n}, {"steps", std::move(steps)}};
   last.solution = std::move(previous);
   last.displacement = std::move(displacement);

@@ -31,6 +31,17 @@ json point_json(double value, const json& r) {
 
 }  // namespace
 
+void close_series(json& r, const std::string& name, const std::string& first_failure,
+                  const std::vector<ResultWarning>& warnings, std::size_t n,
+                  const std::string& what) {
+  r["name"] = name;
+  r["converged"] = first_failure.empty();
+  r["stop_reason"] = first_failure.empty() ? "converged" : first_failure;
+  if (!first_failure.empty() && !r.contains("message"))
+    r["message"] = std::to_string(warnings.size()) + " of " + std::to_string(n) + " " + what;
+  add_warnings(r, warnings);
+}
+
 RunOutput run_sweep(const CaseSpec& spec, const RunControl& control,
                     const std::function<RunOutput(const CaseSpec&, const RunControl&)>& run_point) {
   json points = json::array();
@@ -57,13 +68,8 @@ RunOutput run_sweep(const CaseSpec& spec, const RunControl& control,
     previous = std::move(last.solution);
   }
   json& r = last.result;
-  r["name"] = spec.name;
-  r["converged"] = first_failure.empty();
-  r["stop_reason"] = first_failure.empty() ? "converged" : first_failure;
-  if (!first_failure.empty() && !r.contains("message"))
-    r["message"] = std::to_string(warnings.size()) + " of " + std::to_string(n) +
-                   " sweep points did not converge (see warnings and sweep.points)";
-  add_warnings(r, warnings);
+  close_series(r, spec.name, first_failure, warnings, n,
+               "sweep points did not converge (see warnings and sweep.points)");
   r["sweep"] = {{"pointer", spec.sweep->pointer}, {"points", std::move(points)}};
   last.solution = std::move(previous);
   return last;

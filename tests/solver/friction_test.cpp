@@ -6,10 +6,9 @@
 
 #include <algorithm>
 #include <cmath>
-#include <fstream>
-#include <sstream>
 #include <string>
 
+#include "../shipped_example.hpp"
 #include "case/case_error.hpp"
 #include "case/case_reader.hpp"
 #include "case/case_runner.hpp"
@@ -19,16 +18,9 @@ namespace {
 
 using nlohmann::json;
 
-json example(const std::string& name) {
-  std::ifstream in(std::string(FOSLS_SOURCE_DIR) + "/solver/examples/" + name + ".json");
-  std::stringstream text;
-  text << in.rdbuf();
-  return json::parse(text.str());
-}
-
 /// The incompressible half disk pressed by 0.01 and moved sideways by `shift`.
 json hertz(const json& friction, double shift, int refinements, const std::string& method = "mmg") {
-  json j = example("hertz_incompressible");
+  json j = testing::load_shipped_example("hertz_incompressible");
   j["mesh"]["refinements"] = refinements;
   j["boundary"]["top"]["displacement"] = {shift, -0.01};
   if (!friction.is_null()) j["boundary"]["contact"]["friction"] = friction;
@@ -39,7 +31,7 @@ json hertz(const json& friction, double shift, int refinements, const std::strin
 
 /// A unit square (μ = λ = 1) pressed 0.05 onto the plane y = 0 and moved sideways by `shift`.
 json block(double coefficient, double shift) {
-  json j = example("signorini_square");
+  json j = testing::load_shipped_example("signorini_square");
   j["mesh"]["refinements"] = 2;
   j["boundary"]["top"]["displacement"] = {shift, -0.05};
   j["boundary"]["bottom"]["obstacle"] = {{"type", "plane"}, {"point", {0, 0}}, {"normal", {0, 1}}};
@@ -138,7 +130,7 @@ TEST(Friction, UnsupportedCombinationsAndBadBoundsAreNamed) {
   ASSERT_FALSE(read_case(tnnmg).errors.empty());
   EXPECT_EQ(read_case(tnnmg).errors[0].pointer, "/solver/method");
 
-  json adaptive = example("hertz_adaptive");
+  json adaptive = testing::load_shipped_example("hertz_adaptive");
   adaptive["boundary"]["contact"]["friction"] = {{"bound", 0.1}};
   ASSERT_FALSE(read_case(adaptive).errors.empty());
   EXPECT_EQ(read_case(adaptive).errors[0].pointer, "/adaptivity");

@@ -5,10 +5,9 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
-#include <fstream>
-#include <sstream>
 #include <string>
 
+#include "../shipped_example.hpp"
 #include "case/case_reader.hpp"
 #include "case/case_runner.hpp"
 
@@ -18,10 +17,7 @@ namespace {
 using nlohmann::json;
 
 json cattaneo(double coefficient) {
-  std::ifstream in(std::string(FOSLS_SOURCE_DIR) + "/solver/examples/cattaneo_mindlin.json");
-  std::stringstream text;
-  text << in.rdbuf();
-  json j = json::parse(text.str());
+  json j = testing::load_shipped_example("cattaneo_mindlin");
   j["mesh"]["refinements"] = 2;
   j["boundary"]["top"]["displacement"] = {0, -0.01};
   j["boundary"]["contact"]["friction"] = {{"coefficient", coefficient}};
