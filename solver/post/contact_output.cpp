@@ -45,7 +45,7 @@ std::vector<int> chain_order(const FoslsSpace& space) {
 
 /// Shear, slip and state of contact edge r.edge.
 void set_friction_state(const FoslsAssembler& assembler, const AssembledProblem& problem,
-                        const Vector& x_full, ContactEdgeResult& r) {
+                        const Vector& x_full, double largest_bound, ContactEdgeResult& r) {
   const FoslsSpace& space = assembler.space();
   const Mesh& mesh = space.mesh();
   const int e = r.edge;
@@ -66,10 +66,7 @@ void set_friction_state(const FoslsAssembler& assembler, const AssembledProblem&
   r.shear = x_full[st] * problem.stress_scale / r.length;
   const double bound = problem.qp.upper[space.free_index(st)];
   // At the bound up to the solver's tolerance, relative to the largest bound.
-  double largest = 0.0;
-  for (const FrictionEdge& f : problem.friction.edges)
-    largest = std::max(largest, problem.qp.upper[f.st]);
-  const bool at_bound = std::abs(x_full[st]) >= bound - 1e-6 * largest;
+  const bool at_bound = std::abs(x_full[st]) >= bound - 1e-6 * largest_bound;
   r.state = !r.active  ? ContactEdgeResult::State::kOpen
             : at_bound ? ContactEdgeResult::State::kSlip
                        : ContactEdgeResult::State::kStick;
@@ -94,6 +91,9 @@ ContactResult contact_output(const FoslsAssembler& assembler, const AssembledPro
   const Mesh& mesh = space.mesh();
   ContactResult out;
   double s = 0.0;
+  double largest_bound = 0.0;  // of the slip bounds s̄_e
+  for (const FrictionEdge& f : problem.friction.edges)
+    largest_bound = std::max(largest_bound, problem.qp.upper[f.st]);
   for (int e : chain_order(space)) {
     ContactEdgeResult r;
     r.edge = e;
@@ -111,7 +111,7 @@ ContactResult contact_output(const FoslsAssembler& assembler, const AssembledPro
     // σn = σ_nn n + σ_nt t; σ_nt = 0 on a frictionless contact edge.
     out.force_x += sn * ne.x();
     out.force_y += sn * ne.y();
-    set_friction_state(assembler, problem, x_full, r);
+    set_friction_state(assembler, problem, x_full, largest_bound, r);
     if (r.shear != 0.0) {
       out.force_x += r.shear * len * -ne.y();
       out.force_y += r.shear * len * ne.x();
