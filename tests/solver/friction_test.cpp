@@ -9,6 +9,7 @@
 #include <string>
 
 #include "../shipped_example.hpp"
+#include "../solved_case.hpp"
 #include "case/case_error.hpp"
 #include "case/case_reader.hpp"
 #include "case/case_runner.hpp"
@@ -39,13 +40,7 @@ json block(double coefficient, double shift) {
   return j;
 }
 
-json solve(const json& j) {
-  const CaseReadResult read = read_case(j);
-  EXPECT_TRUE(read.spec) << (read.errors.empty()
-                                 ? ""
-                                 : read.errors[0].pointer + ": " + read.errors[0].detail);
-  return read.spec ? run_case(*read.spec).result : json();
-}
+json solve(const json& j) { return testing::solved_case(j); }
 
 double force_difference(const json& a, const json& b) {
   const json& fa = a["contact"]["force"];

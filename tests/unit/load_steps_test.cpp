@@ -8,6 +8,7 @@
 #include <string>
 
 #include "../shipped_example.hpp"
+#include "../solved_case.hpp"
 #include "case/case_reader.hpp"
 #include "case/case_runner.hpp"
 
@@ -26,13 +27,7 @@ json cattaneo(double coefficient) {
   return j;
 }
 
-json solve(const json& j) {
-  const CaseReadResult read = read_case(j);
-  EXPECT_TRUE(read.spec) << (read.errors.empty()
-                                 ? ""
-                                 : read.errors[0].pointer + ": " + read.errors[0].detail);
-  return read.spec ? run_case(*read.spec).result : json();
-}
+json solve(const json& j) { return testing::solved_case(j); }
 
 TEST(LoadSteps, BadPointersAndValuesAreNamed) {
   json j = cattaneo(0.3);
