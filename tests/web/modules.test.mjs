@@ -1,6 +1,6 @@
 // Unit tests of the page's pure modules (no browser): JSON pointer locations, the Hertz
 // formulas, the VTU reader, the mesh view's colour map, magnification, fields, edges, fit
-// and point location.
+// and point location, and the friction / load-step data shaping.
 //   node --test tests/web/modules.test.mjs
 import { test } from 'node:test';
 import assert from 'node:assert/strict';
@@ -15,6 +15,9 @@ import { autoMagnification, colourAt, colourScale, maxDisplacement } from '../..
 import { MESH_FIELDS, probeSummary } from '../../web/app/mesh_fields.js';
 import { contactCsv, sweepCsv } from '../../web/app/csv_export.js';
 import { adaptiveRows, STEP_COLUMNS } from '../../web/app/adaptive_steps.js';
+import {
+  changesText, commonCoefficient, forceAxes, frictionNumbers, frictionText, loadStepColumns, loadStepRows, stateRuns, stickZoneText,
+} from '../../web/app/friction.js';
 import { bounds, deformedPoints, fitTransform, locatePoint, meshEdges, valueRange } from '../../web/app/mesh_drawing.js';
 
 const repo = join(dirname(fileURLToPath(import.meta.url)), '..', '..');
@@ -290,4 +293,80 @@ test('adaptive steps: the force change is relative to the later step, none on th
   assert.deepEqual(cells, ['1', '180', '70', '8', '0.015', '0.3', '1.4', '0.35', '2.0e-9', '0.20 s']);
   assert.equal(STEP_COLUMNS[7][1](rows[0]), '—');
   assert.deepEqual(adaptiveRows(undefined), []);
+});
+
+test('state runs tile the boundary: boundaries halfway between midpoints, ends half a spacing out', () => {
+  const xs = [0, 1, 2, 4, 6];
+  const runs = stateRuns(xs, ['open', 'slip', 'stick', 'stick', 'open']);
+  assert.deepEqual(runs, [
+    { state: 'open', from: -0.5, to: 0.5, edges: 1 },
+    { state: 'slip', from: 0.5, to: 1.5, edges: 1 },
+    { state: 'stick', from: 1.5, to: 5, edges: 2 },
+    { state: 'open', from: 5, to: 7, edges: 1 },
+  ]);
+  assert.deepEqual(stateRuns([3], ['stick']), [{ state: 'stick', from: 3, to: 3, edges: 1 }]);
+  assert.deepEqual(stateRuns([], []), []);
+});
+
+test('friction in words: the law, the bound from the case for Tresca, the updates and the stick zone', () => {
+  const coulomb = { groups: { contact: { law: 'coulomb', coefficient: 0.3 } }, updates: 10, last_change: 4.443e-7 };
+  assert.equal(frictionText(coulomb), 'Coulomb 𝔣 = 0.3; 10 updates of the slip bounds, the last changing them by 4.4e-7');
+  const tresca = { groups: { left: { law: 'tresca', coefficient: null }, right: { law: 'coulomb', coefficient: 0.5 } }, updates: 0 };
+  const caseDoc = { boundary: { left: { friction: { bound: '0.01 * (1 + x)' } } } };
+  assert.equal(frictionText(tresca, caseDoc), 'left: Tresca s = 0.01 * (1 + x), right: Coulomb 𝔣 = 0.5');
+  assert.equal(frictionText(tresca), 'left: Tresca (bound s as in the case), right: Coulomb 𝔣 = 0.5');
+  // The slip bound 𝔣p is drawn only when one coefficient holds on every frictional edge.
+  assert.equal(commonCoefficient(coulomb), 0.3);
+  assert.equal(commonCoefficient(tresca), null);
+  assert.equal(commonCoefficient(undefined), null);
+  assert.equal(stickZoneText({ edges: 10, length: 0.14928, s_start: 0.46743, s_end: 0.61671 }, ' mm'), '0.1493 mm over 10 edges, s = 0.4674 … 0.6167 mm');
+  assert.equal(stickZoneText({ edges: 0, length: 0, s_start: null, s_end: null }), 'none: every edge in contact slips');
+});
+
+test('load steps: forces split along the plane obstacle, one row per step, the table cells', () => {
+  const step = (k, changes, force, states, stick) => ({
+    step: k, changes, iterations: 10 + k, converged: k !== 2,
+    contact: { force, state: states, stick_zone: { edges: stick ? 1 : 0, length: stick } },
+  });
+  const loadSteps = { count: 3, steps: [
+    step(0, {}, [0, 2], ['open', 'stick', 'stick'], 0.2),
+    step(1, { '/boundary/top/displacement/0': 0.001 }, [-0.3, 2], ['open', 'slip', 'stick'], 0.1),
+    step(2, { '/boundary/top/displacement/0': 0.002, '/x': 'y' }, [-0.6, 2], ['slip', 'slip', 'open'], 0),
+  ] };
+  // A horizontal plane with ν = (0, 1): F_t = F_x, F_n = F_y.
+  const flat = forceAxes([0, 1]);
+  const rows = loadStepRows(loadSteps, flat);
+  assert.deepEqual(rows.map((r) => [r.step, r.tangential, r.normal, r.ratio]), [[0, 0, 2, 0], [1, -0.3, 2, 0.15], [2, -0.6, 2, 0.3]]);
+  assert.deepEqual(rows[1].counts, { open: 1, stick: 1, slip: 1 });
+  // A plane tilted by 90° (ν = (1, 0)): the normal force is F_x and t = (0, −1).
+  const tilted = loadStepRows(loadSteps, forceAxes([1, 0]));
+  assert.deepEqual(tilted.map((r) => [r.tangential, r.normal]), [[-2, 0], [-2, -0.3], [-2, -0.6]]);
+  assert.equal(tilted[0].ratio, null, 'no ratio without a positive normal force');
+  // No plane obstacle: F_x and F_y, named so.
+  const xy = forceAxes(null);
+  assert.equal(loadStepRows(loadSteps, xy)[2].normal, 2);
+  const columns = loadStepColumns(flat);
+  assert.deepEqual(columns.map(([title]) => title),
+    ['step', 'changes', 'iterations', 'converged', 'F_t', 'F_n', '|F_t| / F_n', 'stick zone', 'stick / slip / open edges']);
+  assert.deepEqual(loadStepColumns(xy).slice(4, 7).map(([title]) => title), ['F_x', 'F_y', '|F_x| / F_y']);
+  assert.deepEqual(columns.map(([, text]) => text(rows[2])),
+    ['2', '/boundary/top/displacement/0 = 0.002, /x = "y"', '12', 'no', '-0.6', '2', '0.3', '0', '0 / 2 / 1']);
+  assert.equal(changesText({}), '— (the case as given)');
+  assert.deepEqual(loadStepRows(undefined, flat), []);
+});
+
+test('the key numbers a frictional, load-stepped result adds', () => {
+  const result = {
+    units: { declared: true, length: 'mm', stress: 'MPa' },
+    friction: { groups: { contact: { law: 'coulomb', coefficient: 0.3 } }, updates: 1, last_change: 1 },
+    contact: { shear: [0, -0.1], stick_zone: { edges: 1, length: 0.5, s_start: 1, s_end: 1.5 } },
+    load_steps: { count: 2, steps: [{ converged: true }, { converged: false }] },
+  };
+  const numbers = frictionNumbers(result);
+  assert.deepEqual(numbers.map(([term, value]) => [term, value]), [
+    ['Friction', 'Coulomb 𝔣 = 0.3; 1 update of the slip bounds, the last changing them by 1'],
+    ['Stick zone', '0.5 mm over 1 edge, s = 1 … 1.5 mm'],
+    ['Load steps', '2 (1 not converged)'],
+  ]);
+  assert.deepEqual(frictionNumbers({ contact: { x: [0] } }), [], 'frictionless: nothing added');
 });
