@@ -1,11 +1,14 @@
 // The job view of a finished job: key numbers, warnings, downloads, the charts (pressure and
-// gap along the contact boundary, residuals, sweep, adaptive steps), and the coloured mesh with its colour
-// bar. `view` is the page's record of the job shown: {result, mesh, meshError, hertz,
-// compare, charts}; `plots` the chart module (null when uPlot is missing).
+// gap along the contact boundary, residuals, sweep, adaptive steps, friction and load steps), and the
+// coloured mesh with its colour bar. `view` is the page's record of the job shown: {result, mesh,
+// meshError, hertz, compare, caseDoc, loadStep, charts}; `plots` the chart modules (null when
+// uPlot is missing).
 import * as api from './api.js';
 import { adaptiveRows, renderStepTable } from './adaptive_steps.js';
 import { contactCsv, sweepCsv } from './csv_export.js';
 import { fmt, seconds } from './format.js';
+import { frictionNumbers } from './friction.js';
+import { drawFriction, drawLoadSteps } from './friction_view.js';
 import { MESH_FIELDS, UNITS, resultUnits } from './mesh_fields.js';
 import { autoMagnification, colourGradientCss, colourScale } from './mesh_view.js';
 import { valueRange } from './mesh_drawing.js';
@@ -70,6 +73,7 @@ export function renderSummary(job, view) {
       `Dörfler marking θ = ${adaptivity.theta}; the numbers here are the last step's. ${adaptivity.stop_message ?? ''}`);
   }
   addNumber(dl, 'Active contact edges', `${contact.active?.filter(Boolean).length ?? 0} of ${contact.active?.length ?? 0}`);
+  for (const [term, value, title] of frictionNumbers(r, view.caseDoc)) addNumber(dl, term, value, title);
   addNumber(dl, 'Time', `${seconds(r.timing?.total_s)} (solve ${seconds(r.timing?.solve_s)})`,
     `mesh ${seconds(r.timing?.mesh_s)}, assembly ${seconds(r.timing?.assembly_s)}`);
 
@@ -136,6 +140,8 @@ export function drawCharts(view, plots) {
   }
   drawSweep(view, plots);
   drawAdaptivity(view, plots);
+  drawFriction(view, plots);
+  drawLoadSteps(view, plots);
   const history = view.result.history ?? [];
   if (history.length) view.charts.push(plots.residualPlot(residualBox, history));
   else {

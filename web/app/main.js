@@ -2,6 +2,7 @@
 import * as api from './api.js';
 import { CaseEditor } from './case_editor.js';
 import { hertzForResult } from './hertz.js';
+import { hasTresca } from './friction.js';
 import { parseVtu } from './vtu.js';
 import { fmt, setStatus } from './format.js';
 import { MESH_FIELDS } from './mesh_fields.js';
@@ -15,9 +16,9 @@ const $ = (id) => document.getElementById(id);
 // The plots need uPlot from web/dist (web/build.sh). Loaded apart so that without it the
 // editor and the job list still work and the page says what is missing.
 let plots = null;
-const plotsReady = import('./plots.js')
-  .then((module) => {
-    plots = module;
+const plotsReady = Promise.all([import('./plots.js'), import('./friction_plots.js')])
+  .then(([charts, frictionCharts]) => {
+    plots = { ...charts, ...frictionCharts };
   })
   .catch(() => {
     setStatus($('service-status'), 'The plotting library is missing on the server: run web/build.sh.', 'error');
@@ -311,6 +312,12 @@ async function loadResult(job) {
     view.hertz = hertzForResult(view.result);
     view.mesh = null;
     view.meshError = null;
+    // A Tresca bound is in the case only (a number or an expression): the friction summary names it.
+    if (hasTresca(view.result)) {
+      const caseResponse = await api.getCase(job.id);
+      if (state.view !== view) return;
+      view.caseDoc = caseResponse.ok ? caseResponse.body : null;
+    }
     if (vtuResponse.ok) {
       try {
         view.mesh = parseVtu(vtuResponse.body);
@@ -377,6 +384,11 @@ function init() {
   $('open-case').addEventListener('click', openCase);
   const redrawMesh = (options) => state.view?.mesh && drawMeshView(state.view, viewer, options);
   $('pressure-abscissa').addEventListener('change', () => state.view?.result && drawCharts(state.view, plots));
+  $('load-step-select').addEventListener('change', (e) => {
+    if (!state.view?.result) return;
+    state.view.loadStep = Number(e.target.value);
+    drawCharts(state.view, plots);
+  });
   $('mesh-field').addEventListener('change', () => redrawMesh());
   $('mesh-magnification').addEventListener('input', () => redrawMesh());
   $('mesh-auto').addEventListener('click', () => redrawMesh({ resetMagnification: true }));

@@ -20,14 +20,14 @@ export const COLOURS = {
   slope: '#7f8c8d',
 };
 
-const plotHeight = 260;
+export const plotHeight = 260;
 
-function fitWidth(container) {
+export function fitWidth(container) {
   return Math.max(280, Math.floor(container.clientWidth));
 }
 
 /** Keeps a chart as wide as its container. Returns the chart. */
-function responsive(chart, container) {
+export function responsive(chart, container) {
   const observer = new ResizeObserver(() => {
     const w = fitWidth(container);
     if (w !== chart.width) chart.setSize({ width: w, height: plotHeight });
@@ -41,7 +41,8 @@ function responsive(chart, container) {
   return chart;
 }
 
-function sci(v) {
+/** A number for an axis or legend: 4 digits, exponential outside [1e-3, 1e4). */
+export function sci(v) {
   if (v === null || v === undefined || !Number.isFinite(v)) return '—';
   if (v === 0) return '0';
   return Math.abs(v) >= 1e-3 && Math.abs(v) < 1e4 ? String(Number(v.toPrecision(4))) : v.toExponential(2);
@@ -58,7 +59,7 @@ function decadeSplits(u, axisIndex, min, max) {
 }
 
 /** x and y of `contact` sorted along the abscissa, for uPlot (which needs ascending x). */
-function sortedAlong(contact, abscissa, field) {
+export function sortedAlong(contact, abscissa, field) {
   const xs = contact[abscissa] ?? [];
   const order = xs.map((_, i) => i).sort((i, j) => xs[i] - xs[j]);
   return [order.map((i) => xs[i]), order.map((i) => contact[field]?.[i] ?? null)];
