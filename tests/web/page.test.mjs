@@ -16,6 +16,7 @@ import { createRequire } from 'node:module';
 import { tmpdir } from 'node:os';
 import { dirname, join, resolve } from 'node:path';
 import { fileURLToPath } from 'node:url';
+import { expectPixelsOn } from './page_pixels.mjs';
 
 const repo = resolve(dirname(fileURLToPath(import.meta.url)), '..', '..');
 const webRoot = resolve(process.env.FOSLS_WEB_ROOT ?? join(repo, 'web'));
@@ -79,46 +80,8 @@ function stopServer() {
   });
 }
 
-/** Counts pixels of `canvasSelector` (first match, or the largest canvas inside it) within
- *  `tolerance` of the colour `hex`, or (hex = null) pixels that are not transparent/white. */
-async function countPixels(selector, hex, tolerance = 40) {
-  return page.evaluate(
-    ({ selector, hex, tolerance }) => {
-      const root = document.querySelector(selector);
-      const canvases = root.tagName === 'CANVAS' ? [root] : [...root.querySelectorAll('canvas')];
-      const canvas = canvases.sort((a, b) => b.width * b.height - a.width * a.height)[0];
-      // Read a copy made for reading, so the page's own canvas is not switched to software.
-      const copy = document.createElement('canvas');
-      copy.width = canvas.width;
-      copy.height = canvas.height;
-      const ctx = copy.getContext('2d', { willReadFrequently: true });
-      ctx.drawImage(canvas, 0, 0);
-      const { data } = ctx.getImageData(0, 0, copy.width, copy.height);
-      const want = hex && [1, 3, 5].map((k) => parseInt(hex.slice(k, k + 2), 16));
-      let n = 0;
-      for (let i = 0; i < data.length; i += 4) {
-        if (data[i + 3] < 128) continue;
-        if (want) {
-          if (Math.abs(data[i] - want[0]) + Math.abs(data[i + 1] - want[1]) + Math.abs(data[i + 2] - want[2]) <= tolerance) n++;
-        } else if (data[i] + data[i + 1] + data[i + 2] < 3 * 235) {
-          n++;
-        }
-      }
-      return n;
-    },
-    { selector, hex, tolerance },
-  );
-}
-
-/** Waits (up to 10 s) until countPixels(selector, hex) exceeds `min`; returns the count. */
-async function expectPixels(selector, hex, min, what) {
-  let n = 0;
-  for (const deadline = Date.now() + 10000; Date.now() < deadline; await new Promise((r) => setTimeout(r, 100))) {
-    n = await countPixels(selector, hex);
-    if (n > min) return n;
-  }
-  assert.fail(`${what}: ${n} pixels of ${hex ?? 'non-background'} on ${selector}, expected more than ${min}`);
-}
+// The page's canvases read back in the browser (tests/web/page_pixels.mjs), on this test's page.
+const expectPixels = (...args) => expectPixelsOn(page, ...args);
 
 async function setEditorText(text) {
   await page.locator('#case-text').fill(text);
