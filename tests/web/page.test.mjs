@@ -17,6 +17,7 @@ import { tmpdir } from 'node:os';
 import { dirname, join, resolve } from 'node:path';
 import { fileURLToPath } from 'node:url';
 import { expectPixelsOn } from './page_pixels.mjs';
+import { checkFrictionAndLoadSteps } from './page_friction.mjs';
 
 const repo = resolve(dirname(fileURLToPath(import.meta.url)), '..', '..');
 const webRoot = resolve(process.env.FOSLS_WEB_ROOT ?? join(repo, 'web'));
@@ -418,6 +419,10 @@ test('an adaptive run shows its steps: the log–log plot, the table and the ada
   });
   await page.screenshot({ path: join(screenshots, 'adaptive.png'), fullPage: true, clip: shot });
   await page.locator('#mesh-field').selectOption('von_mises');
+});
+
+test('friction with load steps: shear and stick / slip along the boundary, the load path and the step table', async () => {
+  await checkFrictionAndLoadSteps({ page, serverUrl: server.url, screenshots, submitAndWaitForRow, setEditorText, expectPixels, fmt });
 });
 
 test('a solve stopped by max_iterations gets its own badge, not the success colour', async () => {
