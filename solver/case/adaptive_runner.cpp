@@ -12,6 +12,7 @@
 #include "core/indefinite_system.hpp"
 #include "core/peak_memory.hpp"
 #include "mesh/bisection.hpp"
+#include "mesh/refinement.hpp"
 #include "solvers/solve_loop.hpp"
 
 namespace fosls {
@@ -77,6 +78,80 @@ std::string stop_before_refining(const CaseSolution& s, const AdaptivitySpec& a,
 
 }  // namespace
 
+namespace {
+
+AdaptiveStepRecord step_record(const CaseSolution& solution, int step) {
+  const Discretization& disc = *solution.disc;
+  AdaptiveStepRecord record;
+  record.step = step;
+  record.levels = disc.num_levels();
+  record.dofs = disc.problem().qp.size();
+  record.dofs_total = disc.finest_space().num_dofs();
+  record.triangles = disc.meshes().finest().num_triangles();
+  record.force = {solution.contact.force_x, solution.contact.force_y};
+  record.iterations = solution.report.iterations;
+  record.converged = solution.report.converged;
+  record.converged_by = solution.report.converged_by;
+  record.algebraic_error = solution.report.algebraic_error;
+  return record;
+}
+
+/// The meshes of the next step, or why there is none.
+struct NextLevel {
+  MeshHierarchy meshes;
+  BisectionState state;
+  int marked = 0;
+  std::string stop_reason;  ///< empty: refine
+};
+
+/// The adaptive loop's next level: the marked triangles bisected.
+NextLevel refine_marked(const CaseSolution& solution, const BisectionState& state,
+                        const std::vector<double>& indicators, const AdaptivitySpec& a) {
+  const std::vector<int> marked = dorfler_marking(indicators, a.theta);
+  NextLevel next{solution.disc->meshes(), state, static_cast<int>(marked.size()), ""};
+  refine_finest_level(next.meshes, next.state, marked);
+  if (marked.empty())
+    next.stop_reason = "target";
+  else if (dofs_total(next.meshes.finest()) > a.max_dofs)
+    next.stop_reason = "max_dofs";
+  return next;
+}
+
+/// The accuracy loop's next level: a uniform (red) refinement of the finest mesh.
+NextLevel refine_all(const CaseSolution& solution, const AccuracySpec& a) {
+  NextLevel next{solution.disc->meshes(), {}, 0, ""};
+  Refinement r = refine_uniformly(next.meshes.finest());
+  if (dofs_total(r.fine) > a.max_dofs) {
+    next.stop_reason = "max_dofs";
+    return next;
+  }
+  next.marked = static_cast<int>(next.meshes.finest().num_triangles());
+  next.meshes.meshes.push_back(std::move(r.fine));
+  next.meshes.maps.push_back(std::move(r.maps));
+  return next;
+}
+
+/// Why the loop stops after this step's solve (before refining), or empty to go on.
+std::string stop_after_solve(const CaseSolution& solution, const CaseSpec& spec, int step,
+                             double first_estimator) {
+  if (spec.adaptivity)
+    return stop_before_refining(solution, *spec.adaptivity, step, first_estimator);
+  const SolverReport& r = solution.report;
+  if (r.cancelled) return "cancelled";
+  if (r.time_limited) return "time_limit";
+  if (!r.converged) return "not_converged";
+  const AdaptiveStepRecord& last = solution.steps.back();
+  return accuracy_stop_reason(last.force_error, *spec.accuracy, last.force);
+}
+
+std::vector<std::array<double, 2>> forces(const std::vector<AdaptiveStepRecord>& steps) {
+  std::vector<std::array<double, 2>> f;
+  for (const AdaptiveStepRecord& s : steps) f.push_back(s.force);
+  return f;
+}
+
+}  // namespace
+
 CaseSolution solve_case_levels(MeshHierarchy meshes, const ProblemData& data, const CaseSpec& spec,
                                const CaseSolveObserver& observer, const Vector* start) {
   CaseSolution solution;
@@ -99,48 +174,38 @@ CaseSolution solve_case_levels(MeshHierarchy meshes, const ProblemData& data, co
     solve_finest(solution, spec, step > 0 || started, step == 0, observer);
 
     const ErrorEstimate estimate = error_estimate(solution.parts);
-    const Mesh& finest = disc.meshes().finest();
-    AdaptiveStepRecord record;
-    record.step = step;
-    record.levels = disc.num_levels();
-    record.dofs = disc.problem().qp.size();
-    record.dofs_total = disc.finest_space().num_dofs();
-    record.triangles = finest.num_triangles();
+    solution.steps.push_back(step_record(solution, step));
+    AdaptiveStepRecord& record = solution.steps.back();
     record.estimator = estimate.estimator();
-    record.force = {solution.contact.force_x, solution.contact.force_y};
-    record.iterations = solution.report.iterations;
-    record.converged = solution.report.converged;
-    record.converged_by = solution.report.converged_by;
-    record.algebraic_error = solution.report.algebraic_error;
+    if (spec.accuracy) record.force_error = estimate_force_error(forces(solution.steps));
     if (step == 0) first_estimator = record.estimator;
-    solution.steps.push_back(record);
     auto finish_step = [&] { solution.steps.back().time_s = seconds(t0, Clock::now()); };
-    if (!spec.adaptivity) {
+    if (!spec.adaptivity && !spec.accuracy) {
       finish_step();
       break;
     }
-    const AdaptivitySpec& a = *spec.adaptivity;
-    solution.stop_reason = stop_before_refining(solution, a, step, first_estimator);
+    solution.stop_reason = stop_after_solve(solution, spec, step, first_estimator);
+    NextLevel next;
+    if (solution.stop_reason.empty()) {
+      next = spec.adaptivity ? refine_marked(solution, state, estimate.indicators, *spec.adaptivity)
+                             : refine_all(solution, *spec.accuracy);
+      solution.stop_reason = next.stop_reason;
+      if (solution.stop_reason.empty() && observer.deadline.passed())
+        solution.stop_reason = "time_limit";
+    }
     if (!solution.stop_reason.empty()) {
       finish_step();
       break;
     }
-    const std::vector<int> marked = dorfler_marking(estimate.indicators, a.theta);
-    MeshHierarchy next = disc.meshes();
-    BisectionState next_state = state;
-    refine_finest_level(next, next_state, marked);
-    if (marked.empty() || dofs_total(next.finest()) > a.max_dofs || observer.deadline.passed()) {
-      solution.stop_reason = marked.empty()                           ? "target"
-                             : dofs_total(next.finest()) > a.max_dofs ? "max_dofs"
-                                                                      : "time_limit";
-      finish_step();
-      break;
-    }
-    solution.steps.back().marked = static_cast<int>(marked.size());
-    meshes = std::move(next);
-    state = std::move(next_state);
+    record.marked = next.marked;
+    meshes = std::move(next.meshes);
+    if (spec.adaptivity) state = std::move(next.state);
     finish_step();
   }
+  // Levels added by the accuracy loop: two more bisections per level for every triangle.
+  if (spec.accuracy)
+    state =
+        longest_edge_state(solution.disc->meshes().finest(), 2 * (solution.disc->num_levels() - 1));
   solution.generation = std::move(state.generation);
   return solution;
 }

@@ -15,6 +15,7 @@
 
 #include "assembly/discretization.hpp"
 #include "case/case_spec.hpp"
+#include "case/force_accuracy.hpp"
 #include "core/deadline.hpp"
 #include "post/contact_output.hpp"
 
@@ -35,6 +36,7 @@ struct AdaptiveStepRecord {
   /// The solve's estimated algebraic error (SolverReport::algebraic_error; infinite: unknown).
   double algebraic_error = 0.0;
   int marked = 0;  ///< triangles marked for the next refinement (0 on the last step)
+  ForceErrorEstimate force_error;  ///< with an accuracy section (force_accuracy.hpp)
   double time_s = 0.0;
 };
 
@@ -48,7 +50,8 @@ struct CaseSolution {
   SolverReport report;  ///< of the last solve
   std::vector<AdaptiveStepRecord> steps;
   /// Why the adaptive loop stopped: "steps", "max_dofs", "target", "not_converged",
-  /// "time_limit" or "cancelled"; empty without adaptivity.
+  /// "time_limit" or "cancelled"; the accuracy loop's: "reached", "no_force", "max_dofs",
+  /// "not_converged", "time_limit" or "cancelled"; empty without either.
   std::string stop_reason;
   std::vector<int> generation;  ///< bisections from the coarse mesh, per finest triangle
   double assembly_s = 0.0, solve_s = 0.0;

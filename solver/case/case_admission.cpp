@@ -94,6 +94,14 @@ ResourceEstimate admission_estimate(const CaseSpec& spec, long long unknowns, bo
         estimate_adaptive_resources(spec.adaptivity->max_dofs, spec.solver.method);
     if (adaptive.memory_bytes > estimate.memory_bytes) estimate = adaptive;
   }
+  // The accuracy loop may refine up to its largest level below accuracy.max_dofs.
+  if (spec.accuracy) {
+    const long long largest = accuracy_largest_unknowns(unknowns, spec.accuracy->max_dofs);
+    if (largest > unknowns) {
+      estimate = estimate_resources(largest, false, spec.solver.method);
+      estimate.limited_by = "/accuracy/max_dofs";
+    }
+  }
   return estimate;
 }
 
@@ -148,11 +156,14 @@ std::optional<CaseError> check_memory_budget(const ResourceEstimate& estimate, S
                                              double budget_bytes, const std::string& budget_name) {
   if (estimate.memory_bytes <= budget_bytes) return std::nullopt;
   const bool adaptive = estimate.limited_by == "/adaptivity/max_dofs";
-  std::string advice =
-      adaptive ? "lower adaptivity.max_dofs" : "use fewer refinements or a coarser mesh.size";
-  // Another method only if it converges on fine meshes (not pgs) and fits.
+  const bool accuracy = estimate.limited_by == "/accuracy/max_dofs";
+  std::string advice = adaptive   ? "lower adaptivity.max_dofs"
+                       : accuracy ? "lower accuracy.max_dofs (the loop then stops there)"
+                                  : "use fewer refinements or a coarser mesh.size";
+  // Another method only if it converges on fine meshes (not pgs) and fits; the accuracy loop's
+  // largest level is the thing to lower, whatever the method.
   for (const MethodInfo& m : solver_methods()) {
-    if (m.method == method || !converges_on_fine_meshes(m.method)) continue;
+    if (accuracy || m.method == method || !converges_on_fine_meshes(m.method)) continue;
     const ResourceEstimate other =
         adaptive ? estimate_adaptive_resources(estimate.unknowns, m.method)
                  : estimate_resources(estimate.unknowns, estimate.unknowns_exact, m.method);

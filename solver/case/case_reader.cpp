@@ -4,6 +4,7 @@
 
 #include "case/case_sections.hpp"
 #include "case/early_group_check.hpp"
+#include "case/force_accuracy.hpp"
 #include "case/rule_checker.hpp"
 #include "case/units.hpp"
 
@@ -33,6 +34,10 @@ ObjectRulePtr case_rule(const CaseReadOptions& options) {
       optional_field("adaptivity", object_value(adaptivity_rule(options)), nullptr,
                      "adaptive refinement driven by the functional (absent: uniform refinement "
                      "only)"),
+      optional_field("accuracy", object_value(accuracy_rule(options)), nullptr,
+                     "the contact force to a requested relative error: uniform refinement from "
+                     "mesh.refinements until the estimated error is below it (absent: the "
+                     "levels of mesh.refinements only)"),
       optional_field("load_steps", load_steps_rule(options), nullptr,
                      "quasi-static steps after the case as given: each an object of JSON pointers "
                      "and their new values, applied to the case as the previous step left it and "
@@ -60,6 +65,15 @@ void check_friction_support(const CaseSpec& spec, std::vector<CaseError>& errors
     errors.push_back({"/adaptivity",
                       "adaptive refinement is not available with friction yet; refine "
                       "uniformly with mesh.refinements"});
+}
+
+/// What the accuracy loop is not combined with: it chooses the levels itself.
+void check_accuracy_support(const nlohmann::json& j, std::vector<CaseError>& errors) {
+  if (!j.contains("accuracy")) return;
+  for (const char* other : {"adaptivity", "load_steps", "sweep"})
+    if (j.contains(other))
+      errors.push_back({"/accuracy", std::string("accuracy cannot be combined with ") + other +
+                                         " yet; remove one of the two"});
 }
 
 }  // namespace
@@ -91,12 +105,19 @@ CaseReadResult read_case(const nlohmann::json& j, const CaseReadOptions& options
   if (j.contains("solver")) spec.solver = read_solver_section(j["solver"]);
   if (j.contains("adaptivity"))
     spec.adaptivity = read_adaptivity_section(j["adaptivity"], options.limits);
-  // An adaptive step's solution only decides where to refine and where the next step starts:
-  // iterating it beyond its discretisation error is wasted, so that is where its solve stops
-  // unless the case gives a tolerance (docs/method.md §5.1).
-  if (spec.adaptivity && !(j.contains("solver") && j["solver"].contains("tolerance")))
+  if (j.contains("accuracy")) spec.accuracy = read_accuracy_section(j["accuracy"], options.limits);
+  // An adaptive (or accuracy) step's solution only decides where to refine (whether to) and
+  // where the next step starts: iterating it beyond its discretisation error is wasted, so that
+  // is where its solve stops unless the case gives a tolerance (docs/method.md §5.1).
+  if ((spec.adaptivity || spec.accuracy) &&
+      !(j.contains("solver") && j["solver"].contains("tolerance")))
     spec.solver.stopping = StoppingRule::kDiscretisation;
+  const bool gives_fraction =
+      j.contains("solver") && j["solver"].contains("discretisation_fraction");
+  if (spec.accuracy && !gives_fraction)
+    spec.solver.discretisation_fraction = kAccuracyDiscretisationFraction;
   check_friction_support(spec, result.errors);
+  check_accuracy_support(j, result.errors);
   if (!result.errors.empty()) return result;
   if (j.contains("load_steps")) {
     read_load_steps_section(j, options, spec, result.errors);

@@ -259,6 +259,7 @@ RunOutput run_point(const CaseSpec& spec, const RunControl& control, const CaseL
   out.result =
       result_json(used, solution.report, solution.contact, solution.parts, size, timing, memory);
   if (spec.adaptivity) out.result["adaptivity"] = adaptivity_json(solution, *spec.adaptivity);
+  if (spec.accuracy) out.result["accuracy"] = accuracy_json(solution, *spec.accuracy);
   annotate_result(out.result, spec, disc.meshes().finest(), solution.contact,
                   largest_strain(disc.assembler(), problem, solution.full));
   out.solution = std::move(solution.x);

@@ -41,6 +41,8 @@ SolverOptions read_solver_section(const nlohmann::json& j);
 
 ObjectRulePtr adaptivity_rule(const CaseReadOptions& options);
 AdaptivitySpec read_adaptivity_section(const nlohmann::json& j, const CaseLimits& limits);
+ObjectRulePtr accuracy_rule(const CaseReadOptions& options);
+AccuracySpec read_accuracy_section(const nlohmann::json& j, const CaseLimits& limits);
 ObjectRulePtr sweep_rule(const CaseReadOptions& options);
 /// Reads the case at each value of its sweep into spec.sweep_points; a value that makes the
 /// case invalid is an error at /sweep/values/<i> naming the field and the reason.

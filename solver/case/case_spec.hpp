@@ -104,6 +104,14 @@ struct AdaptivitySpec {
   double target = 0.0;
 };
 
+/// The `accuracy` section: solve, estimate the contact force's error from the forces of the
+/// levels solved so far, refine uniformly and solve again from the prolongated solution, until
+/// the estimate is below `force` or the next level would exceed `max_dofs` (docs/method.md §9).
+struct AccuracySpec {
+  double force = 1e-3;             ///< requested relative error of the contact force |F|
+  long long max_dofs = 2'000'000;  ///< a refinement that would give more DOFs is not made
+};
+
 /// A number of the case that takes several values (the case's `sweep`).
 struct SweepSpec {
   std::string pointer;  ///< JSON pointer into the case
@@ -120,6 +128,7 @@ struct CaseSpec {
   Weights weights;
   SolverOptions solver;  ///< the case's `solver` section (method, tolerance, smoothing, ...)
   std::optional<AdaptivitySpec> adaptivity;  ///< absent: uniform refinement only
+  std::optional<AccuracySpec> accuracy;      ///< absent: the levels of mesh.refinements only
   std::optional<SweepSpec> sweep;
   UnitsSpec units;  ///< the case's `units`; none declared by default (units.hpp)
   /// With a sweep: the case at each value, in order (without a sweep of their own).

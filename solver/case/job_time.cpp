@@ -4,6 +4,7 @@
 #include <cmath>
 #include <cstdio>
 
+#include "case/resource_estimate.hpp"
 #include "case/solver_methods.hpp"
 #include "case/time_estimate.hpp"
 
@@ -31,6 +32,11 @@ double point_seconds(const CaseSpec& point, long long unknowns, bool& bounded) {
     const long long largest = std::max(unknowns, point.adaptivity->max_dofs);
     seconds = solve_seconds(point.solver, largest) *
               std::min(kAdaptiveSolves, point.adaptivity->steps + 1.0);
+  }
+  // The accuracy loop's levels grow by 4: all of them take about 4/3 of the largest.
+  if (point.accuracy) {
+    const long long largest = accuracy_largest_unknowns(unknowns, point.accuracy->max_dofs);
+    seconds = solve_seconds(point.solver, largest) * 4.0 / 3.0;
   }
   const double limit = point.solver.time_limit_s;
   bounded = limit > 0 && limit < seconds;
@@ -124,11 +130,14 @@ CaseTimeEstimate estimate_case_time(const CaseSpec& spec, long long unknowns) {
   e.bounded_by_time_limit = all_bounded;
   const bool adaptive_size =
       spec.adaptivity && spec.adaptivity->steps > 0 && spec.adaptivity->max_dofs > unknowns;
+  const bool accuracy_size =
+      spec.accuracy && accuracy_largest_unknowns(unknowns, spec.accuracy->max_dofs) > unknowns;
   e.limited_by = all_bounded                                      ? "/solver/time_limit_s"
                  : spec.solver.method == SolverMethod::kPgs       ? "/solver/max_iterations"
                  : e.points > 1 && !spec.load_step_points.empty() ? "/load_steps"
                  : e.points > 1                                   ? "/sweep/values"
                  : adaptive_size                                  ? "/adaptivity/max_dofs"
+                 : accuracy_size                                  ? "/accuracy/max_dofs"
                                                                   : "/mesh/refinements";
   return e;
 }

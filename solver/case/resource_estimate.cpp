@@ -50,6 +50,12 @@ ResourceEstimate estimate_adaptive_resources(long long max_dofs, SolverMethod me
           "/adaptivity/max_dofs"};
 }
 
+long long accuracy_largest_unknowns(long long unknowns, long long max_dofs) {
+  long long largest = unknowns;
+  while (unknowns > 0 && 4 * largest <= max_dofs) largest *= 4;
+  return largest;
+}
+
 std::string describe(const ResourceEstimate& e, SolverMethod method) {
   static const char* names[] = {"mmg", "tnnmg", "pdas", "pgs"};
   char text[160];

@@ -48,6 +48,10 @@ ResourceEstimate estimate_resources(long long unknowns, bool exact, SolverMethod
 inline constexpr double kAdaptiveHierarchyFactor = 2.5;
 ResourceEstimate estimate_adaptive_resources(long long max_dofs, SolverMethod method);
 
+/// The unknowns of the finest level the accuracy loop may reach from `unknowns`: each uniform
+/// refinement multiplies them by about 4, and a level above `max_dofs` is not made.
+long long accuracy_largest_unknowns(long long unknowns, long long max_dofs);
+
 /// The estimate as one sentence ("about 1.2 GiB for 850 000 unknowns with mmg").
 std::string describe(const ResourceEstimate& estimate, SolverMethod method);
 

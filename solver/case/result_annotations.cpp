@@ -65,6 +65,13 @@ void annotate_result(json& result, const CaseSpec& spec, const Mesh& finest,
   for (auto& w : contact_warnings(spec, finest, contact)) warnings.push_back(std::move(w));
   if (auto w = large_strain_warning(strain.strain, strain.largest, strain.where))
     warnings.push_back(std::move(*w));
+  // A zero force has its own warning (no_contact); otherwise say that the request was not met.
+  if (result.contains("accuracy") && !result["accuracy"]["reached"].get<bool>() &&
+      result["accuracy"]["stop_reason"] != "no_force")
+    warnings.push_back({"accuracy_not_reached",
+                        "the requested force accuracy was not reached: " +
+                            result["accuracy"]["stop_message"].get<std::string>(),
+                        false});
   add_warnings(result, warnings);
 }
 

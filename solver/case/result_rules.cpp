@@ -4,12 +4,13 @@
 
 #include "case/result_rules.hpp"
 
+#include "case/result_rule_parts.hpp"
 #include "case/result_warnings.hpp"
 #include "case/solver_methods.hpp"
 
 namespace fosls {
 
-namespace {
+namespace result_parts {
 
 ValueRule count() { return integer_value(Range::non_negative()); }
 ValueRule number() { return number_value(); }
@@ -26,6 +27,12 @@ ObjectRulePtr object_rule(std::string title, std::string anchor, std::vector<Fie
   r->fields = std::move(fields);
   return r;
 }
+
+}  // namespace result_parts
+
+namespace {
+
+using namespace result_parts;
 
 ObjectRulePtr history_rule() {
   return object_rule(
@@ -362,62 +369,6 @@ ObjectRulePtr timing_rule() {
        output_field("total_s", number(), "s", "the whole run")});
 }
 
-ObjectRulePtr adaptive_step_rule() {
-  return object_rule(
-      "an adaptive step", "adaptive_step",
-      {output_field("step", count(), "1", "0 for the solve on the starting mesh, then 1, 2, ..."),
-       output_field("levels", count(), "1",
-                    "levels of the hierarchy: the coarse mesh, its uniform refinements and one "
-                    "per bisection step so far"),
-       output_field("dofs", count(), "1", "unknowns solved for"),
-       output_field("dofs_total", count(), "1", "all DOFs of the level (what max_dofs limits)"),
-       output_field("triangles", count(), "1", "triangles of the mesh"),
-       output_field("estimator", number(), "scaled",
-                    "the error estimator J^½ at this step's solution"),
-       output_field("force", tuple_value(number(), 2, "an array of 2 numbers [x, y]"), "S·L",
-                    "the contact force at this step's solution (as contact.force)"),
-       output_field("iterations", count(), "1", "iterations of this step's solve"),
-       output_field("converged", boolean_value(), "", "this step's solve met its stopping rule"),
-       output_field("converged_by", converged_by_value(), "",
-                    "the test this step's solve met, as stopping.converged_by"),
-       output_field("algebraic_error",
-                    one_of_value({number_value(), null_value()}, "a number or null"), "scaled",
-                    "this step's estimated algebraic error, as stopping.algebraic_error"),
-       output_field("marked", count(), "1",
-                    "triangles marked by Dörfler marking for the next step (0 on the last)"),
-       output_field("time_s", number(), "s",
-                    "assembly, solve, estimation, marking and refinement of this step")});
-}
-
-ObjectRulePtr adaptivity_result_rule() {
-  return object_rule(
-      "the adaptive run", "adaptivity_result",
-      {output_field("theta", number(), "1", "adaptivity.theta used"),
-       output_field("max_dofs", count(), "1", "adaptivity.max_dofs used"),
-       output_field("target", number(), "1",
-                    "adaptivity.target used: the loop stops once the estimator J^½ has fallen "
-                    "to target times its first value (a relative reduction, not an accuracy)"),
-       output_field("stop_reason",
-                    choice_value({"steps", "max_dofs", "target", "not_converged", "time_limit",
-                                  "cancelled"}),
-                    "",
-                    "why the loop stopped: the steps were made, the next refinement would exceed "
-                    "max_dofs, the estimator reached target (or vanished), a solve did not "
-                    "converge, solver.time_limit_s ran out, or the job was cancelled"),
-       output_field("steps", list_value(object_value(adaptive_step_rule()), "one per solve"), "",
-                    "every solve of the loop, the last one being the result's"),
-       output_field("estimator_reduction", number(), "1",
-                    "the last step's estimator J^½ over the first step's: the quantity target "
-                    "is compared with (a reduction of the estimator, not an accuracy)"),
-       output_field("last_force_change",
-                    one_of_value({number_value(), null_value()}, "a number or null"), "1",
-                    "|F_k − F_(k−1)| / |F_k| of the contact force in the last step: about how "
-                    "much one more step would change it (null with one step or a zero force)"),
-       output_field("stop_message", text(), "",
-                    "why the loop stopped, in words, with the estimator's reduction and what "
-                    "target means (the CLI prints it)")});
-}
-
 ObjectRulePtr memory_rule() {
   return object_rule(
       "the memory", "memory",
@@ -520,6 +471,10 @@ std::vector<FieldRule> solution_fields(const std::vector<std::string>& reasons) 
       optional_field("adaptivity", object_value(adaptivity_result_rule()), nullptr,
                      "the adaptive loop, step by step (only when the case has an adaptivity "
                      "section; the other fields describe its last step)"),
+      optional_field("accuracy", object_value(accuracy_result_rule()), nullptr,
+                     "the refinement towards the requested force accuracy, level by level "
+                     "(only when the case has an accuracy section; the other fields describe "
+                     "its last level)"),
       optional_field("sweep", object_value(sweep_rule(choice_value(reasons))), nullptr,
                      "a case with a sweep: every point's force and convergence; the other "
                      "fields are the last point's, except converged and stop_reason, which say "

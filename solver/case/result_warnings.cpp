@@ -182,7 +182,8 @@ std::vector<std::string> warning_codes() {
           "rounding_level",
           "coarse_corrections_shortened",
           "sweep_point_not_converged",
-          "load_step_not_converged"};
+          "load_step_not_converged",
+          "accuracy_not_reached"};
 }
 
 void add_warnings(json& result, const std::vector<ResultWarning>& warnings) {

@@ -83,6 +83,15 @@ void print_adaptivity(std::ostream& out, const json& a) {
       << a.value("stop_message", "stopped: " + a["stop_reason"].get<std::string>()) << '\n';
 }
 
+/// The levels of a run to a requested force accuracy, and whether it was reached.
+void print_accuracy(std::ostream& out, const json& a) {
+  const auto& steps = a["steps"];
+  if (steps.empty()) return;
+  out << "  force accuracy      " << (a["reached"].get<bool>() ? "reached" : "NOT reached")
+      << " after " << steps.size() << " levels (" << steps.front()["dofs"] << " to "
+      << steps.back()["dofs"] << " unknowns): " << a["stop_message"].get<std::string>() << '\n';
+}
+
 void print_sweep(std::ostream& out, const json& sweep) {
   out << "  sweep of " << sweep["pointer"].get<std::string>() << ":\n"
       << "    value          F_x            F_y            p_max          width          "
@@ -130,6 +139,7 @@ void print_result_summary(std::ostream& out, const json& r) {
       << " (scaled units)\n";
   if (r.contains("friction")) print_friction(out, r);
   if (r.contains("adaptivity")) print_adaptivity(out, r["adaptivity"]);
+  if (r.contains("accuracy")) print_accuracy(out, r["accuracy"]);
   if (r.contains("sweep")) print_sweep(out, r["sweep"]);
   if (converged && r.value("review_required", false))
     out << "REVIEW: converged, but the warnings above say the answer may be physically empty or "

@@ -146,7 +146,7 @@ int run_solve(const SolveOptions& o) {
     control.want_vtu = !o.vtu_path.empty();
     control.vtu_ascii = o.vtu_format == "ascii";
     control.on_iteration = [&progress](const IterationRecord& r) { progress.update(r); };
-    if (read.spec->adaptivity)
+    if (read.spec->adaptivity || read.spec->accuracy)
       control.on_step = [&progress](int step, long long dofs) { progress.start_step(step, dofs); };
     RunOutput output = run_case(*read.spec, control, read_options.limits);
     progress.finish();

@@ -1,0 +1,51 @@
+#pragma once
+// The error of the contact force estimated from the forces of successive uniform refinements
+// (docs/method.md §9): the change of the force from the last level, divided by ρ − 1, where ρ
+// is the ratio by which the change shrinks per refinement — the ratio of the last two changes
+// once three levels are solved, limited to [2, 4], and 2 before. A geometric sequence of
+// changes with ratio ρ leaves exactly that much to the limit.
+
+#include <array>
+#include <limits>
+#include <nlohmann/json.hpp>
+#include <vector>
+
+namespace fosls {
+
+struct CaseSolution;
+struct AccuracySpec;
+
+/// The ratio assumed before one is observed: the slowest the limits allow (order one in h, as
+/// near re-entrant corners), so that two levels never claim more than the last change.
+constexpr double kAssumedForceRatio = 2.0;
+/// The limits of an observed ratio: 4 is the lowest-order method's h² (a larger observed
+/// ratio is a lucky step, not a faster method); 2 is order one in h.
+/// With an accuracy section each level's solve stops at this fraction of its discretisation
+/// error unless the case gives one: the force's change between levels must be the
+/// discretisation's, and 0.1 (the default) leaves enough algebraic error in the force to spoil
+/// it (docs/validation.md §14).
+constexpr double kAccuracyDiscretisationFraction = 0.01;
+constexpr double kMinForceRatio = 2.0;
+constexpr double kMaxForceRatio = 4.0;
+
+struct ForceErrorEstimate {
+  static constexpr double kNone = std::numeric_limits<double>::quiet_NaN();
+  double change = kNone;  ///< |F_k − F_(k−1)| / |F_k|
+  double ratio = kNone;   ///< ρ used
+  bool ratio_observed = false;
+  double estimate = kNone;  ///< the estimated relative error of |F_k|; NaN: none yet
+  bool available() const { return estimate == estimate; }
+};
+
+/// The estimate after the last of `forces`, one per level, coarsest first, each level a uniform
+/// refinement of the one before. None with one level or a zero last force.
+ForceErrorEstimate estimate_force_error(const std::vector<std::array<double, 2>>& forces);
+
+/// Why the run stops after this level (`reached`, `no_force`), or empty to refine on.
+std::string accuracy_stop_reason(const ForceErrorEstimate& e, const AccuracySpec& spec,
+                                 const std::array<double, 2>& force);
+
+/// The result's `accuracy` object (docs/result-format.md).
+nlohmann::json accuracy_json(const CaseSolution& solution, const AccuracySpec& spec);
+
+}  // namespace fosls

@@ -1,0 +1,121 @@
+// The result's sections of the runs that refine: the adaptive loop's `adaptivity` and the
+// accuracy loop's `accuracy` (docs/result-format.md).
+
+#include "case/result_rule_parts.hpp"
+
+namespace fosls::result_parts {
+
+namespace {
+
+ObjectRulePtr adaptive_step_rule() {
+  return object_rule(
+      "an adaptive step", "adaptive_step",
+      {output_field("step", count(), "1", "0 for the solve on the starting mesh, then 1, 2, ..."),
+       output_field("levels", count(), "1",
+                    "levels of the hierarchy: the coarse mesh, its uniform refinements and one "
+                    "per bisection step so far"),
+       output_field("dofs", count(), "1", "unknowns solved for"),
+       output_field("dofs_total", count(), "1", "all DOFs of the level (what max_dofs limits)"),
+       output_field("triangles", count(), "1", "triangles of the mesh"),
+       output_field("estimator", number(), "scaled",
+                    "the error estimator J^½ at this step's solution"),
+       output_field("force", tuple_value(number(), 2, "an array of 2 numbers [x, y]"), "S·L",
+                    "the contact force at this step's solution (as contact.force)"),
+       output_field("iterations", count(), "1", "iterations of this step's solve"),
+       output_field("converged", boolean_value(), "", "this step's solve met its stopping rule"),
+       output_field("converged_by", converged_by_value(), "",
+                    "the test this step's solve met, as stopping.converged_by"),
+       output_field("algebraic_error",
+                    one_of_value({number_value(), null_value()}, "a number or null"), "scaled",
+                    "this step's estimated algebraic error, as stopping.algebraic_error"),
+       output_field("marked", count(), "1",
+                    "triangles marked by Dörfler marking for the next step (0 on the last)"),
+       output_field("time_s", number(), "s",
+                    "assembly, solve, estimation, marking and refinement of this step")});
+}
+
+}  // namespace
+
+ObjectRulePtr adaptivity_result_rule() {
+  return object_rule(
+      "the adaptive run", "adaptivity_result",
+      {output_field("theta", number(), "1", "adaptivity.theta used"),
+       output_field("max_dofs", count(), "1", "adaptivity.max_dofs used"),
+       output_field("target", number(), "1",
+                    "adaptivity.target used: the loop stops once the estimator J^½ has fallen "
+                    "to target times its first value (a relative reduction, not an accuracy)"),
+       output_field("stop_reason",
+                    choice_value({"steps", "max_dofs", "target", "not_converged", "time_limit",
+                                  "cancelled"}),
+                    "",
+                    "why the loop stopped: the steps were made, the next refinement would exceed "
+                    "max_dofs, the estimator reached target (or vanished), a solve did not "
+                    "converge, solver.time_limit_s ran out, or the job was cancelled"),
+       output_field("steps", list_value(object_value(adaptive_step_rule()), "one per solve"), "",
+                    "every solve of the loop, the last one being the result's"),
+       output_field("estimator_reduction", number(), "1",
+                    "the last step's estimator J^½ over the first step's: the quantity target "
+                    "is compared with (a reduction of the estimator, not an accuracy)"),
+       output_field("last_force_change",
+                    one_of_value({number_value(), null_value()}, "a number or null"), "1",
+                    "|F_k − F_(k−1)| / |F_k| of the contact force in the last step: about how "
+                    "much one more step would change it (null with one step or a zero force)"),
+       output_field("stop_message", text(), "",
+                    "why the loop stopped, in words, with the estimator's reduction and what "
+                    "target means (the CLI prints it)")});
+}
+
+namespace {
+
+ObjectRulePtr accuracy_step_rule() {
+  ValueRule maybe = one_of_value({number_value(), null_value()}, "a number or null");
+  return object_rule(
+      "a level of the accuracy loop", "accuracy_step",
+      {output_field("refinements", count(), "1", "uniform refinements of the coarse mesh"),
+       output_field("dofs", count(), "1", "unknowns solved for"),
+       output_field("dofs_total", count(), "1", "all DOFs of the level (what max_dofs limits)"),
+       output_field("force", tuple_value(number(), 2, "an array of 2 numbers [x, y]"), "S·L",
+                    "the contact force at this level's solution (as contact.force)"),
+       output_field("change", maybe, "1",
+                    "|F_k − F_(k−1)| / |F_k|: the force's change from the level before (null on "
+                    "the first level or for a zero force)"),
+       output_field("ratio", maybe, "1",
+                    "ρ, the factor by which the change is taken to shrink per refinement: the "
+                    "ratio of the last two changes limited to [2, 4], or 2 before two changes "
+                    "are known (docs/method.md §9)"),
+       output_field("ratio_observed", boolean_value(), "",
+                    "ratio is the observed one (false: the assumed 2)"),
+       output_field("estimate", maybe, "1",
+                    "the estimated relative error of |F| at this level, change / (ratio − 1)"),
+       output_field("iterations", count(), "1", "iterations of this level's solve"),
+       output_field("converged", boolean_value(), "", "this level's solve met its stopping rule"),
+       output_field("time_s", number(), "s", "assembly, solve and refinement of this level")});
+}
+
+}  // namespace
+
+ObjectRulePtr accuracy_result_rule() {
+  ValueRule maybe = one_of_value({number_value(), null_value()}, "a number or null");
+  return object_rule(
+      "the requested accuracy", "accuracy_result",
+      {output_field("force", number(), "1", "accuracy.force requested (relative)"),
+       output_field("max_dofs", count(), "1", "accuracy.max_dofs used"),
+       output_field("reached", boolean_value(), "",
+                    "the last level's estimated error is within accuracy.force"),
+       output_field("stop_reason",
+                    choice_value({"reached", "no_force", "max_dofs", "not_converged", "time_limit",
+                                  "cancelled"}),
+                    "",
+                    "why the refinement stopped: the accuracy was reached, the force is zero "
+                    "(no relative accuracy exists), the next level would exceed max_dofs, a "
+                    "solve did not converge, solver.time_limit_s ran out, or the job was "
+                    "cancelled"),
+       output_field("estimate", maybe, "1",
+                    "the last level's estimated relative error of |F| (null with one level)"),
+       output_field("steps", list_value(object_value(accuracy_step_rule()), "one per level"), "",
+                    "every level solved, coarsest first, the last one being the result's"),
+       output_field("stop_message", text(), "",
+                    "why the refinement stopped, in words (the CLI prints it)")});
+}
+
+}  // namespace fosls::result_parts

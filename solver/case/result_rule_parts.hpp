@@ -1,0 +1,24 @@
+#pragma once
+// Parts of the result's rules shared by result_rules.cpp and the files that describe one
+// section of the result each (result_refinement_rules.cpp).
+
+#include <string>
+#include <vector>
+
+#include "case/case_rules.hpp"
+
+namespace fosls::result_parts {
+
+ValueRule count();
+ValueRule number();
+ValueRule numbers(std::string what);
+ValueRule text();
+ValueRule converged_by_value();
+ObjectRulePtr object_rule(std::string title, std::string anchor, std::vector<FieldRule> fields);
+
+/// The `adaptivity` object of an adaptive run (result_refinement_rules.cpp).
+ObjectRulePtr adaptivity_result_rule();
+/// The `accuracy` object of a run to a requested force accuracy (result_refinement_rules.cpp).
+ObjectRulePtr accuracy_result_rule();
+
+}  // namespace fosls::result_parts

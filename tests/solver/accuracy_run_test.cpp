@@ -1,0 +1,79 @@
+// The accuracy loop as a user runs it (`"accuracy": {"force": tol}`): it refines uniformly from
+// mesh.refinements until the estimated force error is within tol, and the true error (against
+// the reference of docs/validation.md §12) is within twice that; a max_dofs that stops it first
+// says so with a warning; a zero force stops it at once.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+
+#include "../shipped_example.hpp"
+#include "../solved_case.hpp"
+
+namespace fosls {
+namespace {
+
+using nlohmann::json;
+
+constexpr double kHertzReference = 0.0125226;  // λ = 1, body-normal (validation.md §12)
+
+json hertz_to(double tolerance, int refinements) {
+  json j = testing::load_shipped_example("hertz");
+  j["mesh"]["refinements"] = refinements;
+  j["accuracy"] = {{"force", tolerance}};
+  return j;
+}
+
+bool has_warning(const json& r, const std::string& code) {
+  const auto& w = r.value("warning_details", json::array());
+  return std::any_of(w.begin(), w.end(), [&](const json& x) { return x["code"] == code; });
+}
+
+TEST(AccuracyRun, HertzReachesTheRequestedForceAccuracyByUniformLevels) {
+  const double tolerance = 2e-3;
+  const json r = testing::solved_case(hertz_to(tolerance, 1));
+  ASSERT_TRUE(r.contains("accuracy"));
+  const json& a = r["accuracy"];
+  EXPECT_TRUE(a["reached"].get<bool>()) << a["stop_message"];
+  EXPECT_EQ(a["stop_reason"], "reached");
+  EXPECT_LE(a["estimate"].get<double>(), tolerance);
+  const json& steps = a["steps"];
+  ASSERT_GE(steps.size(), 2u);
+  for (std::size_t k = 1; k < steps.size(); ++k) {
+    EXPECT_EQ(steps[k]["refinements"].get<int>(), 1 + static_cast<int>(k));
+    const double growth = steps[k]["dofs"].get<double>() / steps[k - 1]["dofs"].get<double>();
+    EXPECT_GT(growth, 3.5);  // a red refinement: about 4 times the unknowns
+    EXPECT_LE(steps[k]["iterations"].get<int>(), 20) << k;
+  }
+  // The result is the last level's, and its error is within twice the requested one.
+  EXPECT_EQ(r["levels"].get<int>(), steps.back()["refinements"].get<int>() + 1);
+  const double force = r["contact"]["force"][1].get<double>();
+  EXPECT_EQ(force, steps.back()["force"][1].get<double>());
+  EXPECT_LE(std::abs(force - kHertzReference) / kHertzReference, 2 * tolerance);
+  EXPECT_FALSE(has_warning(r, "accuracy_not_reached"));
+}
+
+TEST(AccuracyRun, MaxDofsStopsTheLoopWithAWarning) {
+  json j = hertz_to(1e-6, 1);
+  j["accuracy"]["max_dofs"] = 30'000;  // refinements 1, 2 and 3 (about 27 000) only
+  const json r = testing::solved_case(j);
+  const json& a = r["accuracy"];
+  EXPECT_FALSE(a["reached"].get<bool>());
+  EXPECT_EQ(a["stop_reason"], "max_dofs");
+  EXPECT_EQ(a["steps"].size(), 3u);
+  EXPECT_GT(a["estimate"].get<double>(), 1e-6);
+  EXPECT_TRUE(has_warning(r, "accuracy_not_reached"));
+}
+
+TEST(AccuracyRun, AZeroForceStopsAtOnce) {
+  json j = hertz_to(1e-3, 1);
+  j["boundary"]["contact"]["obstacle"]["point"] = {0, -1};  // far below the body
+  const json r = testing::solved_case(j);
+  EXPECT_EQ(r["accuracy"]["stop_reason"], "no_force");
+  EXPECT_EQ(r["accuracy"]["steps"].size(), 1u);
+  EXPECT_TRUE(has_warning(r, "no_contact"));
+  EXPECT_FALSE(has_warning(r, "accuracy_not_reached"));
+}
+
+}  // namespace
+}  // namespace fosls

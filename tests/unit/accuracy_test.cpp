@@ -1,0 +1,144 @@
+// The `accuracy` section and the estimate of the contact force's error from successive uniform
+// refinements (solver/case/force_accuracy.hpp): the estimate is exact on a geometric sequence of
+// forces, the ratio is observed once three levels exist and limited to [2, 4], and the section
+// is read with its defaults, refused with what it cannot be combined with, and checked value by
+// value.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+
+#include "case/case_reader.hpp"
+#include "case/force_accuracy.hpp"
+
+namespace fosls {
+namespace {
+
+using nlohmann::json;
+using Forces = std::vector<std::array<double, 2>>;
+
+/// F_k = F∞ + C ρ^(−k): the error at level k is C ρ^(−k).
+Forces geometric(double limit, double c, double rho, int levels) {
+  Forces f;
+  for (int k = 0; k < levels; ++k) f.push_back({0.0, limit + c * std::pow(rho, -k)});
+  return f;
+}
+
+TEST(ForceErrorEstimate, NoneWithOneLevelOrAZeroForce) {
+  EXPECT_FALSE(estimate_force_error({}).available());
+  EXPECT_FALSE(estimate_force_error({{0.0, 1.0}}).available());
+  EXPECT_FALSE(estimate_force_error({{0.0, 1.0}, {0.0, 0.0}}).available());
+}
+
+TEST(ForceErrorEstimate, TwoLevelsAssumeTheRatio) {
+  const ForceErrorEstimate e = estimate_force_error({{0.0, 1.1}, {0.0, 1.0}});
+  ASSERT_TRUE(e.available());
+  EXPECT_FALSE(e.ratio_observed);
+  EXPECT_EQ(e.ratio, kAssumedForceRatio);
+  EXPECT_NEAR(e.change, 0.1, 1e-12);
+  EXPECT_NEAR(e.estimate, 0.1 / (kAssumedForceRatio - 1), 1e-12);
+}
+
+TEST(ForceErrorEstimate, ExactOnAGeometricSequenceWithAnObservedRatio) {
+  for (double rho : {2.0, 2.5, 3.7, 4.0}) {
+    const Forces f = geometric(2.0, 0.3, rho, 4);
+    const ForceErrorEstimate e = estimate_force_error(f);
+    EXPECT_TRUE(e.ratio_observed);
+    EXPECT_NEAR(e.ratio, rho, 1e-9);
+    const double true_error = std::abs(f.back()[1] - 2.0) / f.back()[1];
+    EXPECT_NEAR(e.estimate, true_error, 1e-9 * true_error) << "rho " << rho;
+  }
+}
+
+TEST(ForceErrorEstimate, TheObservedRatioIsLimitedToTwoAndFour) {
+  // A fast step (ratio 10) does not make the estimate optimistic beyond h²; a slow one (1.2)
+  // does not make it larger than the last change.
+  EXPECT_EQ(estimate_force_error(geometric(1.0, 0.5, 10.0, 3)).ratio, kMaxForceRatio);
+  EXPECT_EQ(estimate_force_error(geometric(1.0, 0.5, 1.2, 3)).ratio, kMinForceRatio);
+  // The force's direction counts: a change of x at an unchanged |F| is a change.
+  const ForceErrorEstimate turned = estimate_force_error({{0.0, 1.0}, {0.1, 1.0}});
+  EXPECT_NEAR(turned.change, 0.1 / std::hypot(0.1, 1.0), 1e-12);
+}
+
+TEST(ForceErrorEstimate, UnchangedForcesAreExact) {
+  const ForceErrorEstimate e = estimate_force_error({{0.0, 1.0}, {0.0, 1.0}, {0.0, 1.0}});
+  EXPECT_EQ(e.estimate, 0.0);
+}
+
+TEST(AccuracyStopReason, ReachedNoForceOrGoOn) {
+  AccuracySpec spec;
+  spec.force = 1e-3;
+  ForceErrorEstimate e;
+  EXPECT_EQ(accuracy_stop_reason(e, spec, {0.0, 1.0}), "");  // no estimate yet
+  EXPECT_EQ(accuracy_stop_reason(e, spec, {0.0, 0.0}), "no_force");
+  e.estimate = 2e-3;
+  EXPECT_EQ(accuracy_stop_reason(e, spec, {0.0, 1.0}), "");
+  e.estimate = 1e-3;
+  EXPECT_EQ(accuracy_stop_reason(e, spec, {0.0, 1.0}), "reached");
+}
+
+json contact_case() {
+  return json::parse(R"({
+    "mesh": {"builtin": "square", "size": 0.5, "refinements": 1},
+    "material": {"mu": 1, "lambda": 1},
+    "boundary": {
+      "top": {"type": "dirichlet", "displacement": [0, -0.01]},
+      "bottom": {"type": "contact", "obstacle": {"type": "plane", "point": [0, 0],
+                                                 "normal": [0, 1]}}
+    }
+  })");
+}
+
+bool has_error(const CaseReadResult& r, const std::string& pointer, const std::string& word) {
+  return std::any_of(r.errors.begin(), r.errors.end(), [&](const CaseError& e) {
+    return e.pointer == pointer && e.detail.find(word) != std::string::npos;
+  });
+}
+
+TEST(AccuracySection, ReadWithDefaultsAndStopsEachLevelAtTheDiscretisationError) {
+  json j = contact_case();
+  EXPECT_FALSE(read_case(j).spec->accuracy);
+  j["accuracy"] = {{"force", 1e-4}};
+  const CaseReadResult r = read_case(j);
+  ASSERT_TRUE(r.spec && r.spec->accuracy);
+  EXPECT_EQ(r.spec->accuracy->force, 1e-4);
+  EXPECT_EQ(r.spec->accuracy->max_dofs, AccuracySpec{}.max_dofs);
+  EXPECT_EQ(r.spec->solver.stopping, StoppingRule::kDiscretisation);
+  EXPECT_EQ(r.spec->solver.discretisation_fraction, kAccuracyDiscretisationFraction);
+  j["solver"] = {{"discretisation_fraction", 0.2}};
+  EXPECT_EQ(read_case(j).spec->solver.discretisation_fraction, 0.2);
+  j["solver"] = {{"tolerance", 1e-9}};
+  EXPECT_EQ(read_case(j).spec->solver.stopping, StoppingRule::kKktResidual);
+}
+
+TEST(AccuracySection, BadValuesNameTheirField) {
+  for (const json& force : {json(0), json(-1e-3), json(0.7), json("0.1")}) {
+    json j = contact_case();
+    j["accuracy"] = {{"force", force}};
+    EXPECT_TRUE(has_error(read_case(j), "/accuracy/force", "")) << force;
+  }
+  json missing = contact_case();
+  missing["accuracy"] = json::object();
+  EXPECT_TRUE(has_error(read_case(missing), "/accuracy/force", ""));
+  json small = contact_case();
+  small["accuracy"] = {{"force", 1e-3}, {"max_dofs", 0}};
+  EXPECT_TRUE(has_error(read_case(small), "/accuracy/max_dofs", ""));
+}
+
+TEST(AccuracySection, RefusedWithAdaptivitySweepAndLoadSteps) {
+  json adaptive = contact_case();
+  adaptive["accuracy"] = {{"force", 1e-3}};
+  adaptive["adaptivity"] = json::object();
+  EXPECT_TRUE(has_error(read_case(adaptive), "/accuracy", "adaptivity"));
+  json sweep = contact_case();
+  sweep["accuracy"] = {{"force", 1e-3}};
+  sweep["sweep"] = {{"pointer", "/material/mu"}, {"values", {1, 2}}};
+  EXPECT_TRUE(has_error(read_case(sweep), "/accuracy", "sweep"));
+  json steps = contact_case();
+  steps["accuracy"] = {{"force", 1e-3}};
+  steps["load_steps"] = {{{"/material/mu", 2}}};
+  EXPECT_TRUE(has_error(read_case(steps), "/accuracy", "load_steps"));
+}
+
+}  // namespace
+}  // namespace fosls
