@@ -51,12 +51,20 @@ ForceErrorEstimate estimate_force_error(const std::vector<std::array<double, 2>>
   const double change = distance(forces[k - 1], forces[k - 2]);
   e.change = change / size;
   e.ratio = kAssumedForceRatio;
-  if (k >= 3 && change > 0) {
-    e.ratio =
-        std::clamp(distance(forces[k - 2], forces[k - 3]) / change, kMinForceRatio, kMaxForceRatio);
-    e.ratio_observed = true;
-  }
   e.estimate = e.change / (e.ratio - 1.0);
+  if (k < 3 || !(change > 0)) return e;
+  const double previous = distance(forces[k - 2], forces[k - 3]);
+  e.ratio = std::clamp(previous / change, kMinForceRatio, kMaxForceRatio);
+  e.ratio_observed = true;
+  e.estimate = e.change / (e.ratio - 1.0);
+  // The changes' components along F_k: of opposite signs, the errors cancel in a change.
+  const auto along = [&](const std::array<double, 2>& a, const std::array<double, 2>& b) {
+    return (a[0] - b[0]) * forces[k - 1][0] + (a[1] - b[1]) * forces[k - 1][1];
+  };
+  if (along(forces[k - 1], forces[k - 2]) * along(forces[k - 2], forces[k - 3]) < 0) {
+    e.monotone = false;
+    e.estimate = std::max(change, previous) / size;
+  }
   return e;
 }
 
@@ -77,6 +85,7 @@ nlohmann::json accuracy_json(const CaseSolution& solution, const AccuracySpec& s
                      {"change", number_or_null(s.force_error.change)},
                      {"ratio", number_or_null(s.force_error.ratio)},
                      {"ratio_observed", s.force_error.ratio_observed},
+                     {"monotone", s.force_error.monotone},
                      {"estimate", number_or_null(s.force_error.estimate)},
                      {"iterations", s.iterations},
                      {"converged", s.converged},

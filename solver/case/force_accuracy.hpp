@@ -3,7 +3,8 @@
 // (docs/method.md §9): the change of the force from the last level, divided by ρ − 1, where ρ
 // is the ratio by which the change shrinks per refinement — the ratio of the last two changes
 // once three levels are solved, limited to [2, 4], and 2 before. A geometric sequence of
-// changes with ratio ρ leaves exactly that much to the limit.
+// changes with ratio ρ leaves exactly that much to the limit. A force whose last two changes
+// have opposite signs is not on such a sequence: its estimate is the larger change.
 
 #include <array>
 #include <limits>
@@ -33,6 +34,10 @@ struct ForceErrorEstimate {
   double change = kNone;  ///< |F_k − F_(k−1)| / |F_k|
   double ratio = kNone;   ///< ρ used
   bool ratio_observed = false;
+  /// The last two changes point the same way along F_k. When they do not, the force is not
+  /// converging monotonically (errors of two signs cancel in a change), and the estimate is the
+  /// larger of the two changes instead.
+  bool monotone = true;
   double estimate = kNone;  ///< the estimated relative error of |F_k|; NaN: none yet
   bool available() const { return estimate == estimate; }
 };

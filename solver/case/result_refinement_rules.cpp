@@ -85,8 +85,13 @@ ObjectRulePtr accuracy_step_rule() {
                     "are known (docs/method.md §9)"),
        output_field("ratio_observed", boolean_value(), "",
                     "ratio is the observed one (false: the assumed 2)"),
+       output_field("monotone", boolean_value(), "",
+                    "the last two changes of the force point the same way (false: they have "
+                    "opposite signs, errors cancel in a change, and the estimate is the larger "
+                    "of the two changes)"),
        output_field("estimate", maybe, "1",
-                    "the estimated relative error of |F| at this level, change / (ratio − 1)"),
+                    "the estimated relative error of |F| at this level: change / (ratio − 1), or "
+                    "the larger of the last two changes when not monotone"),
        output_field("iterations", count(), "1", "iterations of this level's solve"),
        output_field("converged", boolean_value(), "", "this level's solve met its stopping rule"),
        output_field("time_s", number(), "s", "assembly, solve and refinement of this level")});

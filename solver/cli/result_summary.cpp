@@ -113,6 +113,28 @@ void print_sweep(std::ostream& out, const json& sweep) {
   }
 }
 
+/// One line per load step: its force, stick zone and iterations (the summary above is the last
+/// step's).
+void print_load_steps(std::ostream& out, const json& load_steps) {
+  out << "  load steps (the lines above are the last step's):\n"
+      << "    step  F_x            F_y            stick length   iterations\n";
+  for (const auto& s : load_steps["steps"]) {
+    const std::string step = std::to_string(s["step"].get<int>());
+    out << "    " << step << std::string(step.size() < 6 ? 6 - step.size() : 1, ' ');
+    const json& contact = s["contact"];
+    const json stick = contact.contains("stick_zone") ? contact["stick_zone"]["length"] : json();
+    for (const json& v : {contact["force"][0], contact["force"][1], stick}) {
+      const std::string text = v.is_null() ? "-" : g(v);
+      out << text << std::string(text.size() < 15 ? 15 - text.size() : 1, ' ');
+    }
+    out << s["iterations"].get<int>()
+        << (s["converged"].get<bool>()
+                ? ""
+                : "  NOT converged (" + s["stop_reason"].get<std::string>() + ")")
+        << '\n';
+  }
+}
+
 /// What the outcome line adds when the discretisation rule or the rounding level stopped the
 /// solve.
 std::string stopped_by(const json& r) {
@@ -141,6 +163,7 @@ void print_result_summary(std::ostream& out, const json& r) {
   if (r.contains("adaptivity")) print_adaptivity(out, r["adaptivity"]);
   if (r.contains("accuracy")) print_accuracy(out, r["accuracy"]);
   if (r.contains("sweep")) print_sweep(out, r["sweep"]);
+  if (r.contains("load_steps")) print_load_steps(out, r["load_steps"]);
   if (converged && r.value("review_required", false))
     out << "REVIEW: converged, but the warnings above say the answer may be physically empty or "
            "wrong (exit code 4)\n";
