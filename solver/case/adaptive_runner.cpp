@@ -49,6 +49,9 @@ void solve_finest(CaseSolution& solution, const CaseSpec& spec, bool from_start,
   options.check_definiteness = first_step;
   const LevelHierarchy hierarchy =
       method_info(options.method).needs_hierarchy ? disc.build_level_hierarchy() : LevelHierarchy{};
+  // Without an iterate to return, a limit that passed while the hierarchy was built is still a
+  // limit of the set-up (as in the assembly), not a solve stopped at its initial projection.
+  if (!from_start) observer.deadline.check("building the level hierarchy");
   const auto t_assembled = Clock::now();
   solution.hierarchy_mib = peak_rss_mib();
   solution.report =
