@@ -38,8 +38,10 @@ struct A0Solver {
 /// the A0 inner product; full reorthogonalisation (the steps are few and the vectors short).
 /// Stops once the smallest Ritz value's residual is below 1e-3 of it (the limit is then within
 /// about 0.1 %), or after 80 steps. Ritz values lie inside the spectrum, so an early stop errs
-/// towards a larger c3*; the rule's factor ½ covers that.
-double smallest_pencil_eigenvalue(const SparseMatrix& a0, const SparseMatrix& b, int& steps) {
+/// towards a larger c3*; the rule's factor ½ covers that. `broke_down` is set when a Lanczos
+/// vector lost its A0 norm to rounding (A0 nearly singular: the iteration cannot go on).
+double smallest_pencil_eigenvalue(const SparseMatrix& a0, const SparseMatrix& b, int& steps,
+                                  bool& broke_down) {
   const int n = static_cast<int>(a0.rows());
   A0Solver solver(a0);
   if (solver.llt.info() != Eigen::Success) return -std::numeric_limits<double>::infinity();
@@ -54,7 +56,10 @@ double smallest_pencil_eigenvalue(const SparseMatrix& a0, const SparseMatrix& b,
   for (steps = 0; steps < max_steps; ++steps) {
     Vector a0v = a0 * v;
     const double norm = std::sqrt(v.dot(a0v));
-    if (!(norm > 0)) break;
+    if (!(norm > 0)) {
+      broke_down = true;
+      break;
+    }
     v /= norm, a0v /= norm;
     if (steps > 0) beta.push_back(norm);
     basis.push_back(v), a0_basis.push_back(a0v);
@@ -78,6 +83,26 @@ double smallest_pencil_eigenvalue(const SparseMatrix& a0, const SparseMatrix& b,
   return theta;
 }
 
+/// The largest c3 in [10⁻⁶, 1] for which A0 + c3 B has a Cholesky factorisation, by bisection
+/// in log c3 to 0.3 %: the definition of c3* itself, used where Lanczos cannot run. Frictional
+/// contact on a body that is mostly contact boundary (the wedge of docs/validation.md §13) leaves
+/// σ_nn and σ_nt free on most of the boundary, and A0 is then too near singular for A0⁻¹.
+double definiteness_limit_by_bisection(const SparseMatrix& a0, const SparseMatrix& b) {
+  const auto definite = [&](double c3) {
+    const SparseMatrix a = a0 + c3 * b;
+    Eigen::SimplicialLLT<SparseMatrix> llt(a);
+    return llt.info() == Eigen::Success;
+  };
+  if (definite(1.0)) return std::numeric_limits<double>::infinity();  // the rule caps c3 anyway
+  if (!definite(1e-6)) return 0.0;
+  double lo = -6.0, hi = 0.0;  // log10 c3
+  for (int k = 0; k < 12; ++k) {
+    const double mid = 0.5 * (lo + hi);
+    (definite(std::pow(10.0, mid)) ? lo : hi) = mid;
+  }
+  return std::pow(10.0, lo);
+}
+
 }  // namespace
 
 ContactWeightLimit contact_weight_limit(const MeshHierarchy& meshes, const ProblemData& data,
@@ -96,8 +121,11 @@ ContactWeightLimit contact_weight_limit(const MeshHierarchy& meshes, const Probl
   out.dofs = chosen->num_free();
   const SparseMatrix a0 = functional_matrix(*chosen, data, 0.0);
   const SparseMatrix b = functional_matrix(*chosen, data, 1.0) - a0;
-  const double mu_min = smallest_pencil_eigenvalue(a0, b, out.lanczos_steps);
+  bool broke_down = false;
+  const double mu_min = smallest_pencil_eigenvalue(a0, b, out.lanczos_steps, broke_down);
   out.limit = mu_min < 0 ? -1.0 / mu_min : std::numeric_limits<double>::infinity();
+  // A breakdown before a negative Ritz value says nothing about definiteness.
+  if (broke_down && !(mu_min < 0)) out.limit = definiteness_limit_by_bisection(a0, b);
   return out;
 }
 
