@@ -67,9 +67,18 @@ void check_friction_support(const CaseSpec& spec, std::vector<CaseError>& errors
                       "uniformly with mesh.refinements"});
 }
 
-/// What the accuracy loop is not combined with: it chooses the levels itself.
-void check_accuracy_support(const nlohmann::json& j, std::vector<CaseError>& errors) {
+/// What the accuracy loop is not combined with (it chooses the levels itself), and that it
+/// asks for a contact force.
+void check_accuracy_support(const nlohmann::json& j, const CaseSpec& spec,
+                            std::vector<CaseError>& errors) {
   if (!j.contains("accuracy")) return;
+  const bool contact = std::any_of(spec.boundary.begin(), spec.boundary.end(), [](const auto& b) {
+    return b.second.type == BoundaryCondition::Type::kContact;
+  });
+  if (!contact)
+    errors.push_back({"/accuracy",
+                      "accuracy is asked of the contact force, and the case has no contact "
+                      "condition; refine with mesh.refinements instead"});
   for (const char* other : {"adaptivity", "load_steps", "sweep"})
     if (j.contains(other))
       errors.push_back({"/accuracy", std::string("accuracy cannot be combined with ") + other +
@@ -117,7 +126,7 @@ CaseReadResult read_case(const nlohmann::json& j, const CaseReadOptions& options
   if (spec.accuracy && !gives_fraction)
     spec.solver.discretisation_fraction = kAccuracyDiscretisationFraction;
   check_friction_support(spec, result.errors);
-  check_accuracy_support(j, result.errors);
+  check_accuracy_support(j, spec, result.errors);
   if (!result.errors.empty()) return result;
   if (j.contains("load_steps")) {
     read_load_steps_section(j, options, spec, result.errors);

@@ -135,7 +135,7 @@ TEST(AccuracySection, BadValuesNameTheirField) {
   EXPECT_TRUE(has_error(read_case(small), "/accuracy/max_dofs", ""));
 }
 
-TEST(AccuracySection, RefusedWithAdaptivitySweepAndLoadSteps) {
+TEST(AccuracySection, RefusedWithAdaptivitySweepLoadStepsAndWithoutContact) {
   json adaptive = contact_case();
   adaptive["accuracy"] = {{"force", 1e-3}};
   adaptive["adaptivity"] = json::object();
@@ -148,6 +148,10 @@ TEST(AccuracySection, RefusedWithAdaptivitySweepAndLoadSteps) {
   steps["accuracy"] = {{"force", 1e-3}};
   steps["load_steps"] = {{{"/material/mu", 2}}};
   EXPECT_TRUE(has_error(read_case(steps), "/accuracy", "load_steps"));
+  json no_contact = contact_case();
+  no_contact["accuracy"] = {{"force", 1e-3}};
+  no_contact["boundary"]["bottom"] = {{"type", "neumann"}, {"traction", {0, 0}}};
+  EXPECT_TRUE(has_error(read_case(no_contact), "/accuracy", "no contact"));
 }
 
 }  // namespace
