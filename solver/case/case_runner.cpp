@@ -269,14 +269,32 @@ RunOutput run_point(const CaseSpec& spec, const RunControl& control, const CaseL
 
 }  // namespace
 
+int most_solves(const CaseSpec& spec) {
+  if (spec.accuracy) return 0;
+  const std::size_t points = !spec.load_step_points.empty() ? spec.load_step_points.size() + 1
+                             : !spec.sweep_points.empty()   ? spec.sweep_points.size()
+                                                            : 1;
+  const int per_point = spec.adaptivity ? spec.adaptivity->steps + 1 : 1;
+  return static_cast<int>(points) * per_point;
+}
+
 RunOutput run_case(const CaseSpec& spec, const RunControl& control, const CaseLimits& limits) {
+  // Every solve of every point starts with on_step (solve_case_levels), so counting its calls
+  // numbers the solves of the whole run; the series runners need not know.
+  RunControl counted = control;
+  int solves = 0;
+  if (control.on_solve)
+    counted.on_step = [&control, &solves, most = most_solves(spec)](int step, long long dofs) {
+      if (control.on_step) control.on_step(step, dofs);
+      control.on_solve(solves++, most);
+    };
   try {
     if (!spec.load_step_points.empty())
-      return run_load_steps(spec, control, [&limits](const CaseSpec& step, const RunControl& c) {
+      return run_load_steps(spec, counted, [&limits](const CaseSpec& step, const RunControl& c) {
         return run_point(step, c, limits);
       });
-    if (spec.sweep_points.empty()) return run_point(spec, control, limits);
-    return run_sweep(spec, control, [&limits](const CaseSpec& point, const RunControl& c) {
+    if (spec.sweep_points.empty()) return run_point(spec, counted, limits);
+    return run_sweep(spec, counted, [&limits](const CaseSpec& point, const RunControl& c) {
       return run_point(point, c, limits);
     });
   } catch (const TimeLimitReached& e) {

@@ -23,6 +23,11 @@ struct RunControl {
   /// Called before each solve of an adaptive run (and before the one solve of a uniform run)
   /// with the step, 0 first, and the unknowns of its level.
   std::function<void(int step, long long dofs)> on_step;
+  /// Called before every solve of the run, after on_step: its index in the whole run, 0 first
+  /// (a load step, sweep point, adaptive or accuracy level; a sweep of adaptive runs counts
+  /// every level of every point), and most_solves(spec). For progress across a multi-solve run,
+  /// whose iteration count starts again at each solve.
+  std::function<void(int solve, int solves)> on_solve;
   /// When set and it becomes true, the solve stops at the next iteration and the result
   /// says "cancelled": true.
   const std::atomic<bool>* cancel = nullptr;
@@ -47,6 +52,11 @@ struct RunOutput {
   Vector solution;                  ///< the final iterate (unknowns of the QP), for continuation
   std::vector<Point> displacement;  ///< u at each vertex of the finest mesh, for load steps
 };
+
+/// How many solves run_case makes at most: load steps + 1, sweep points, adaptivity.steps + 1
+/// per point (a product for a sweep of adaptive runs); 0 when not known before the run (an
+/// accuracy loop stops once its estimate is within the tolerance, at a level it finds).
+int most_solves(const CaseSpec& spec);
 
 /// Everything that validation can say about a case JSON, including what needs the coarse mesh
 /// (mesh errors, groups named in `boundary` that the mesh does not have, DOF limits).

@@ -6,6 +6,8 @@
 
 #include <cmath>
 #include <string>
+#include <utility>
+#include <vector>
 
 #include "../shipped_example.hpp"
 #include "../solved_case.hpp"
@@ -99,6 +101,24 @@ TEST(LoadSteps, FrictionMeasuresEachStepsSlipFromThePreviousStep) {
     EXPECT_LE(fx, 0.3 * s["contact"]["force"][1].get<double>() * 1.05);
     previous = fx;
   }
+}
+
+// RunControl::on_solve numbers the steps for progress, out of most_solves; watching them
+// changes no result.
+TEST(LoadSteps, OnSolveNumbersTheStepsAndChangesNoResult) {
+  const CaseReadResult read = read_case(cattaneo(0.3));
+  ASSERT_TRUE(read.spec);
+  EXPECT_EQ(most_solves(*read.spec), 3);
+  std::vector<std::pair<int, int>> solves;
+  RunControl control;
+  control.on_solve = [&](int solve, int most) { solves.emplace_back(solve, most); };
+  const json watched = run_case(*read.spec, control).result;
+  EXPECT_EQ(solves, (std::vector<std::pair<int, int>>{{0, 3}, {1, 3}, {2, 3}}));
+  const json plain = run_case(*read.spec).result;
+  EXPECT_EQ(watched["contact"], plain["contact"]);
+  for (std::size_t k = 0; k < 3; ++k)
+    EXPECT_EQ(watched["load_steps"]["steps"][k]["iterations"],
+              plain["load_steps"]["steps"][k]["iterations"]);
 }
 
 }  // namespace

@@ -208,5 +208,24 @@ TEST(RunControls, ADisplacementWithBothComponentsNullIsRefused) {
   EXPECT_NE(read.errors[0].detail.find("neumann"), std::string::npos);
 }
 
+// How many solves a run makes at most (a job's progress.steps): one per sweep point, and
+// adaptivity.steps + 1 per adaptive run; not known for an accuracy loop.
+TEST(RunControls, MostSolvesCountsPointsAndAdaptiveSteps) {
+  auto most = [](const json& j) {
+    const CaseReadResult read = read_case(j);
+    EXPECT_TRUE(read.spec) << (read.errors.empty() ? "" : read.errors[0].detail);
+    return read.spec ? most_solves(*read.spec) : -1;
+  };
+  json j = hertz(1);
+  EXPECT_EQ(most(j), 1);
+  j["sweep"] = {{"pointer", "/material/mu"}, {"values", {1, 2, 3}}};
+  EXPECT_EQ(most(j), 3);
+  j["adaptivity"] = {{"steps", 4}};
+  EXPECT_EQ(most(j), 15);
+  json accurate = hertz(1);
+  accurate["accuracy"] = {{"force", 1e-3}};
+  EXPECT_EQ(most(accurate), 0);
+}
+
 }  // namespace
 }  // namespace fosls
