@@ -85,8 +85,17 @@ JobRunOutcome run_case_job(const nlohmann::json& case_json, const JobRunContext&
   RunControl control;
   control.cancel = &context.cancel;
   control.want_vtu = true;
+  // Both callbacks come from the solving thread, on_solve before each solve's iterations.
+  JobProgress progress;
+  control.on_solve = [&progress](int solve, int solves) {
+    progress.step = solve;
+    progress.steps = solves;
+  };
   control.on_iteration = [&](const IterationRecord& r) {
-    context.report_progress(JobProgress{r.iteration, r.kkt_residual, r.energy});
+    progress.iteration = r.iteration;
+    progress.kkt_residual = r.kkt_residual;
+    progress.energy = r.energy;
+    context.report_progress(progress);
   };
   try {
     RunOutput output = run_case(*read.spec, control, options.limits);

@@ -84,9 +84,12 @@ nlohmann::json job_to_json(const Job& job) {
         {"cancel", self + "/cancel"}}},
   };
   if (job.progress) {
-    j["progress"] = {{"iteration", job.progress->iteration},
-                     {"kkt_residual", finite_or_null(job.progress->kkt_residual)},
-                     {"energy", finite_or_null(job.progress->energy)}};
+    const JobProgress& p = *job.progress;
+    j["progress"] = {{"iteration", p.iteration},
+                     {"kkt_residual", finite_or_null(p.kkt_residual)},
+                     {"energy", finite_or_null(p.energy)},
+                     {"step", p.step},
+                     {"steps", p.steps > 0 ? nlohmann::json(p.steps) : nlohmann::json(nullptr)}};
   } else {
     j["progress"] = nullptr;
   }
@@ -109,11 +112,24 @@ nlohmann::json job_json_schema() {
   json progress = {
       {"type", "object"},
       {"additionalProperties", false},
-      {"required", {"iteration", "kkt_residual", "energy"}},
+      {"required", {"iteration", "kkt_residual", "energy", "step", "steps"}},
       {"properties",
-       {{"iteration", {{"type", "integer"}, {"minimum", 0}}},
+       {{"iteration",
+         {{"type", "integer"}, {"minimum", 0}, {"description", "counted from 0 in each solve"}}},
         {"kkt_residual", nullable({{"type", "number"}})},
-        {"energy", nullable({{"type", "number"}, {"description", "the scaled functional J"}})}}}};
+        {"energy", nullable({{"type", "number"}, {"description", "the scaled functional J"}})},
+        {"step",
+         {{"type", "integer"},
+          {"minimum", 0},
+          {"description",
+           "the solve running, 0 first: the load step, sweep point, or adaptive or accuracy "
+           "level (every level of every point for a sweep with adaptivity); 0 for one solve"}}},
+        {"steps", nullable({{"type", "integer"},
+                            {"minimum", 1},
+                            {"description",
+                             "how many solves the job makes at most: load steps + 1, sweep "
+                             "points, adaptivity.steps + 1 (times the points); null when not "
+                             "known (accuracy: the loop stops at a level it finds)"}})}}}};
   json time = {{"type", "string"}, {"format", "date-time"}};
   return {
       {"type", "object"},

@@ -28,11 +28,15 @@ std::optional<JobState> parse_job_state(std::string_view text);
 /// Finished states never change again.
 bool is_finished(JobState state);
 
-/// The solver's last reported iteration (throttled while it runs).
+/// The solver's last reported iteration (throttled while it runs). A job with load steps, a
+/// sweep or adaptive levels runs several solves, each counting its iterations from 0: `step`
+/// says which one (RunControl::on_solve, solver/case/case_runner.hpp).
 struct JobProgress {
   int iteration = 0;
   double kkt_residual = 0.0;
   double energy = 0.0;
+  int step = 0;   ///< the solve running, 0 first
+  int steps = 0;  ///< how many solves the job makes at most; 0 when not known
 };
 
 /// How a solve that produced a result stopped, copied from the result's `converged` and

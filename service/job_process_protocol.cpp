@@ -15,7 +15,8 @@ std::string framed(char tag, const std::string& bytes) {
 
 std::string progress_message(const JobProgress& p) {
   char line[128];
-  std::snprintf(line, sizeof line, "P %d %.17g %.17g\n", p.iteration, p.kkt_residual, p.energy);
+  std::snprintf(line, sizeof line, "P %d %.17g %.17g %d %d\n", p.iteration, p.kkt_residual,
+                p.energy, p.step, p.steps);
   return line;
 }
 
@@ -52,8 +53,9 @@ bool JobProcessReader::parse_one() {
   const char tag = header[0];
   if (tag == 'P') {
     JobProgress p;
-    if (std::sscanf(header.c_str(), "P %d %lf %lf", &p.iteration, &p.kkt_residual, &p.energy) !=
-        3) {
+    const int read = std::sscanf(header.c_str(), "P %d %lf %lf %d %d", &p.iteration,
+                                 &p.kkt_residual, &p.energy, &p.step, &p.steps);
+    if (read != 3 && read != 5) {
       malformed_ = "a progress line that does not parse: " + header;
       return false;
     }

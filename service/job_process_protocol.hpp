@@ -3,10 +3,13 @@
 // progress lines while it runs, then how the run ended. Framed with byte counts, so a VTU of
 // any size passes through without being scanned:
 //
-//   P <iteration> <kkt_residual> <energy>\n        progress (any number)
+//   P <iteration> <kkt_residual> <energy> <step> <steps>\n    progress (any number)
 //   S <n>\n<n bytes: result JSON>V <m>\n<m bytes: VTU>E\n        succeeded
 //   F <n>\n<n bytes: message>E\n                  failed (a case problem found while running)
 //   C\nE\n                                         cancelled (from inside the run)
+//
+// A progress line without <step> <steps> (a solve process from before they existed) reads as
+// step 0 of an unknown number; a reader from then ignores them (it scans three numbers).
 
 #include <cstddef>
 #include <functional>

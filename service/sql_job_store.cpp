@@ -13,7 +13,13 @@ namespace {
 // The columns a Job is read from (read_job), in every statement that returns jobs.
 constexpr const char* kJobColumns =
     "id, name, state, created_at, started_at, finished_at, attempts, progress_iteration, "
-    "progress_kkt_residual, progress_energy, error, cancel_requested, converged, stop_reason";
+    "progress_kkt_residual, progress_energy, progress_step, progress_steps, error, "
+    "cancel_requested, converged, stop_reason";
+
+// What a new attempt (a claim, a requeue after a crash) clears: the last attempt's progress.
+constexpr const char* kNoProgress =
+    "progress_iteration = NULL, progress_kkt_residual = NULL, progress_energy = NULL, "
+    "progress_step = NULL, progress_steps = NULL";
 
 std::string select_job_sql(const std::string& where) {
   return std::string("SELECT ") + kJobColumns + " FROM jobs " + where;
@@ -44,6 +50,9 @@ Job read_job(const SqlRow& row) {
     // NaN and infinities are stored as NULL, which real() reads as NaN.
     p.kkt_residual = row.real("progress_kkt_residual");
     p.energy = row.real("progress_energy");
+    // NULL: written before the columns existed (step 0 of a number not known).
+    p.step = static_cast<int>(row.optional_int64("progress_step").value_or(0));
+    p.steps = static_cast<int>(row.optional_int64("progress_steps").value_or(0));
     job.progress = p;
   }
   job.error = row.text("error");
@@ -66,6 +75,12 @@ CREATE TABLE worker_budgets (
   max_job_memory BIGINT NOT NULL,
   seen_at BIGINT NOT NULL
 );
+)sql"},
+    // Which solve of a multi-solve job (load steps, sweep, adaptivity) the progress is of.
+    // Rows from before stay NULL: read as step 0 of a number not known.
+    {0, "progress per solve of a multi-solve job", R"sql(
+ALTER TABLE jobs ADD COLUMN progress_step INTEGER;
+ALTER TABLE jobs ADD COLUMN progress_steps INTEGER;
 )sql"},
 };
 
@@ -241,11 +256,11 @@ std::optional<ClaimedJob> SqlJobStore::claim_next(const ClaimRequest& request) {
   // claims from many workers take different jobs. SQLite: the write lock serialises claims.
   const SqlRows rows = c->query(
       "UPDATE jobs SET state = 'running', attempts = attempts + 1, started_at = {now_ms}, "
-      "lease_owner = ?1, lease_expires_at = {now_ms} + ?2, progress_iteration = NULL, "
-      "progress_kkt_residual = NULL, progress_energy = NULL "
-      "WHERE state = 'queued' AND id = (SELECT id FROM jobs WHERE state = 'queued' "
-      "ORDER BY id LIMIT 1 {skip_locked}) RETURNING " +
-          std::string(kJobColumns) + ", case_json",
+      "lease_owner = ?1, lease_expires_at = {now_ms} + ?2, " +
+          std::string(kNoProgress) +
+          " WHERE state = 'queued' AND id = (SELECT id FROM jobs WHERE state = 'queued' "
+          "ORDER BY id LIMIT 1 {skip_locked}) RETURNING " +
+          kJobColumns + ", case_json",
       {request.worker_id, static_cast<std::int64_t>(request.lease_duration.count())});
   if (rows.empty()) return std::nullopt;  // another worker was faster
   tx.commit();
@@ -271,11 +286,13 @@ LeaseStatus SqlJobStore::renew_lease(const Lease& lease, std::chrono::millisecon
 void SqlJobStore::update_progress(const Lease& lease, const JobProgress& progress) {
   // A single autocommit statement: no transaction stays open while the solver runs.
   std::vector<SqlValue> params = lease_params(lease);
-  params.insert(params.end(), {static_cast<std::int64_t>(progress.iteration), progress.kkt_residual,
-                               progress.energy});
+  params.insert(params.end(),
+                {static_cast<std::int64_t>(progress.iteration), progress.kkt_residual,
+                 progress.energy, static_cast<std::int64_t>(progress.step),
+                 progress.steps > 0 ? SqlValue(std::int64_t{progress.steps}) : SqlValue{}});
   connection()->query(
       "UPDATE jobs SET progress_iteration = ?4, progress_kkt_residual = ?5, "
-      "progress_energy = ?6 WHERE " +
+      "progress_energy = ?6, progress_step = ?7, progress_steps = ?8 WHERE " +
           std::string(kLeaseHolder),
       params);
 }
@@ -383,11 +400,10 @@ RecoveryReport SqlJobStore::recover(int max_attempts, bool only_expired) {
       "--max-attempts); it is not retried again'" +
           finished + abandoned + " AND cancel_requested = 0 AND attempts >= ?1 RETURNING id",
       limit));
-  report.requeued = ids(c->query(
-      "UPDATE jobs SET state = 'queued', started_at = NULL, progress_iteration = NULL, "
-      "progress_kkt_residual = NULL, progress_energy = NULL" +
-          finished + abandoned + " AND cancel_requested = 0 AND attempts < ?1 RETURNING id",
-      limit));
+  report.requeued = ids(c->query("UPDATE jobs SET state = 'queued', started_at = NULL, " +
+                                     std::string(kNoProgress) + finished + abandoned +
+                                     " AND cancel_requested = 0 AND attempts < ?1 RETURNING id",
+                                 limit));
   tx.commit();
   return report;
 }

@@ -17,7 +17,7 @@ TEST(JobProcessProtocol, ReadsProgressAndResultInPiecesOfAnySize) {
   done.result_json = R"({"converged": true, "text": "P 1 2 3\nE\n"})";
   done.vtu = std::string(100000, 'v') + "\nE\n";
   const std::string stream = progress_message({1, 0.5, -2.25}) +
-                             progress_message({2, 1e-300, 1.0 / 3}) + outcome_message(done);
+                             progress_message({2, 1e-300, 1.0 / 3, 2, 3}) + outcome_message(done);
   for (std::size_t piece : {std::size_t{1}, std::size_t{7}, std::size_t{4096}, stream.size()}) {
     std::vector<JobProgress> seen;
     JobProcessReader reader([&](const JobProgress& p) { seen.push_back(p); });
@@ -31,7 +31,22 @@ TEST(JobProcessProtocol, ReadsProgressAndResultInPiecesOfAnySize) {
     EXPECT_EQ(seen[1].iteration, 2);
     EXPECT_EQ(seen[1].kkt_residual, 1e-300);
     EXPECT_EQ(seen[1].energy, 1.0 / 3);  // round trip to the last bit
+    EXPECT_EQ(seen[1].step, 2);
+    EXPECT_EQ(seen[1].steps, 3);
   }
+}
+
+// A solve process from before steps were reported writes three numbers: step 0 of a number
+// not known.
+TEST(JobProcessProtocol, AProgressLineWithoutStepsIsTheFirstOfUnknownMany) {
+  std::vector<JobProgress> seen;
+  JobProcessReader reader([&](const JobProgress& p) { seen.push_back(p); });
+  reader.feed("P 4 0.5 -1\nC\nE\n");
+  ASSERT_TRUE(reader.outcome()) << reader.malformed();
+  ASSERT_EQ(seen.size(), 1u);
+  EXPECT_EQ(seen[0].iteration, 4);
+  EXPECT_EQ(seen[0].step, 0);
+  EXPECT_EQ(seen[0].steps, 0);
 }
 
 TEST(JobProcessProtocol, FailuresCancelAndGarbage) {
@@ -50,7 +65,7 @@ TEST(JobProcessProtocol, FailuresCancelAndGarbage) {
   ASSERT_TRUE(b.outcome());
   EXPECT_EQ(b.outcome()->kind, JobRunOutcome::Kind::kCancelled);
 
-  for (const char* garbage : {"hello\n", "S abc\n", "P 1 x y\n", "\n"}) {
+  for (const char* garbage : {"hello\n", "S abc\n", "P 1 x y\n", "P 1 2 3 4\n", "\n"}) {
     JobProcessReader c(nullptr);
     c.feed(garbage);
     EXPECT_FALSE(c.outcome()) << garbage;

@@ -129,6 +129,42 @@ TEST_P(JobStoreContract, NonFiniteProgressIsStoredAsUnknown) {
   EXPECT_TRUE(std::isnan(job->progress->energy));
 }
 
+// Which solve of a multi-solve job the progress is of; a database from before the columns
+// (the latest step undone) is migrated, its progress read as step 0 of a number not known.
+TEST_P(JobStoreContract, ProgressStepsRoundTripAndSurviveAnOlderSchema) {
+  const auto id = submit("{}");
+  const Lease lease = store().claim_next(claim_as())->lease;
+  store().update_progress(lease, JobProgress{4, 0.5, -1.0, 2, 3});
+  const auto job = store().find(id);
+  ASSERT_TRUE(job->progress);
+  EXPECT_EQ(job->progress->step, 2);
+  EXPECT_EQ(job->progress->steps, 3);
+  EXPECT_EQ(job_to_json(*job)["progress"]["steps"], 3);
+  store().update_progress(lease, JobProgress{1, 0.5, -1.0, 5, 0});  // steps not known
+  EXPECT_EQ(job_to_json(*store().find(id))["progress"]["steps"], nullptr);
+
+  store_.reset();
+  {
+    auto c = db_->connect();
+    const auto latest = c->query("SELECT max(version) AS v FROM schema_migrations")[0].int64("v");
+    c->exec(
+        "ALTER TABLE jobs DROP COLUMN progress_step; "
+        "ALTER TABLE jobs DROP COLUMN progress_steps; "
+        "DELETE FROM schema_migrations WHERE version = " +
+        std::to_string(latest));
+    if (db_->kind() == "sqlite") c->exec("PRAGMA user_version = " + std::to_string(latest - 1));
+  }
+  store_ = db_->open();
+  const auto migrated = store().find(id);
+  ASSERT_TRUE(migrated && migrated->progress);
+  EXPECT_EQ(migrated->progress->iteration, 1);
+  EXPECT_EQ(migrated->progress->step, 0);
+  EXPECT_EQ(job_to_json(*migrated)["progress"]["steps"], nullptr);
+  store().update_progress(lease, JobProgress{2, 0.5, -1.0, 1, 3});
+  EXPECT_EQ(job_to_json(*store().find(id))["progress"]["step"], 1);
+  EXPECT_TRUE(store().complete_succeeded(lease, "{}", ""));
+}
+
 TEST_P(JobStoreContract, OnlyTheLeaseHolderChangesARunningJob) {
   const auto id = submit("{}");
   const Lease lease = store().claim_next(claim_as("w1"))->lease;

@@ -109,6 +109,8 @@ TEST(ServiceConvergence, ASweepIsSolvedPointByPoint) {
   const auto id = svc.submit(swept);
   const json done = svc.wait_state(id, "succeeded");
   EXPECT_EQ(done["converged"], true);
+  EXPECT_EQ(done["progress"]["step"], 1);  // the last progress is the last point's
+  EXPECT_EQ(done["progress"]["steps"], 2);
   const json result = json::parse(cli.Get(path(id, "result"))->body);
   ASSERT_EQ(result["sweep"]["points"].size(), 2u);
   EXPECT_EQ(result["sweep"]["points"][1]["value"], -0.04);
@@ -121,6 +123,33 @@ TEST(ServiceConvergence, ASweepIsSolvedPointByPoint) {
   auto refused = svc.post(swept);
   testing::expect_problem(refused, 422);
   EXPECT_EQ(json::parse(refused->body)["errors"][0]["pointer"], "/sweep/values/1");
+}
+
+// Load steps run as one job whose progress says which step runs, out of how many; the
+// iteration count starts again at each step. Steps seen while polling never go back.
+TEST(ServiceConvergence, LoadStepsReportWhichStepRuns) {
+  Service svc(1);
+  json stepped = testing::example("cattaneo_mindlin");
+  stepped["mesh"]["refinements"] = 1;
+  const auto id = svc.submit(stepped);
+  int last_seen = 0;
+  bool went_back = false;
+  const json done = svc.wait_for(id, [&](const json& j) {
+    if (j["progress"].is_object()) {
+      const int step = j["progress"]["step"];
+      went_back = went_back || step < last_seen;
+      last_seen = step;
+      EXPECT_EQ(j["progress"]["steps"], 3) << j.dump();
+    }
+    return testing::is_finished(j);
+  });
+  EXPECT_EQ(done["state"], "succeeded");
+  EXPECT_FALSE(went_back);
+  ASSERT_TRUE(done["progress"].is_object()) << done.dump();
+  EXPECT_EQ(done["progress"]["step"], 2);  // the last of load steps + 1 solves
+  EXPECT_EQ(done["progress"]["steps"], 3);
+  const json result = json::parse(svc.client().Get(path(id, "result"))->body);
+  EXPECT_EQ(result["load_steps"]["count"], 3);
 }
 
 }  // namespace

@@ -101,12 +101,13 @@ TEST(SqliteJobStore, NewDatabaseRecordsItsVersionAndVacuumsIncrementally) {
   TempDir dir;
   const std::string path = dir.file("jobs.db");
   { SqliteJobStore store(path); }
-  // 1–3 SQLite's own steps, 4 the first step both stores share (worker budgets).
-  EXPECT_EQ(sql_int(path, "SELECT max(version) FROM schema_migrations"), 4);
-  EXPECT_EQ(sql_int(path, "PRAGMA user_version"), 4);
+  // 1–3 SQLite's own steps, 4 and 5 the steps both stores share (worker budgets, progress
+  // steps).
+  EXPECT_EQ(sql_int(path, "SELECT max(version) FROM schema_migrations"), 5);
+  EXPECT_EQ(sql_int(path, "PRAGMA user_version"), 5);
   EXPECT_EQ(sql_int(path, "PRAGMA auto_vacuum"), 2);  // incremental
   { SqliteJobStore again(path); }                     // opening again changes nothing
-  EXPECT_EQ(sql_int(path, "SELECT count(*) FROM schema_migrations"), 4);
+  EXPECT_EQ(sql_int(path, "SELECT count(*) FROM schema_migrations"), 5);
 }
 
 // A file written by the first release (schema version 1, no auto-vacuum, VTU as text, a job
@@ -140,7 +141,7 @@ PRAGMA user_version = 1;
 
   SqliteJobStore store(path);
   EXPECT_EQ(sql_int(path, "PRAGMA auto_vacuum"), 2);  // converted by VACUUM
-  EXPECT_EQ(sql_int(path, "SELECT max(version) FROM schema_migrations"), 4);
+  EXPECT_EQ(sql_int(path, "SELECT max(version) FROM schema_migrations"), 5);
   EXPECT_EQ(store.result_json(1),
             R"({"old":true,"converged":false,"stop_reason":"max_iterations"})");
   // Convergence is copied from results stored before the columns existed.
@@ -155,6 +156,8 @@ PRAGMA user_version = 1;
   ASSERT_TRUE(claimed);
   EXPECT_EQ(claimed->job.id, 2);
   EXPECT_EQ(claimed->job.attempts, 2);
+  store.update_progress(claimed->lease, JobProgress{3, 0.1, -1.0, 1, 2});
+  EXPECT_EQ(store.find(2)->progress->steps, 2);
   EXPECT_TRUE(store.complete_succeeded(claimed->lease, "{}", "<VTKFile new=\"1\"/>"));
   EXPECT_EQ(store.vtu(2), "<VTKFile new=\"1\"/>");
   EXPECT_EQ(store.submit(make_job("3"), kUnlimited).job->id, 3);

@@ -9,8 +9,10 @@
 #include <string>
 
 #include "postgres_cluster.hpp"
+#include "postgres_connection.hpp"
 #include "postgres_job_store.hpp"
 #include "request_checks.hpp"
+#include "sqlite_connection.hpp"
 #include "sqlite_job_store.hpp"
 #include "temp_dir.hpp"
 
@@ -55,6 +57,12 @@ class StoreUnderTest {
   std::unique_ptr<JobStore> open() const {
     if (kind_ == "postgresql") return std::make_unique<PostgresJobStore>(url_);
     return std::make_unique<SqliteJobStore>(dir_.file("jobs.db"));
+  }
+
+  /// A plain connection to the same data, for SQL a test writes itself (an older schema).
+  std::unique_ptr<SqlConnection> connect() const {
+    if (kind_ == "postgresql") return std::make_unique<PostgresConnection>(url_);
+    return std::make_unique<SqliteConnection>(dir_.file("jobs.db"), 5000);
   }
 
   const std::string& kind() const { return kind_; }
