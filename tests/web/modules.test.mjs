@@ -15,6 +15,7 @@ import { autoMagnification, colourAt, colourScale, maxDisplacement } from '../..
 import { MESH_FIELDS, probeSummary } from '../../web/app/mesh_fields.js';
 import { contactCsv, sweepCsv } from '../../web/app/csv_export.js';
 import { adaptiveRows, STEP_COLUMNS } from '../../web/app/adaptive_steps.js';
+import { stepPrefix } from '../../web/app/format.js';
 import {
   changesText, commonCoefficient, forceAxes, frictionNumbers, frictionText, loadStepColumns, loadStepRows, stateRuns, stickZoneText,
 } from '../../web/app/friction.js';
@@ -369,4 +370,12 @@ test('the key numbers a frictional, load-stepped result adds', () => {
     ['Load steps', '2 (1 not converged)'],
   ]);
   assert.deepEqual(frictionNumbers({ contact: { x: [0] } }), [], 'frictionless: nothing added');
+});
+
+test('a job of several solves says which one runs, counted from 1, out of how many if known', () => {
+  assert.equal(stepPrefix({ iteration: 3, step: 1, steps: 3 }), 'step 2 of 3, ');
+  assert.equal(stepPrefix({ iteration: 3, step: 2, steps: null }), 'step 3, ');  // accuracy
+  assert.equal(stepPrefix({ iteration: 3, step: 0, steps: 1 }), '');  // a single solve
+  assert.equal(stepPrefix({ iteration: 3 }), '');  // a service from before steps
+  assert.equal(stepPrefix(null), '');
 });

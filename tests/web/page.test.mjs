@@ -583,13 +583,16 @@ test('an invalid case shows each error next to its field', async () => {
 
 test('a running job can be cancelled and then deleted from the list', async () => {
   // Projected Gauss–Seidel on a fine mesh with an unreachable tolerance runs for minutes (its own
-  // time limit keeps it within the service's default --max-job-seconds).
+  // time limit keeps it within the service's default --max-job-seconds). Two sweep points: the
+  // list and the view say which solve runs (the first, until the cancel).
   const row = await submitHertzVariant('slow_hertz', 5, (c) => {
-    c.solver = { method: 'pgs', tolerance: 1e-15, max_iterations: 100000, time_limit_s: 3000 };
+    c.solver = { method: 'pgs', tolerance: 1e-15, max_iterations: 100000, time_limit_s: 1500 };
+    c.sweep = { pointer: '/boundary/top/displacement/1', values: [-0.01, -0.02] };
   });
   // While it runs, the view plots the residuals the polls have seen.
   await row.locator('.state-running').waitFor();
-  await page.locator('#job-summary', { hasText: /^Running: iteration \d+, KKT residual/ }).waitFor();
+  await page.locator('#job-summary', { hasText: /^Running: step 1 of 2, iteration \d+, KKT residual/ }).waitFor();
+  await row.locator('td.progress', { hasText: /^step 1 of 2, it \d+, KKT/ }).waitFor();
   await page.waitForFunction(() => Number(document.querySelector('#live-plot')?.dataset.points) >= 2);
   assert.equal(await page.locator('#live-figure').isVisible(), true);
   await page.screenshot({ path: join(screenshots, 'running.png') });

@@ -18,3 +18,15 @@ export function setStatus(element, text, kind = '') {
   element.classList.toggle('ok', kind === 'ok');
   element.classList.toggle('error', kind === 'error');
 }
+
+/**
+ * "step k of n, " (counted from 1) to go before the iteration of a job that runs several solves
+ * (load steps, a sweep, adaptive or accuracy levels), whose iteration count starts again at
+ * each; n is left out when not known (accuracy). '' for a single solve, or a service that does
+ * not report steps.
+ */
+export function stepPrefix(progress) {
+  if (!progress || typeof progress.step !== 'number' || progress.steps === 1) return '';
+  const of = typeof progress.steps === 'number' ? ` of ${progress.steps}` : '';
+  return `step ${progress.step + 1}${of}, `;
+}

@@ -1,12 +1,12 @@
 // The job list's table: one row per job with its state badge, progress and the Cancel or
 // Delete button; the job's name opens it.
-import { fmt } from './format.js';
+import { fmt, stepPrefix } from './format.js';
 
 export const isActive = (job) => job.state === 'queued' || job.state === 'running';
 
 function progressText(job) {
   if (!job.progress) return job.state === 'queued' ? 'waiting' : '';
-  return `it ${job.progress.iteration}, KKT ${fmt(job.progress.kkt_residual, 2)}`;
+  return `${stepPrefix(job.progress)}it ${job.progress.iteration}, KKT ${fmt(job.progress.kkt_residual, 2)}`;
 }
 
 // A solve stopped by max_iterations "succeeded" but its answer is the last iterate, not a

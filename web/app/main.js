@@ -4,7 +4,7 @@ import { CaseEditor } from './case_editor.js';
 import { hertzForResult } from './hertz.js';
 import { hasTresca } from './friction.js';
 import { parseVtu } from './vtu.js';
-import { fmt, setStatus } from './format.js';
+import { fmt, setStatus, stepPrefix } from './format.js';
 import { MESH_FIELDS } from './mesh_fields.js';
 import { MeshViewer } from './mesh_viewer.js';
 import { drawCharts, drawMeshView, renderSummary } from './job_result.js';
@@ -232,9 +232,12 @@ function destroyLiveChart() {
 }
 
 // While a job runs the service reports only its latest iteration; the samples seen by the
-// polls make a coarse residual history until the full one arrives with the result.
+// polls make a coarse residual history until the full one arrives with the result. A job of
+// several solves counts iterations from 0 in each: the chart follows the one running.
 function updateLiveChart(job) {
   const view = state.view;
+  const step = job.progress?.step ?? 0;
+  if (view.samplesStep !== step) Object.assign(view, { samples: [], samplesStep: step, liveDrawn: 0 });
   const samples = (view.samples ??= []);
   const last = samples[samples.length - 1];
   if (job.progress && (!last || job.progress.iteration > last.iteration)) {
@@ -272,7 +275,7 @@ function showJob(job) {
       break;
     case 'running':
       summary.textContent = job.progress
-        ? `Running: iteration ${job.progress.iteration}, KKT residual ${fmt(job.progress.kkt_residual, 3)}.`
+        ? `Running: ${stepPrefix(job.progress)}iteration ${job.progress.iteration}, KKT residual ${fmt(job.progress.kkt_residual, 3)}.`
         : 'Running: setting up (mesh, assembly).';
       updateLiveChart(job);
       break;
