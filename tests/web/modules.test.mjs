@@ -16,6 +16,7 @@ import { MESH_FIELDS, probeSummary } from '../../web/app/mesh_fields.js';
 import { contactCsv, sweepCsv } from '../../web/app/csv_export.js';
 import { adaptiveRows, STEP_COLUMNS } from '../../web/app/adaptive_steps.js';
 import { stepPrefix } from '../../web/app/format.js';
+import { accuracyNumber } from '../../web/app/accuracy.js';
 import {
   changesText, commonCoefficient, forceAxes, frictionNumbers, frictionText, loadStepColumns, loadStepRows, stateRuns, stickZoneText,
 } from '../../web/app/friction.js';
@@ -378,4 +379,16 @@ test('a job of several solves says which one runs, counted from 1, out of how ma
   assert.equal(stepPrefix({ iteration: 3, step: 0, steps: 1 }), '');  // a single solve
   assert.equal(stepPrefix({ iteration: 3 }), '');  // a service from before steps
   assert.equal(stepPrefix(null), '');
+});
+
+test('a run to a requested force accuracy says whether it got there, and with which estimate', () => {
+  const steps = [{ refinements: 2 }, { refinements: 3 }, { refinements: 4 }];
+  const [reached, why] = accuracyNumber({ force: 1e-3, reached: true, stop_reason: 'reached', estimate: 6.5e-4, steps, stop_message: 'the estimated …' });
+  assert.equal(reached, 'reached: estimated 0.065 % of 0.1 % asked (refinements 2–4)');
+  assert.equal(why, 'the estimated …');
+  const [missed] = accuracyNumber({ force: 1e-5, reached: false, stop_reason: 'max_dofs', estimate: 2e-4, steps });
+  assert.equal(missed, 'NOT reached (max_dofs): estimated 0.02 % of 0.001 % asked (refinements 2–4)');
+  const [zero] = accuracyNumber({ force: 1e-3, reached: false, stop_reason: 'no_force', estimate: null, steps: [{ refinements: 2 }] });
+  assert.equal(zero, 'NOT reached (no_force): estimated — of 0.1 % asked (refinements 2)');
+  assert.equal(accuracyNumber(undefined), null);
 });

@@ -4,6 +4,7 @@
 // meshError, hertz, compare, caseDoc, loadStep, charts}; `plots` the chart modules (null when
 // uPlot is missing).
 import * as api from './api.js';
+import { accuracyNumber } from './accuracy.js';
 import { adaptiveRows, renderStepTable } from './adaptive_steps.js';
 import { contactCsv, sweepCsv } from './csv_export.js';
 import { fmt, seconds } from './format.js';
@@ -72,6 +73,8 @@ export function renderSummary(job, view) {
     addNumber(dl, 'Adaptive steps', `${adaptivity.steps?.length ?? 0} (stopped: ${adaptivity.stop_reason ?? '—'})`,
       `Dörfler marking θ = ${adaptivity.theta}; the numbers here are the last step's. ${adaptivity.stop_message ?? ''}`);
   }
+  const accuracy = accuracyNumber(r.accuracy);
+  if (accuracy) addNumber(dl, 'Force accuracy', ...accuracy);
   addNumber(dl, 'Active contact edges', `${contact.active?.filter(Boolean).length ?? 0} of ${contact.active?.length ?? 0}`);
   for (const [term, value, title] of frictionNumbers(r, view.caseDoc)) addNumber(dl, term, value, title);
   addNumber(dl, 'Time', `${seconds(r.timing?.total_s)} (solve ${seconds(r.timing?.solve_s)})`,
