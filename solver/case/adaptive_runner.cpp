@@ -134,6 +134,12 @@ NextLevel refine_all(const CaseSolution& solution, const AccuracySpec& a) {
   return next;
 }
 
+std::vector<std::array<double, 2>> forces(const std::vector<AdaptiveStepRecord>& steps) {
+  std::vector<std::array<double, 2>> f;
+  for (const AdaptiveStepRecord& s : steps) f.push_back(s.force);
+  return f;
+}
+
 /// Why the loop stops after this step's solve (before refining), or empty to go on.
 std::string stop_after_solve(const CaseSolution& solution, const CaseSpec& spec, int step,
                              double first_estimator) {
@@ -143,14 +149,8 @@ std::string stop_after_solve(const CaseSolution& solution, const CaseSpec& spec,
   if (r.cancelled) return "cancelled";
   if (r.time_limited) return "time_limit";
   if (!r.converged) return "not_converged";
-  const AdaptiveStepRecord& last = solution.steps.back();
-  return accuracy_stop_reason(last.force_error, *spec.accuracy, last.force);
-}
-
-std::vector<std::array<double, 2>> forces(const std::vector<AdaptiveStepRecord>& steps) {
-  std::vector<std::array<double, 2>> f;
-  for (const AdaptiveStepRecord& s : steps) f.push_back(s.force);
-  return f;
+  return accuracy_stop_reason(solution.steps.back().force_error, *spec.accuracy,
+                              forces(solution.steps));
 }
 
 }  // namespace
@@ -180,7 +180,9 @@ CaseSolution solve_case_levels(MeshHierarchy meshes, const ProblemData& data, co
     solution.steps.push_back(step_record(solution, step));
     AdaptiveStepRecord& record = solution.steps.back();
     record.estimator = estimate.estimator();
-    if (spec.accuracy) record.force_error = estimate_force_error(forces(solution.steps));
+    // An unconverged level's force is not the level's: no estimate from it (the loop stops).
+    if (spec.accuracy && solution.report.converged)
+      record.force_error = estimate_force_error(forces(solution.steps));
     if (step == 0) first_estimator = record.estimator;
     auto finish_step = [&] { solution.steps.back().time_s = seconds(t0, Clock::now()); };
     if (!spec.adaptivity && !spec.accuracy) {

@@ -65,6 +65,14 @@ std::vector<CaseError> size_problems(const CaseSpec& spec, long long unknowns, b
   // After meshing, a gmsh mesh is counted for the first time (its admission used an estimate).
   const std::string built =
       exact && gmsh_outline(spec.mesh) ? "counted on the coarse mesh gmsh built: " : "";
+  if (spec.accuracy && spec.accuracy->max_dofs < kAccuracyLeastGrowth * unknowns)
+    errors.push_back({"/accuracy/max_dofs",
+                      std::to_string(spec.accuracy->max_dofs) +
+                          " leaves no second level: the first (" +
+                          std::to_string(spec.mesh.refinements) + " refinements) has " +
+                          (exact ? "" : "about ") + std::to_string(unknowns) +
+                          " DOFs and the next about 4 times as many, and the error estimate needs "
+                          "two levels; raise accuracy.max_dofs or lower mesh.refinements"});
   if (unknowns > limits.max_dofs)
     errors.push_back(
         {"/mesh/refinements",
@@ -158,7 +166,8 @@ std::optional<CaseError> check_memory_budget(const ResourceEstimate& estimate, S
   const bool adaptive = estimate.limited_by == "/adaptivity/max_dofs";
   const bool accuracy = estimate.limited_by == "/accuracy/max_dofs";
   std::string advice = adaptive   ? "lower adaptivity.max_dofs"
-                       : accuracy ? "lower accuracy.max_dofs (the loop then stops there)"
+                       : accuracy ? "lower accuracy.max_dofs (the loop stops below it, without the "
+                                    "accuracy if it needs more), or ask a larger accuracy.force"
                                   : "use fewer refinements or a coarser mesh.size";
   // Another method only if it converges on fine meshes (not pgs) and fits; the accuracy loop's
   // largest level is the thing to lower, whatever the method.

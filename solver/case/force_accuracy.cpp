@@ -20,21 +20,34 @@ nlohmann::json number_or_null(double v) {
 
 std::string num(double v) { return sentence_number(v, 3); }
 
-std::string stop_message(const std::string& reason, const ForceErrorEstimate& e,
+/// The last level's estimate, or what the levels before it said when it has none.
+std::string estimate_text(const std::vector<AdaptiveStepRecord>& steps) {
+  if (steps.empty()) return "no level solved";
+  const ForceErrorEstimate& e = steps.back().force_error;
+  if (e.available()) return "the estimated relative error of the force is " + num(e.estimate);
+  for (auto s = steps.rbegin() + 1; s != steps.rend(); ++s)
+    if (s->force_error.available())
+      return "the last level has no estimate (its solve did not converge); the level before, "
+             "at " +
+             std::to_string(s->levels - 1) + " refinements, had " + num(s->force_error.estimate);
+  return steps.back().converged ? "no error estimate yet (it needs two levels)"
+                                : "no error estimate (the level's solve did not converge)";
+}
+
+std::string stop_message(const std::string& reason, const std::vector<AdaptiveStepRecord>& steps,
                          const AccuracySpec& spec) {
-  const std::string estimated =
-      e.available() ? "the estimated relative error of the force is " + num(e.estimate)
-                    : "no error estimate yet (it needs two levels)";
+  const std::string estimated = estimate_text(steps);
   const std::string requested = " (accuracy.force = " + num(spec.force) + ")";
   if (reason == "reached") return estimated + ", within accuracy.force = " + num(spec.force);
   if (reason == "no_force")
-    return "the contact force is zero, so it has no relative error to reach; check that the "
-           "obstacle touches the body";
+    return "the contact force is zero on two levels, so it has no relative error to reach; "
+           "check that the obstacle touches the body";
   if (reason == "max_dofs")
     return "the next refinement would exceed accuracy.max_dofs = " + std::to_string(spec.max_dofs) +
            "; " + estimated + requested;
   if (reason == "not_converged")
-    return "a solve did not converge, so its force is not the level's; " + estimated + requested;
+    return "the last level's solve did not converge, so its force is not the level's; " +
+           estimated + requested;
   if (reason == "time_limit") return "solver.time_limit_s ran out; " + estimated + requested;
   if (reason == "cancelled") return "the run was cancelled; " + estimated + requested;
   return reason;
@@ -69,8 +82,11 @@ ForceErrorEstimate estimate_force_error(const std::vector<std::array<double, 2>>
 }
 
 std::string accuracy_stop_reason(const ForceErrorEstimate& e, const AccuracySpec& spec,
-                                 const std::array<double, 2>& force) {
-  if (!(std::hypot(force[0], force[1]) > 0)) return "no_force";
+                                 const std::vector<std::array<double, 2>>& forces) {
+  // A zero force on the first level may be a contact the coarse mesh does not resolve.
+  const auto zero = [](const std::array<double, 2>& f) { return !(std::hypot(f[0], f[1]) > 0); };
+  if (forces.size() >= 2 && zero(forces.back()) && zero(forces[forces.size() - 2]))
+    return "no_force";
   if (e.available() && e.estimate <= spec.force) return "reached";
   return "";
 }
@@ -98,7 +114,7 @@ nlohmann::json accuracy_json(const CaseSolution& solution, const AccuracySpec& s
           {"stop_reason", solution.stop_reason},
           {"estimate", number_or_null(last.estimate)},
           {"steps", steps},
-          {"stop_message", stop_message(solution.stop_reason, last, spec)}};
+          {"stop_message", stop_message(solution.stop_reason, solution.steps, spec)}};
 }
 
 }  // namespace fosls

@@ -46,9 +46,10 @@ struct ForceErrorEstimate {
 /// refinement of the one before. None with one level or a zero last force.
 ForceErrorEstimate estimate_force_error(const std::vector<std::array<double, 2>>& forces);
 
-/// Why the run stops after this level (`reached`, `no_force`), or empty to refine on.
+/// Why the run stops after the last of `forces` (`reached`; `no_force` when it and the level
+/// before are zero), or empty to refine on.
 std::string accuracy_stop_reason(const ForceErrorEstimate& e, const AccuracySpec& spec,
-                                 const std::array<double, 2>& force);
+                                 const std::vector<std::array<double, 2>>& forces);
 
 /// The result's `accuracy` object (docs/result-format.md).
 nlohmann::json accuracy_json(const CaseSolution& solution, const AccuracySpec& spec);

@@ -74,6 +74,10 @@ std::string describe_time(const CaseTimeEstimate& e, const CaseSpec& spec, long 
     return text + "up to " + std::to_string(solver.max_iterations) + " pgs iterations (" +
            describe_seconds(pgs_seconds_per_iteration(unknowns)) + " each) on about " +
            std::to_string(unknowns) + " unknowns";
+  if (spec.accuracy)
+    return text + method + " on levels of up to " +
+           std::to_string(accuracy_largest_unknowns(unknowns, spec.accuracy->max_dofs)) +
+           " DOFs (accuracy.max_dofs), all levels together about 4/3 of the largest";
   return text + method + " on about " + std::to_string(unknowns) + " unknowns";
 }
 
@@ -94,9 +98,14 @@ std::string advice(const CaseTimeEstimate& e, const CaseSpec& spec, long long un
   }
   if (e.points > 1) options.push_back("fewer sweep values");
   if (method == SolverMethod::kPgs) options.push_back("fewer solver.max_iterations");
-  options.push_back("fewer refinements or a coarser mesh.size");
-  options.push_back(e.bounded_by_time_limit
-                        ? "a lower solver.time_limit_s"
+  if (spec.accuracy)
+    options.push_back("a larger accuracy.force or a lower accuracy.max_dofs");
+  else
+    options.push_back("fewer refinements or a coarser mesh.size");
+  options.push_back(e.bounded_by_time_limit ? "a lower solver.time_limit_s"
+                    : spec.accuracy
+                        ? "a solver.time_limit_s (the loop then stops at it with the last "
+                          "level solved)"
                         : "a solver.time_limit_s (each solve then stops at it with its last "
                           "iterate)");
   std::string text = "use ";

@@ -1,5 +1,7 @@
 #include "case/resource_estimate.hpp"
 
+#include <algorithm>
+
 #include <cmath>
 #include <cstdio>
 
@@ -51,9 +53,7 @@ ResourceEstimate estimate_adaptive_resources(long long max_dofs, SolverMethod me
 }
 
 long long accuracy_largest_unknowns(long long unknowns, long long max_dofs) {
-  long long largest = unknowns;
-  while (unknowns > 0 && 4 * largest <= max_dofs) largest *= 4;
-  return largest;
+  return std::max(unknowns, max_dofs);
 }
 
 std::string describe(const ResourceEstimate& e, SolverMethod method) {

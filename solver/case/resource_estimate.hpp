@@ -48,9 +48,15 @@ ResourceEstimate estimate_resources(long long unknowns, bool exact, SolverMethod
 inline constexpr double kAdaptiveHierarchyFactor = 2.5;
 ResourceEstimate estimate_adaptive_resources(long long max_dofs, SolverMethod method);
 
-/// The unknowns of the finest level the accuracy loop may reach from `unknowns`: each uniform
-/// refinement multiplies them by about 4, and a level above `max_dofs` is not made.
+/// The unknowns of the finest level the accuracy loop may reach from `unknowns`: a level above
+/// `max_dofs` is not made, and one up to it may be (a uniform refinement multiplies the DOFs by
+/// 2.8–4, so no rule in between is safe for every mesh): max_dofs, as for adaptivity.
 long long accuracy_largest_unknowns(long long unknowns, long long max_dofs);
+
+/// A uniform refinement multiplies the DOFs by at least this (2.8 for a mesh of two triangles,
+/// towards 4 for fine ones): an accuracy.max_dofs below unknowns times it leaves no second
+/// level, and the estimate needs two.
+constexpr double kAccuracyLeastGrowth = 2.5;
 
 /// The estimate as one sentence ("about 1.2 GiB for 850 000 unknowns with mmg").
 std::string describe(const ResourceEstimate& estimate, SolverMethod method);

@@ -44,8 +44,8 @@ int run_estimate(const std::string& path, const std::string& max_memory) {
                  "of its up to "
               << admission.spec->adaptivity->steps + 1 << " steps)\n";
   if (admission.estimate->limited_by == "/accuracy/max_dofs")
-    std::cout << "          (the largest level the accuracy loop may reach below "
-                 "accuracy.max_dofs; it stops earlier once the force is accurate enough)\n";
+    std::cout << "          (the accuracy loop at accuracy.max_dofs, the largest level it may "
+                 "make; it stops earlier once the force is accurate enough)\n";
   const long long unknowns = admission.estimate->unknowns;
   for (const MethodInfo& m : solver_methods()) {
     const auto e = adaptive ? estimate_adaptive_resources(unknowns, m.method)

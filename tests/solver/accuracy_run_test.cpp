@@ -1,7 +1,8 @@
 // The accuracy loop as a user runs it (`"accuracy": {"force": tol}`): it refines uniformly from
 // mesh.refinements until the estimated force error is within tol, and the true error (against
 // the reference of docs/validation.md §12) is within twice that; a max_dofs that stops it first
-// says so with a warning; a zero force stops it at once.
+// says so with a warning; a zero force on two levels stops it; an unconverged last level gives
+// no estimate of its own.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -65,14 +66,26 @@ TEST(AccuracyRun, MaxDofsStopsTheLoopWithAWarning) {
   EXPECT_TRUE(has_warning(r, "accuracy_not_reached"));
 }
 
-TEST(AccuracyRun, AZeroForceStopsAtOnce) {
+TEST(AccuracyRun, AZeroForceOnTwoLevelsStopsTheLoop) {
   json j = hertz_to(1e-3, 1);
   j["boundary"]["contact"]["obstacle"]["point"] = {0, -1};  // far below the body
   const json r = testing::solved_case(j);
   EXPECT_EQ(r["accuracy"]["stop_reason"], "no_force");
-  EXPECT_EQ(r["accuracy"]["steps"].size(), 1u);
+  EXPECT_EQ(r["accuracy"]["steps"].size(), 2u);
   EXPECT_TRUE(has_warning(r, "no_contact"));
   EXPECT_FALSE(has_warning(r, "accuracy_not_reached"));
+}
+
+TEST(AccuracyRun, AnUnconvergedLevelGivesNoEstimateOfItsOwn) {
+  json j = hertz_to(1e-4, 1);
+  j["solver"]["max_iterations"] = 6;  // the first level needs 7
+  j["solver"].erase("tolerance");
+  const json r = testing::solved_case(j);
+  const json& a = r["accuracy"];
+  ASSERT_EQ(a["stop_reason"], "not_converged") << a.dump();
+  EXPECT_TRUE(a["estimate"].is_null());
+  EXPECT_FALSE(a["steps"].back()["converged"].get<bool>());
+  EXPECT_NE(a["stop_message"].get<std::string>().find("did not converge"), std::string::npos);
 }
 
 }  // namespace

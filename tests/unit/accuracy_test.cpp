@@ -8,6 +8,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "case/adaptive_runner.hpp"
 #include "case/case_reader.hpp"
 #include "case/force_accuracy.hpp"
 
@@ -79,12 +80,36 @@ TEST(AccuracyStopReason, ReachedNoForceOrGoOn) {
   AccuracySpec spec;
   spec.force = 1e-3;
   ForceErrorEstimate e;
-  EXPECT_EQ(accuracy_stop_reason(e, spec, {0.0, 1.0}), "");  // no estimate yet
-  EXPECT_EQ(accuracy_stop_reason(e, spec, {0.0, 0.0}), "no_force");
+  const Forces touching = {{0.0, 1.0}, {0.0, 1.0}};
+  EXPECT_EQ(accuracy_stop_reason(e, spec, {{0.0, 1.0}}), "");  // no estimate yet
+  // A zero force on the first level may be a contact the coarse mesh misses: one more level.
+  EXPECT_EQ(accuracy_stop_reason(e, spec, {{0.0, 0.0}}), "");
+  EXPECT_EQ(accuracy_stop_reason(e, spec, {{0.0, 0.0}, {0.0, 1.0}}), "");
+  EXPECT_EQ(accuracy_stop_reason(e, spec, {{0.0, 0.0}, {0.0, 0.0}}), "no_force");
   e.estimate = 2e-3;
-  EXPECT_EQ(accuracy_stop_reason(e, spec, {0.0, 1.0}), "");
+  EXPECT_EQ(accuracy_stop_reason(e, spec, touching), "");
   e.estimate = 1e-3;
-  EXPECT_EQ(accuracy_stop_reason(e, spec, {0.0, 1.0}), "reached");
+  EXPECT_EQ(accuracy_stop_reason(e, spec, touching), "reached");
+}
+
+TEST(AccuracyJson, AnUnconvergedLastLevelReportsTheEstimateBeforeIt) {
+  CaseSolution solution;
+  solution.stop_reason = "not_converged";
+  for (int k = 0; k < 3; ++k) {
+    AdaptiveStepRecord s;
+    s.levels = 2 + k;
+    s.converged = k < 2;
+    s.force = {0.0, 1.0 + 0.1 / (k + 1)};
+    if (k == 1) s.force_error = estimate_force_error({{0.0, 1.1}, {0.0, 1.05}});
+    solution.steps.push_back(s);
+  }
+  AccuracySpec spec;
+  const json a = accuracy_json(solution, spec);
+  EXPECT_FALSE(a["reached"].get<bool>());
+  EXPECT_TRUE(a["estimate"].is_null());
+  const std::string message = a["stop_message"];
+  EXPECT_NE(message.find("did not converge"), std::string::npos) << message;
+  EXPECT_NE(message.find("at 2 refinements"), std::string::npos) << message;
 }
 
 json contact_case() {
