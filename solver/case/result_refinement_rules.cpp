@@ -111,12 +111,14 @@ ObjectRulePtr accuracy_result_rule() {
                     choice_value({"reached", "no_force", "max_dofs", "not_converged", "time_limit",
                                   "cancelled"}),
                     "",
-                    "why the refinement stopped: the accuracy was reached, the force is zero "
-                    "(no relative accuracy exists), the next level would exceed max_dofs, a "
+                    "why the refinement stopped: the accuracy was reached, the force is zero on "
+                    "two levels (no relative accuracy exists), the next level would exceed "
+                    "max_dofs, a "
                     "solve did not converge, solver.time_limit_s ran out, or the job was "
                     "cancelled"),
        output_field("estimate", maybe, "1",
-                    "the last level's estimated relative error of |F| (null with one level)"),
+                    "the last level's estimated relative error of |F| (null with one level, or "
+                    "when the last level's solve did not converge)"),
        output_field("steps", list_value(object_value(accuracy_step_rule()), "one per level"), "",
                     "every level solved, coarsest first, the last one being the result's"),
        output_field("stop_message", text(), "",
