@@ -186,18 +186,19 @@ ObjectRulePtr friction_result_rule() {
 
 /// A load step's result: the result's own fields but the history, with its number and changes.
 ObjectRulePtr load_step_rule(const std::vector<FieldRule>& result_fields) {
+  ValueRule changes =
+      map_value(name_value(4096, "a JSON pointer"),
+                one_of_value({number_value(), text(), boolean_value(), null_value(),
+                              list_value(one_of_value({number_value(), text(), null_value()},
+                                                      "a number, string or null"),
+                                         "an array")},
+                             "a JSON value"),
+                50, "object mapping JSON pointers to values", "changes");
+  changes.range.lo = 0;  // step 0, the case as given, changes nothing
   std::vector<FieldRule> fields = {
       output_field("step", count(), "1", "the step's number, 0 for the case as given"),
-      output_field(
-          "changes",
-          map_value(name_value(4096, "a JSON pointer"),
-                    one_of_value({number_value(), text(), boolean_value(), null_value(),
-                                  list_value(one_of_value({number_value(), text(), null_value()},
-                                                          "a number, string or null"),
-                                             "an array")},
-                                 "a JSON value"),
-                    50, "object mapping JSON pointers to values", "changes"),
-          "", "the step's changes as the case gave them (empty for step 0)")};
+      output_field("changes", changes, "",
+                   "the step's changes as the case gave them (empty for step 0)")};
   for (const FieldRule& f : result_fields)
     if (f.key != "history") fields.push_back(f);
   return object_rule("a load step", "load_step", std::move(fields));

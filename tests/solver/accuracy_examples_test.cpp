@@ -30,9 +30,9 @@ TEST_P(AccuracyExamples, ReachTenToTheMinusThree) {
 }
 
 INSTANTIATE_TEST_SUITE_P(Shipped, AccuracyExamples,
-                         ::testing::Values("hertz", "hertz_incompressible", "hertz_adaptive",
-                                           "hertz_friction", "cattaneo_mindlin", "signorini_square",
-                                           "signorini_square_incompressible",
+                         ::testing::Values("hertz", "hertz_accuracy", "hertz_incompressible",
+                                           "hertz_adaptive", "hertz_friction", "cattaneo_mindlin",
+                                           "signorini_square", "signorini_square_incompressible",
                                            "signorini_square_adaptive"));
 
 }  // namespace

@@ -56,7 +56,8 @@ std::set<std::string> data_arrays(const std::string& vtu) {
 }
 
 TEST(ResultFormat, EveryEmittedFieldAndArrayIsDocumented) {
-  for (const char* example : {"signorini_square", "linear_square", "signorini_square_adaptive"}) {
+  for (const char* example : {"signorini_square", "linear_square", "signorini_square_adaptive",
+                              "hertz_accuracy", "cattaneo_mindlin"}) {
     json j = load_example(example);
     j["mesh"]["refinements"] = 2;
     if (j.contains("adaptivity")) j["adaptivity"]["steps"] = 2;
