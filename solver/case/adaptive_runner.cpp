@@ -67,21 +67,23 @@ void solve_finest(CaseSolution& solution, const CaseSpec& spec, bool from_start,
   solution.contact = contact_output(disc.assembler(), problem, solution.full);
 }
 
-/// Why the loop stops after this step's solve, or empty to go on.
+/// Why a loop of solves stops at this solve whatever it refines by, or empty. An unconverged
+/// iterate would mark where the algebraic error is, and its force is not the level's.
+std::string stop_for_the_solve(const SolverReport& report) {
+  if (report.cancelled) return "cancelled";
+  if (report.time_limited) return "time_limit";
+  if (!report.converged) return "not_converged";
+  return "";
+}
+
+/// Why the adaptive loop stops after this step's solve, or empty to go on.
 std::string stop_before_refining(const CaseSolution& s, const AdaptivitySpec& a, int step,
                                  double first_estimator) {
-  if (s.report.cancelled) return "cancelled";
-  if (s.report.time_limited) return "time_limit";
-  // Marking from an unconverged iterate would refine where the algebraic error is.
-  if (!s.report.converged) return "not_converged";
+  if (std::string reason = stop_for_the_solve(s.report); !reason.empty()) return reason;
   if (step >= a.steps) return "steps";
   if (a.target > 0 && s.steps.back().estimator <= a.target * first_estimator) return "target";
   return "";
 }
-
-}  // namespace
-
-namespace {
 
 AdaptiveStepRecord step_record(const CaseSolution& solution, int step) {
   const Discretization& disc = *solution.disc;
@@ -145,10 +147,7 @@ std::string stop_after_solve(const CaseSolution& solution, const CaseSpec& spec,
                              double first_estimator) {
   if (spec.adaptivity)
     return stop_before_refining(solution, *spec.adaptivity, step, first_estimator);
-  const SolverReport& r = solution.report;
-  if (r.cancelled) return "cancelled";
-  if (r.time_limited) return "time_limit";
-  if (!r.converged) return "not_converged";
+  if (std::string reason = stop_for_the_solve(solution.report); !reason.empty()) return reason;
   return accuracy_stop_reason(solution.steps.back().force_error, *spec.accuracy,
                               forces(solution.steps));
 }

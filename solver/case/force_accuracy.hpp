@@ -21,13 +21,13 @@ struct AccuracySpec;
 constexpr double kAssumedForceRatio = 2.0;
 /// The limits of an observed ratio: 4 is the lowest-order method's h² (a larger observed
 /// ratio is a lucky step, not a faster method); 2 is order one in h.
+constexpr double kMinForceRatio = 2.0;
+constexpr double kMaxForceRatio = 4.0;
 /// With an accuracy section each level's solve stops at this fraction of its discretisation
 /// error unless the case gives one: the force's change between levels must be the
 /// discretisation's, and 0.1 (the default) leaves enough algebraic error in the force to spoil
 /// it (docs/validation.md §14).
 constexpr double kAccuracyDiscretisationFraction = 0.01;
-constexpr double kMinForceRatio = 2.0;
-constexpr double kMaxForceRatio = 4.0;
 
 struct ForceErrorEstimate {
   static constexpr double kNone = std::numeric_limits<double>::quiet_NaN();
