@@ -72,10 +72,7 @@ void check_friction_support(const CaseSpec& spec, std::vector<CaseError>& errors
 void check_accuracy_support(const nlohmann::json& j, const CaseSpec& spec,
                             std::vector<CaseError>& errors) {
   if (!j.contains("accuracy")) return;
-  const bool contact = std::any_of(spec.boundary.begin(), spec.boundary.end(), [](const auto& b) {
-    return b.second.type == BoundaryCondition::Type::kContact;
-  });
-  if (!contact)
+  if (!has_contact(spec))
     errors.push_back({"/accuracy",
                       "accuracy is asked of the contact force, and the case has no contact "
                       "condition; refine with mesh.refinements instead"});

@@ -154,12 +154,6 @@ CaseException indefinite(const CaseSpec& spec, const MeshHierarchy& meshes,
   return CaseException("/weights", m.str());
 }
 
-bool has_contact(const CaseSpec& spec) {
-  for (const auto& [name, bc] : spec.boundary)
-    if (bc.type == BoundaryCondition::Type::kContact) return true;
-  return false;
-}
-
 }  // namespace
 
 std::vector<CaseError> validate_case(const nlohmann::json& j, const CaseReadOptions& options,

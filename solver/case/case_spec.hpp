@@ -140,4 +140,11 @@ struct CaseSpec {
   std::vector<nlohmann::json> load_step_changes;
 };
 
+/// Whether some boundary group of the case is a contact condition.
+inline bool has_contact(const CaseSpec& spec) {
+  for (const auto& [name, bc] : spec.boundary)
+    if (bc.type == BoundaryCondition::Type::kContact) return true;
+  return false;
+}
+
 }  // namespace fosls
