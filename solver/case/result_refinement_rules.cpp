@@ -25,8 +25,7 @@ ObjectRulePtr adaptive_step_rule() {
        output_field("converged", boolean_value(), "", "this step's solve met its stopping rule"),
        output_field("converged_by", converged_by_value(), "",
                     "the test this step's solve met, as stopping.converged_by"),
-       output_field("algebraic_error",
-                    one_of_value({number_value(), null_value()}, "a number or null"), "scaled",
+       output_field("algebraic_error", number_or_null(), "scaled",
                     "this step's estimated algebraic error, as stopping.algebraic_error"),
        output_field("marked", count(), "1",
                     "triangles marked by Dörfler marking for the next step (0 on the last)"),
@@ -56,8 +55,7 @@ ObjectRulePtr adaptivity_result_rule() {
        output_field("estimator_reduction", number(), "1",
                     "the last step's estimator J^½ over the first step's: the quantity target "
                     "is compared with (a reduction of the estimator, not an accuracy)"),
-       output_field("last_force_change",
-                    one_of_value({number_value(), null_value()}, "a number or null"), "1",
+       output_field("last_force_change", number_or_null(), "1",
                     "|F_k − F_(k−1)| / |F_k| of the contact force in the last step: about how "
                     "much one more step would change it (null with one step or a zero force)"),
        output_field("stop_message", text(), "",
@@ -68,7 +66,6 @@ ObjectRulePtr adaptivity_result_rule() {
 namespace {
 
 ObjectRulePtr accuracy_step_rule() {
-  ValueRule maybe = one_of_value({number_value(), null_value()}, "a number or null");
   return object_rule(
       "a level of the accuracy loop", "accuracy_step",
       {output_field("refinements", count(), "1", "uniform refinements of the coarse mesh"),
@@ -76,10 +73,10 @@ ObjectRulePtr accuracy_step_rule() {
        output_field("dofs_total", count(), "1", "all DOFs of the level (what max_dofs limits)"),
        output_field("force", tuple_value(number(), 2, "an array of 2 numbers [x, y]"), "S·L",
                     "the contact force at this level's solution (as contact.force)"),
-       output_field("change", maybe, "1",
+       output_field("change", number_or_null(), "1",
                     "|F_k − F_(k−1)| / |F_k|: the force's change from the level before (null on "
                     "the first level or for a zero force)"),
-       output_field("ratio", maybe, "1",
+       output_field("ratio", number_or_null(), "1",
                     "ρ, the factor by which the change is taken to shrink per refinement: the "
                     "ratio of the last two changes limited to [2, 4], or 2 before two changes "
                     "are known (docs/method.md §9)"),
@@ -89,7 +86,7 @@ ObjectRulePtr accuracy_step_rule() {
                     "the last two changes of the force point the same way (false: they have "
                     "opposite signs, errors cancel in a change, and the estimate is the larger "
                     "of the two changes)"),
-       output_field("estimate", maybe, "1",
+       output_field("estimate", number_or_null(), "1",
                     "the estimated relative error of |F| at this level: change / (ratio − 1), or "
                     "the larger of the last two changes when not monotone"),
        output_field("iterations", count(), "1", "iterations of this level's solve"),
@@ -100,7 +97,6 @@ ObjectRulePtr accuracy_step_rule() {
 }  // namespace
 
 ObjectRulePtr accuracy_result_rule() {
-  ValueRule maybe = one_of_value({number_value(), null_value()}, "a number or null");
   return object_rule(
       "the requested accuracy", "accuracy_result",
       {output_field("force", number(), "1", "accuracy.force requested (relative)"),
@@ -116,7 +112,7 @@ ObjectRulePtr accuracy_result_rule() {
                     "max_dofs, a "
                     "solve did not converge, solver.time_limit_s ran out, or the job was "
                     "cancelled"),
-       output_field("estimate", maybe, "1",
+       output_field("estimate", number_or_null(), "1",
                     "the last level's estimated relative error of |F| (null with one level, or "
                     "when the last level's solve did not converge)"),
        output_field("steps", list_value(object_value(accuracy_step_rule()), "one per level"), "",

@@ -14,6 +14,8 @@ ValueRule number();
 ValueRule numbers(std::string what);
 ValueRule text();
 ValueRule converged_by_value();
+/// A number, or null where there is none (JSON has no NaN).
+ValueRule number_or_null();
 ObjectRulePtr object_rule(std::string title, std::string anchor, std::vector<FieldRule> fields);
 
 /// The `adaptivity` object of an adaptive run (result_refinement_rules.cpp).

@@ -16,6 +16,9 @@ ValueRule count() { return integer_value(Range::non_negative()); }
 ValueRule number() { return number_value(); }
 ValueRule numbers(std::string what) { return list_value(number_value(), std::move(what)); }
 ValueRule text() { return string_value(static_cast<std::size_t>(-1) >> 1, "the text"); }
+ValueRule number_or_null() {
+  return one_of_value({number_value(), null_value()}, "a number or null");
+}
 ValueRule converged_by_value() {
   return choice_value({"kkt_residual", "algebraic_error", "rounding_level", "none"});
 }
@@ -73,7 +76,7 @@ ObjectRulePtr statistics_rule() {
 }
 
 ObjectRulePtr zone_rule() {
-  ValueRule where = one_of_value({number_value(), null_value()}, "a number or null");
+  ValueRule where = number_or_null();
   return object_rule(
       "the contact zone", "zone",
       {output_field("edges", count(), "1", "contact edges in contact (pressure > 0)"),
@@ -160,7 +163,7 @@ ObjectRulePtr sweep_rule(ValueRule reasons) {
 }
 
 ObjectRulePtr friction_result_rule() {
-  ValueRule maybe = one_of_value({number_value(), null_value()}, "a number or null");
+  ValueRule maybe = number_or_null();
   ValueRule law = object_value(object_rule(
       "a friction law", "friction_law",
       {output_field("law", choice_value({"coulomb", "tresca"}), "", "the law"),
@@ -214,7 +217,7 @@ ObjectRulePtr load_steps_result_rule(const std::vector<FieldRule>& result_fields
 }
 
 ObjectRulePtr stick_zone_rule() {
-  ValueRule where = one_of_value({number_value(), null_value()}, "a number or null");
+  ValueRule where = number_or_null();
   return object_rule("the stick zone", "stick_zone",
                      {output_field("edges", count(), "1", "contact edges in state stick"),
                       output_field("length", number(), "L", "their total length"),
@@ -306,8 +309,7 @@ ObjectRulePtr stopping_rule() {
                     "stalled within 10 times its rounding level u ‖|A||x| + |b|‖ (u = 2⁻⁵³) "
                     "before the tolerance (docs/method.md §5.2); none when the solve did not "
                     "converge"),
-       output_field("algebraic_error",
-                    one_of_value({number_value(), null_value()}, "a number or null"), "scaled",
+       output_field("algebraic_error", number_or_null(), "scaled",
                     "estimated algebraic error (J(x) − J(x_h))^½ of the last iterate from the "
                     "decrease of J and its observed rate; null while the last three iterations "
                     "did not decrease J at a rate below 1"),
@@ -346,7 +348,7 @@ ObjectRulePtr weights_echo_rule() {
                                 "\"auto\" when c3 was chosen from the mesh, \"given\" when the "
                                 "case set it"));
   fields.push_back(output_field(
-      "c3_limit", one_of_value({number_value(), null_value()}, "a number or null"), "1",
+      "c3_limit", number_or_null(), "1",
       "with c3_rule auto: the largest c3 keeping the functional convex on the level it was "
       "computed on (c3 = min(0.1, c3_limit / 2)); null otherwise, without contact or when "
       "unbounded"));
