@@ -8,6 +8,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "../case_errors.hpp"
 #include "case/adaptive_runner.hpp"
 #include "case/case_reader.hpp"
 #include "case/force_accuracy.hpp"
@@ -16,6 +17,7 @@ namespace fosls {
 namespace {
 
 using nlohmann::json;
+using testing::has_error;
 using Forces = std::vector<std::array<double, 2>>;
 
 /// F_k = F∞ + C ρ^(−k): the error at level k is C ρ^(−k).
@@ -122,12 +124,6 @@ json contact_case() {
                                                  "normal": [0, 1]}}
     }
   })");
-}
-
-bool has_error(const CaseReadResult& r, const std::string& pointer, const std::string& word) {
-  return std::any_of(r.errors.begin(), r.errors.end(), [&](const CaseError& e) {
-    return e.pointer == pointer && e.detail.find(word) != std::string::npos;
-  });
 }
 
 TEST(AccuracySection, ReadWithDefaultsAndStopsEachLevelAtTheDiscretisationError) {

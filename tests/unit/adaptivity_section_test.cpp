@@ -4,6 +4,7 @@
 
 #include <algorithm>
 
+#include "../case_errors.hpp"
 #include "case/case_admission.hpp"
 #include "case/case_reader.hpp"
 
@@ -11,6 +12,7 @@ namespace fosls {
 namespace {
 
 using nlohmann::json;
+using testing::has_error;
 
 json adaptive_case(json adaptivity) {
   json j = json::parse(R"({
@@ -24,12 +26,6 @@ json adaptive_case(json adaptivity) {
   })");
   j["adaptivity"] = std::move(adaptivity);
   return j;
-}
-
-bool has_error(const CaseReadResult& r, const std::string& pointer, const std::string& word) {
-  return std::any_of(r.errors.begin(), r.errors.end(), [&](const CaseError& e) {
-    return e.pointer == pointer && e.detail.find(word) != std::string::npos;
-  });
 }
 
 TEST(AdaptivitySection, AbsentMeansUniformAndDefaultsFillAnEmptyObject) {

@@ -2,6 +2,7 @@
 // where it belongs, and bad input gets every problem listed with its JSON pointer.
 
 #include "case/case_reader.hpp"
+#include "../case_errors.hpp"
 #include "../shipped_example.hpp"
 
 #include <gtest/gtest.h>
@@ -20,6 +21,7 @@ namespace fosls {
 namespace {
 
 using nlohmann::json;
+using testing::has_error;
 
 json load_example(const std::string& name) { return testing::load_shipped_example(name); }
 
@@ -41,12 +43,6 @@ std::string dump_errors(const std::vector<CaseError>& errors) {
   std::string s;
   for (const auto& e : errors) s += "  " + e.pointer + ": " + e.detail + "\n";
   return s;
-}
-
-bool has_error(const CaseReadResult& r, const std::string& pointer, const std::string& word) {
-  return std::any_of(r.errors.begin(), r.errors.end(), [&](const CaseError& e) {
-    return e.pointer == pointer && e.detail.find(word) != std::string::npos;
-  });
 }
 
 TEST(ReadCase, EveryShippedExampleReads) {
