@@ -1,7 +1,6 @@
 #include "case/resource_estimate.hpp"
 
 #include <algorithm>
-
 #include <cmath>
 #include <cstdio>
 

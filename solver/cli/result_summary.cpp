@@ -18,6 +18,19 @@ std::string g(const json& v, int digits = 4) {
   return text;
 }
 
+/// `text` left-aligned in a table column of `width` characters (one space after it at least).
+std::string column(const std::string& text, std::size_t width) {
+  return text + std::string(text.size() < width ? width - text.size() : 1, ' ');
+}
+
+/// "14", or "200  NOT converged (max_iterations)": a sweep point's or load step's solve.
+std::string iterations_text(const json& solve) {
+  return std::to_string(solve["iterations"].get<int>()) +
+         (solve["converged"].get<bool>()
+              ? ""
+              : "  NOT converged (" + solve["stop_reason"].get<std::string>() + ")");
+}
+
 /// " mm" after a length when the case declared units, else "".
 std::string unit(const json& r, const char* which) {
   const json& u = r.value("units", json::object());
@@ -99,14 +112,9 @@ void print_sweep(std::ostream& out, const json& sweep) {
   for (const auto& p : sweep["points"]) {
     out << "    ";
     for (const json& v :
-         {p["value"], p["force"][0], p["force"][1], p["peak_pressure"], p["contact_width"]}) {
-      const std::string text = g(v);
-      out << text << std::string(text.size() < 15 ? 15 - text.size() : 1, ' ');
-    }
-    out << p["iterations"].get<int>()
-        << (p["converged"].get<bool>()
-                ? ""
-                : "  NOT converged (" + p["stop_reason"].get<std::string>() + ")");
+         {p["value"], p["force"][0], p["force"][1], p["peak_pressure"], p["contact_width"]})
+      out << column(g(v), 15);
+    out << iterations_text(p);
     for (const auto& code : p.value("warning_codes", json::array()))
       out << "  [" << code.get<std::string>() << "]";
     out << '\n';
@@ -119,19 +127,11 @@ void print_load_steps(std::ostream& out, const json& load_steps) {
   out << "  load steps (the lines above are the last step's):\n"
       << "    step  F_x            F_y            stick length   iterations\n";
   for (const auto& s : load_steps["steps"]) {
-    const std::string step = std::to_string(s["step"].get<int>());
-    out << "    " << step << std::string(step.size() < 6 ? 6 - step.size() : 1, ' ');
+    out << "    " << column(std::to_string(s["step"].get<int>()), 6);
     const json& contact = s["contact"];
     const json stick = contact.contains("stick_zone") ? contact["stick_zone"]["length"] : json();
-    for (const json& v : {contact["force"][0], contact["force"][1], stick}) {
-      const std::string text = v.is_null() ? "-" : g(v);
-      out << text << std::string(text.size() < 15 ? 15 - text.size() : 1, ' ');
-    }
-    out << s["iterations"].get<int>()
-        << (s["converged"].get<bool>()
-                ? ""
-                : "  NOT converged (" + s["stop_reason"].get<std::string>() + ")")
-        << '\n';
+    for (const json& v : {contact["force"][0], contact["force"][1], stick}) out << column(g(v), 15);
+    out << iterations_text(s) << '\n';
   }
 }
 
