@@ -12,15 +12,13 @@ ObjectRulePtr accuracy_rule(const CaseReadOptions& options) {
   auto r = std::make_shared<ObjectRule>();
   r->title = "the requested accuracy";
   r->anchor = "accuracy";
-  ValueRule max_dofs =
-      integer_value(Range::closed(1, static_cast<double>(options.limits.max_dofs)));
-  max_dofs.range_note = " (the case limit of DOFs of the finest level)";
   r->fields = {
       required_field("force", number_value({0.0, 0.5, true, false}),
                      "the requested relative error of the contact force |F|: the mesh is "
                      "refined uniformly, level by level from mesh.refinements, until the "
                      "estimated error is below it"),
-      optional_field("max_dofs", max_dofs, std::min(a.max_dofs, options.limits.max_dofs),
+      optional_field("max_dofs", finest_level_dofs_value(options.limits),
+                     std::min(a.max_dofs, options.limits.max_dofs),
                      "DOFs of the finest level (2 per vertex and 2 per edge, fixed ones "
                      "included) that a refinement may not exceed: a refinement that would give "
                      "more is not made and the run stops without the accuracy"),

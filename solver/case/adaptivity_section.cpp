@@ -6,18 +6,22 @@
 
 namespace fosls {
 
+ValueRule finest_level_dofs_value(const CaseLimits& limits) {
+  ValueRule max_dofs = integer_value(Range::closed(1, static_cast<double>(limits.max_dofs)));
+  max_dofs.range_note = " (the case limit of DOFs of the finest level)";
+  return max_dofs;
+}
+
 ObjectRulePtr adaptivity_rule(const CaseReadOptions& options) {
   const AdaptivitySpec a;
   auto r = std::make_shared<ObjectRule>();
   r->title = "the adaptivity settings";
   r->anchor = "adaptivity";
-  ValueRule max_dofs =
-      integer_value(Range::closed(1, static_cast<double>(options.limits.max_dofs)));
-  max_dofs.range_note = " (the case limit of DOFs of the finest level)";
   r->fields = {
       optional_field("steps", integer_value(Range::closed(0, 50)), a.steps,
                      "refinement steps at most: the case is solved steps + 1 times"),
-      optional_field("max_dofs", max_dofs, std::min(a.max_dofs, options.limits.max_dofs),
+      optional_field("max_dofs", finest_level_dofs_value(options.limits),
+                     std::min(a.max_dofs, options.limits.max_dofs),
                      "DOFs of the finest level (2 per vertex and 2 per edge, fixed ones "
                      "included) that a refinement may not exceed: a refinement that would give "
                      "more is not made and the loop stops"),

@@ -115,12 +115,12 @@ CaseReadResult read_case(const nlohmann::json& j, const CaseReadOptions& options
   // An adaptive (or accuracy) step's solution only decides where to refine (whether to) and
   // where the next step starts: iterating it beyond its discretisation error is wasted, so that
   // is where its solve stops unless the case gives a tolerance (docs/method.md §5.1).
-  if ((spec.adaptivity || spec.accuracy) &&
-      !(j.contains("solver") && j["solver"].contains("tolerance")))
+  const auto solver_gives = [&j](const char* key) {
+    return j.contains("solver") && j["solver"].contains(key);
+  };
+  if ((spec.adaptivity || spec.accuracy) && !solver_gives("tolerance"))
     spec.solver.stopping = StoppingRule::kDiscretisation;
-  const bool gives_fraction =
-      j.contains("solver") && j["solver"].contains("discretisation_fraction");
-  if (spec.accuracy && !gives_fraction)
+  if (spec.accuracy && !solver_gives("discretisation_fraction"))
     spec.solver.discretisation_fraction = kAccuracyDiscretisationFraction;
   check_friction_support(spec, result.errors);
   check_accuracy_support(j, spec, result.errors);

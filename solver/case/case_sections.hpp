@@ -39,6 +39,8 @@ Weights read_weights_section(const nlohmann::json& j);
 ObjectRulePtr solver_rule();
 SolverOptions read_solver_section(const nlohmann::json& j);
 
+/// The rule of a refinement loop's max_dofs (adaptivity, accuracy): 1 up to the case limit.
+ValueRule finest_level_dofs_value(const CaseLimits& limits);
 ObjectRulePtr adaptivity_rule(const CaseReadOptions& options);
 AdaptivitySpec read_adaptivity_section(const nlohmann::json& j, const CaseLimits& limits);
 ObjectRulePtr accuracy_rule(const CaseReadOptions& options);
