@@ -43,6 +43,17 @@ double reference_slip_origin(const ProblemData& data, int v, const Point& tangen
   return tangent.dot(data.reference_displacement[v]);
 }
 
+Point slip_tangent(const FoslsSpace& space, int e, int v) {
+  const Point n = space.is_contact_vertex(v) ? space.vertex_normal(v) : space.mesh().edge_normal(e);
+  return Point(-n.y(), n.x());
+}
+
+double tangential_displacement(const FoslsSpace& space, const Vector& x_full, int v,
+                               const Point& t) {
+  if (space.is_contact_vertex(v)) return x_full[space.u_dof(v, 1)];
+  return t.x() * x_full[space.u_dof(v, 0)] + t.y() * x_full[space.u_dof(v, 1)];
+}
+
 FrictionLayout friction_layout(const FoslsSpace& space, const ProblemData& data, const Vector& xd,
                                Kinks& kinks) {
   const Mesh& mesh = space.mesh();
@@ -63,14 +74,11 @@ FrictionLayout friction_layout(const FoslsSpace& space, const ProblemData& data,
     if (!friction.coulomb())
       f.tresca =
           tresca_bound(friction.bound, mesh.vertex(pq[0]), mesh.vertex(pq[1]), data.material.mu);
-    const Point ne = mesh.edge_normal(e);
     for (int k = 0; k < 2; ++k) {
       const int v = pq[k];
-      const bool rotated = space.is_contact_vertex(v);
-      const Point n = rotated ? space.vertex_normal(v) : ne;
-      const Point t(-n.y(), n.x());
+      const Point t = slip_tangent(space, e, v);
       const double origin = reference_slip_origin(data, v, t);
-      const int ut = rotated ? space.free_index(space.u_dof(v, 1)) : -1;
+      const int ut = space.is_contact_vertex(v) ? space.free_index(space.u_dof(v, 1)) : -1;
       if (ut >= 0) {
         auto [it, added] = kink_of.try_emplace(ut, kinks.size());
         if (added) {
@@ -81,10 +89,7 @@ FrictionLayout friction_layout(const FoslsSpace& space, const ProblemData& data,
         f.kink[k] = it->second;
       } else {
         // A fixed tangential displacement: a roller's U_t, or both Dirichlet components.
-        const double ut_fixed = rotated
-                                    ? xd[space.u_dof(v, 1)]
-                                    : t.x() * xd[space.u_dof(v, 0)] + t.y() * xd[space.u_dof(v, 1)];
-        f.fixed_slip[k] = ut_fixed - origin;
+        f.fixed_slip[k] = tangential_displacement(space, xd, v, t) - origin;
       }
     }
     layout.edges.push_back(f);

@@ -49,14 +49,10 @@ void set_friction_state(const FoslsAssembler& assembler, const AssembledProblem&
   const FoslsSpace& space = assembler.space();
   const Mesh& mesh = space.mesh();
   const int e = r.edge;
-  const Point ne = mesh.edge_normal(e);
   for (int v : mesh.edge(e)) {
-    const bool rotated = space.is_contact_vertex(v);
-    const Point n = rotated ? space.vertex_normal(v) : ne, t(-n.y(), n.x());
-    const double ut = rotated
-                          ? x_full[space.u_dof(v, 1)]
-                          : t.x() * x_full[space.u_dof(v, 0)] + t.y() * x_full[space.u_dof(v, 1)];
-    r.slip += 0.5 * (ut - reference_slip_origin(assembler.data(), v, t));
+    const Point t = slip_tangent(space, e, v);
+    r.slip += 0.5 * (tangential_displacement(space, x_full, v, t) -
+                     reference_slip_origin(assembler.data(), v, t));
   }
   const int st = space.sigma_dof(e, 1);
   if (space.role(st) != DofRole::kTangentialS) {
