@@ -10,9 +10,6 @@
 
 namespace fosls {
 
-/// Runs spec.sweep_points with `run_point` (one point, as run_case without a sweep). The
-/// result is the last point's, with `sweep.points` for all of them; `converged` and
-/// `stop_reason` say whether every point converged. A cancel ends the sweep at once.
 /// The outcome of a series of solves (a sweep's points, load steps) in its last result `r`: the
 /// case's name, converged only if every solve did, the first failure's stop_reason, a message
 /// counting the failures ("<k> of <n> <what>") and the series' warnings.
@@ -20,6 +17,9 @@ void close_series(nlohmann::json& r, const std::string& name, const std::string&
                   const std::vector<ResultWarning>& warnings, std::size_t n,
                   const std::string& what);
 
+/// Runs spec.sweep_points with `run_point` (one point, as run_case without a sweep). The
+/// result is the last point's, with `sweep.points` for all of them; `converged` and
+/// `stop_reason` say whether every point converged. A cancel ends the sweep at once.
 RunOutput run_sweep(const CaseSpec& spec, const RunControl& control,
                     const std::function<RunOutput(const CaseSpec&, const RunControl&)>& run_point);
 
