@@ -1,0 +1,80 @@
+#include "case/case_problem_data.hpp"
+
+#include <string>
+
+#include "case/case_error.hpp"
+#include "case/expression.hpp"
+
+namespace fosls {
+
+namespace {
+
+RigidObstacle rigid_obstacle(const Obstacle& o) {
+  RigidObstacle r;
+  r.kind = o.kind == Obstacle::Kind::kPlane    ? RigidObstacle::Kind::kPlane
+           : o.kind == Obstacle::Kind::kCircle ? RigidObstacle::Kind::kCircle
+                                               : RigidObstacle::Kind::kGap;
+  r.point = o.point, r.normal = o.normal, r.center = o.center, r.radius = o.radius;
+  return r;
+}
+
+}  // namespace
+
+/// The case in the assembly layer's terms.
+ProblemData problem_data(const CaseSpec& spec, const Mesh& mesh) {
+  ProblemData d;
+  d.material = {.mu = spec.material.mu, .lambda = spec.material.lambda};
+  const Weights& w = spec.weights;
+  // The c1 term in units of the body's size (mesh/length_scale.hpp).
+  const double l = w.length_scale;
+  d.weights = {
+      .c1 = w.c1 * l * l, .c2 = w.c2, .c3 = w.c3, .c4 = w.c4, .c2_volumetric = w.c2_volumetric};
+  // A zero component stays empty: the assembler then stores no body force at all.
+  for (int i = 0; i < 2; ++i)
+    if (const Scalar& f = spec.body_force[i]; !f.is_constant() || f.value != 0.0)
+      d.body_force[i] = compile_scalar(f);
+  d.groups.resize(mesh.group_names().size());  // unnamed groups: traction free
+  for (const auto& [name, bc] : spec.boundary) {
+    GroupData& g = d.groups[mesh.group_index(name)];
+    switch (bc.type) {
+      case BoundaryCondition::Type::kDirichlet:
+        g.role = !bc.prescribed[1]   ? GroupRole::kDirichletX
+                 : !bc.prescribed[0] ? GroupRole::kDirichletY
+                                     : GroupRole::kDirichlet;
+        break;
+      case BoundaryCondition::Type::kNeumann:
+        g.role = GroupRole::kNeumann;
+        break;
+      case BoundaryCondition::Type::kPressure:
+        g.role = GroupRole::kNeumann;
+        g.normal_pressure = true;
+        break;
+      case BoundaryCondition::Type::kContact:
+        g.role = GroupRole::kContact;
+        g.contact.obstacle = rigid_obstacle(bc.obstacle);
+        g.contact.direction = bc.direction == ContactDirection::kBodyNormal
+                                  ? ConstraintDirection::kBodyNormal
+                                  : ConstraintDirection::kObstacleNormal;
+        if (bc.obstacle.kind == Obstacle::Kind::kGap)
+          g.contact.gap = compile_scalar(bc.obstacle.gap);
+        g.contact.friction.coefficient = bc.friction_coefficient;
+        if (bc.friction_bound)
+          g.contact.friction.bound = [s = compile_scalar(*bc.friction_bound),
+                                      pointer = "/boundary/" + name + "/friction/bound"](double x,
+                                                                                         double y) {
+            const double value = s(x, y);
+            if (!(value >= 0.0))
+              throw CaseException(pointer, "the slip bound is " + std::to_string(value) + " at (" +
+                                               std::to_string(x) + ", " + std::to_string(y) +
+                                               "); it must be >= 0");
+            return value;
+          };
+        break;
+    }
+    if (bc.type != BoundaryCondition::Type::kContact)
+      for (int i = 0; i < 2; ++i) g.values[i] = compile_scalar(bc.values[i]);
+  }
+  return d;
+}
+
+}  // namespace fosls

@@ -1,0 +1,15 @@
+#pragma once
+// A validated case in the assembly layer's terms: material, weights (the c1 term in units of
+// the body's size), body force and each mesh group's boundary condition as functions.
+
+#include "assembly/problem_data.hpp"
+#include "case/case_spec.hpp"
+#include "mesh/mesh.hpp"
+
+namespace fosls {
+
+/// `spec.weights` as used (length_scale set, c3 chosen when "auto"); groups indexed like
+/// mesh.group_names(), the unnamed ones traction free.
+ProblemData problem_data(const CaseSpec& spec, const Mesh& mesh);
+
+}  // namespace fosls
