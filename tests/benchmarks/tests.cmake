@@ -6,3 +6,7 @@ target_link_libraries(fosls-bench-assembly PRIVATE fosls_internals)
 find_library(UMFPACK_LIBRARY NAMES umfpack REQUIRED)
 add_executable(fosls-bench-displacement ${CMAKE_CURRENT_LIST_DIR}/displacement_fem.cpp)
 target_link_libraries(fosls-bench-displacement PRIVATE fosls_internals ${UMFPACK_LIBRARY})
+
+# The order-2 space's force, solved by pdas (docs/performance.md, "Order 2").
+add_executable(fosls-bench-order2 ${CMAKE_CURRENT_LIST_DIR}/order2_force.cpp)
+target_link_libraries(fosls-bench-order2 PRIVATE fosls_internals)
