@@ -39,7 +39,7 @@ class P2Rt1Assembler {
   void set_neumann_values(int e, const GroupData& g, Vector& xd) const;
   /// C3 ⟨u·d − g, σ_nn⟩ on the contact edges: a bilinear coupling of the S_n end DOFs with the
   /// normal displacements of the edge's three nodes, exact by Gauss quadrature.
-  void add_contact_terms(const Vector& xd, std::vector<Eigen::Triplet<double>>& a, Vector& b) const;
+  void add_contact_terms(const Vector& xd, SparseMatrix& a, Vector& b) const;
   /// Weight of (S_n at end j) × (u·d at node a of the edge: 0 = p, 1 = q, 2 = midpoint) in
   /// the contact term, divided by C3.
   static double contact_weight(int a, int j);
