@@ -34,6 +34,11 @@ class P2Rt1Assembler {
   void element_kernel(int t, Local& out) const;
   void rotate_local(int t, Local& loc) const;
   Vector essential_values() const;
+  /// Every triangle's terms into a (the pattern) and b, the fixed DOFs' couplings moved to b;
+  /// returns their part of J's constant.
+  double add_element_terms(const Vector& xd, SparseMatrix& a, Vector& b) const;
+  /// One triangle's rotated local terms added in (add_element_terms' step).
+  double add_local(int t, const Local& loc, const Vector& xd, SparseMatrix& a, Vector& b) const;
   /// The Neumann fluxes of edge e into xd: the L² projection of the traction onto P1 on the
   /// edge, as the two end DOFs of each row.
   void set_neumann_values(int e, const GroupData& g, Vector& xd) const;

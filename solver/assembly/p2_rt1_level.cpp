@@ -35,6 +35,20 @@ Eigen::SparseMatrix<double> order2_embedding(const FoslsSpace& lowest, const P2R
   return p;
 }
 
+Vector lowest_order_interpolant(const FoslsSpace& lowest, const P2Rt1Space& order2,
+                                const Vector& x_full) {
+  const Mesh& mesh = lowest.mesh();
+  const Vector cartesian = order2.rotation() * x_full;
+  Vector x = Vector::Zero(lowest.num_dofs());
+  for (int v = 0; v < mesh.num_vertices(); ++v)
+    for (int c = 0; c < 2; ++c) x[lowest.u_dof(v, c)] = cartesian[order2.u_dof(v, c)];
+  for (int e = 0; e < mesh.num_edges(); ++e)
+    for (int i = 0; i < 2; ++i)
+      x[lowest.sigma_dof(e, i)] =
+          cartesian[order2.sigma_edge_dof(e, 0, i)] + cartesian[order2.sigma_edge_dof(e, 1, i)];
+  return lowest.rotation().transpose() * x;
+}
+
 namespace {
 
 /// The embedding between the free DOFs of both spaces in their rotated coordinates.

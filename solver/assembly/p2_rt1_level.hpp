@@ -3,6 +3,7 @@
 // lowest-order space on the same mesh is the level below it, and the levels below that are
 // the usual hierarchy.
 
+#include "core/box_qp.hpp"
 #include "core/level_hierarchy.hpp"
 #include "fem/fosls_space.hpp"
 #include "fem/p2_rt1_space.hpp"
@@ -13,6 +14,13 @@ namespace fosls {
 /// edge's ends, RT0's flux S as the end DOFs (S/2, S/2), a triangle's σ means those of its RT0
 /// field (exact: the spaces are nested).
 Eigen::SparseMatrix<double> order2_embedding(const FoslsSpace& lowest, const P2Rt1Space& order2);
+
+/// The lowest-order interpolant of an order-2 field, both as full rotated DOF vectors: u at the
+/// vertices, each edge's flux (the sum of its two end DOFs: RT0's canonical interpolation,
+/// which keeps the divergence's mean on every triangle and the force on every edge). What the
+/// output of an order-2 solve is written from (contact output, VTU, docs/method.md §10).
+Vector lowest_order_interpolant(const FoslsSpace& lowest, const P2Rt1Space& order2,
+                                const Vector& x_full);
 
 /// The level of `order2` above `lowest`: the embedding between free DOFs in both spaces' rotated
 /// coordinates, the vertex patches (the vertex's node, the midpoints and σ DOFs of its edges and

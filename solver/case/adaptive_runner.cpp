@@ -8,6 +8,7 @@
 #include "assembly/error_indicators.hpp"
 #include "assembly/solution_prolongation.hpp"
 #include "case/friction_solve.hpp"
+#include "case/order2_solve.hpp"
 #include "case/solver_methods.hpp"
 #include "core/indefinite_system.hpp"
 #include "core/peak_memory.hpp"
@@ -29,9 +30,31 @@ bool has_contact(const ProblemData& data) {
                      [](const GroupData& g) { return g.role == GroupRole::kContact; });
 }
 
-/// All DOFs of a mesh's space (2 per vertex, 2 per edge): the measure of mesh.refinements'
-/// and adaptivity.max_dofs' limits.
-long long dofs_total(const Mesh& mesh) { return 2LL * (mesh.num_vertices() + mesh.num_edges()); }
+/// All DOFs of a mesh's space (order 1: 2 per vertex and per edge; order 2: 2 per vertex, 6 per
+/// edge, 4 per triangle): the measure of mesh.refinements', adaptivity.max_dofs' and
+/// accuracy.max_dofs' limits.
+long long dofs_total(const Mesh& mesh, int order) {
+  const long long nv = mesh.num_vertices(), ne = mesh.num_edges(), nt = mesh.num_triangles();
+  return order == 2 ? 2 * nv + 6 * ne + 4 * nt : 2 * (nv + ne);
+}
+
+/// The order-2 branch of solve_finest: the solve, and the solution's output from its
+/// lowest-order interpolant.
+void solve_finest_order2(CaseSolution& solution, const SolverOptions& options,
+                         const CaseSolveObserver& observer) {
+  const auto t0 = Clock::now();
+  const Discretization& disc = *solution.disc;
+  Order2Solution s = solve_order2(disc, *solution.order2, options, observer.solver);
+  solution.assembly_s += s.assembly_s;
+  solution.solve_s += seconds(t0, Clock::now()) - s.assembly_s;
+  solution.assembly_mib = std::max(solution.assembly_mib, s.assembly_mib);
+  solution.hierarchy_mib = s.hierarchy_mib;
+  solution.report = std::move(s.report);
+  solution.x = std::move(s.x);
+  solution.full = std::move(s.interpolant);
+  solution.parts = std::move(s.parts);
+  solution.contact = contact_output(disc.assembler(), disc.problem(), solution.full);
+}
 
 /// Solves the finest level of `solution.disc` from `solution.x` (empty: from the nested
 /// iteration or zero) and evaluates the solution.
@@ -47,6 +70,10 @@ void solve_finest(CaseSolution& solution, const CaseSpec& spec, bool from_start,
   // again on all the coarser levels.
   if (from_start) options.nested = false;
   options.check_definiteness = first_step;
+  if (solution.order2) {
+    solve_finest_order2(solution, options, observer);
+    return;
+  }
   const LevelHierarchy hierarchy =
       method_info(options.method).needs_hierarchy ? disc.build_level_hierarchy() : LevelHierarchy{};
   // Without an iterate to return, a limit that passed while the hierarchy was built is still a
@@ -90,8 +117,8 @@ AdaptiveStepRecord step_record(const CaseSolution& solution, int step) {
   AdaptiveStepRecord record;
   record.step = step;
   record.levels = disc.num_levels();
-  record.dofs = disc.problem().qp.size();
-  record.dofs_total = disc.finest_space().num_dofs();
+  record.dofs = solution.dofs;
+  record.dofs_total = solution.dofs_total;
   record.triangles = disc.meshes().finest().num_triangles();
   record.force = {solution.contact.force_x, solution.contact.force_y};
   record.iterations = solution.report.iterations;
@@ -117,16 +144,16 @@ NextLevel refine_marked(const CaseSolution& solution, const BisectionState& stat
   refine_finest_level(next.meshes, next.state, marked);
   if (marked.empty())
     next.stop_reason = "target";
-  else if (dofs_total(next.meshes.finest()) > a.max_dofs)
+  else if (dofs_total(next.meshes.finest(), 1) > a.max_dofs)
     next.stop_reason = "max_dofs";
   return next;
 }
 
 /// The accuracy loop's next level: a uniform (red) refinement of the finest mesh.
-NextLevel refine_all(const CaseSolution& solution, const AccuracySpec& a) {
+NextLevel refine_all(const CaseSolution& solution, const AccuracySpec& a, int order) {
   NextLevel next{solution.disc->meshes(), {}, 0, ""};
   Refinement r = refine_uniformly(next.meshes.finest());
-  if (dofs_total(r.fine) > a.max_dofs) {
+  if (dofs_total(r.fine, order) > a.max_dofs) {
     next.stop_reason = "max_dofs";
     return next;
   }
@@ -169,11 +196,20 @@ CaseSolution solve_case_levels(MeshHierarchy meshes, const ProblemData& data, co
     solution.assembly_s += seconds(t0, Clock::now());
     solution.assembly_mib = peak_rss_mib();
     const Discretization& disc = *solution.disc;
-    const bool started = step == 0 && start && start->size() == disc.problem().qp.size();
+    solution.order2.reset();
+    if (spec.mesh.order == 2)
+      solution.order2 = std::make_unique<P2Rt1Space>(disc.meshes().finest(), data.roles());
+    solution.dofs = solution.order2 ? solution.order2->num_free() : disc.problem().qp.size();
+    solution.dofs_total =
+        solution.order2 ? solution.order2->num_dofs() : disc.finest_space().num_dofs();
+    // The order-2 solve starts from the nested iteration: the lowest-order iterate of a
+    // continuation or of the level below is not one of its space.
+    const bool started =
+        step == 0 && start && !solution.order2 && start->size() == disc.problem().qp.size();
     if (started) solution.x = *start;
-    if (step > 0) solution.x = prolongate_to_finest(disc, solution.full);
-    if (observer.on_step) observer.on_step(step, disc.problem().qp.size());
-    solve_finest(solution, spec, step > 0 || started, step == 0, observer);
+    if (step > 0 && !solution.order2) solution.x = prolongate_to_finest(disc, solution.full);
+    if (observer.on_step) observer.on_step(step, solution.dofs);
+    solve_finest(solution, spec, (step > 0 && !solution.order2) || started, step == 0, observer);
 
     const ErrorEstimate estimate = error_estimate(solution.parts);
     solution.steps.push_back(step_record(solution, step));
@@ -192,7 +228,7 @@ CaseSolution solve_case_levels(MeshHierarchy meshes, const ProblemData& data, co
     NextLevel next;
     if (solution.stop_reason.empty()) {
       next = spec.adaptivity ? refine_marked(solution, state, estimate.indicators, *spec.adaptivity)
-                             : refine_all(solution, *spec.accuracy);
+                             : refine_all(solution, *spec.accuracy, spec.mesh.order);
       solution.stop_reason = next.stop_reason;
       if (solution.stop_reason.empty() && observer.deadline.passed())
         solution.stop_reason = "time_limit";

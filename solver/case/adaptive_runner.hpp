@@ -17,6 +17,7 @@
 #include "case/case_spec.hpp"
 #include "case/force_accuracy.hpp"
 #include "core/deadline.hpp"
+#include "fem/p2_rt1_space.hpp"
 #include "post/contact_output.hpp"
 
 namespace fosls {
@@ -43,11 +44,15 @@ struct AdaptiveStepRecord {
 /// The solution on the finest level, and how it was reached.
 struct CaseSolution {
   std::unique_ptr<Discretization> disc;
+  /// mesh.order 2: the order-2 space on disc's finest mesh (docs/method.md §10); then x is its
+  /// free DOFs, and full the lowest-order interpolant that the output is written from.
+  std::unique_ptr<P2Rt1Space> order2;
   Vector x;     ///< free DOFs
   Vector full;  ///< all DOFs (rotated, scaled)
   FunctionalParts parts;
   ContactResult contact;
-  SolverReport report;  ///< of the last solve
+  SolverReport report;                 ///< of the last solve
+  long long dofs = 0, dofs_total = 0;  ///< unknowns solved for and all DOFs of the last solve
   std::vector<AdaptiveStepRecord> steps;
   /// Why the adaptive loop stopped: "steps", "max_dofs", "target", "not_converged",
   /// "time_limit" or "cancelled"; the accuracy loop's: "reached", "no_force", "max_dofs",

@@ -95,7 +95,8 @@ std::vector<CaseError> size_problems(const CaseSpec& spec, long long unknowns, b
 }  // namespace
 
 ResourceEstimate admission_estimate(const CaseSpec& spec, long long unknowns, bool exact) {
-  ResourceEstimate estimate = estimate_resources(unknowns, exact, spec.solver.method);
+  const int order = spec.mesh.order;
+  ResourceEstimate estimate = estimate_resources(unknowns, exact, spec.solver.method, order);
   // An adaptive run may grow up to adaptivity.max_dofs: admit it for that size.
   if (spec.adaptivity && spec.adaptivity->steps > 0) {
     const ResourceEstimate adaptive =
@@ -106,7 +107,7 @@ ResourceEstimate admission_estimate(const CaseSpec& spec, long long unknowns, bo
   if (spec.accuracy) {
     const long long largest = accuracy_largest_unknowns(unknowns, spec.accuracy->max_dofs);
     if (largest > unknowns) {
-      estimate = estimate_resources(largest, false, spec.solver.method);
+      estimate = estimate_resources(largest, false, spec.solver.method, order);
       estimate.limited_by = "/accuracy/max_dofs";
     }
   }
@@ -141,13 +142,14 @@ CaseAdmission admit_case(const nlohmann::json& j, const CaseReadOptions& options
       out.errors = outline_problems(*outline, spec.mesh, coarse);
       if (!out.errors.empty()) return out;
       for (const auto& g : outline->geometry.groups) groups.push_back(g.name);
-      unknowns = unknowns_after_refinement(coarse.triangles(), coarse.boundary_edges,
-                                           spec.mesh.refinements);
+      unknowns = estimated_unknowns_after_refinement(coarse.triangles(), coarse.boundary_edges,
+                                                     spec.mesh.refinements, spec.mesh.order);
     } else {
       const Mesh mesh = build_coarse_mesh(spec.mesh);  // square or msh: no gmsh
       groups = mesh.group_names();
-      unknowns = unknowns_after_refinement(mesh.num_triangles(), mesh.num_edges(),
-                                           mesh.num_vertices(), spec.mesh.refinements);
+      unknowns =
+          unknowns_after_refinement(mesh.num_triangles(), mesh.num_edges(), mesh.num_vertices(),
+                                    spec.mesh.refinements, spec.mesh.order);
       exact = true;
     }
   } catch (const CaseException& e) {
@@ -173,9 +175,11 @@ std::optional<CaseError> check_memory_budget(const ResourceEstimate& estimate, S
   // largest level is the thing to lower, whatever the method.
   for (const MethodInfo& m : solver_methods()) {
     if (accuracy || m.method == method || !converges_on_fine_meshes(m.method)) continue;
+    if (estimate.order == 2 && m.method == SolverMethod::kTnnmg) continue;  // mmg or pdas only
     const ResourceEstimate other =
         adaptive ? estimate_adaptive_resources(estimate.unknowns, m.method)
-                 : estimate_resources(estimate.unknowns, estimate.unknowns_exact, m.method);
+                 : estimate_resources(estimate.unknowns, estimate.unknowns_exact, m.method,
+                                      estimate.order);
     if (other.memory_bytes <= budget_bytes)
       advice += ", or solver.method " + std::string(m.name) + " (about " +
                 format_bytes(other.memory_bytes) + ")";

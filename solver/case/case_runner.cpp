@@ -33,10 +33,11 @@ double seconds(Clock::time_point a, Clock::time_point b) {
 /// Problems that need the coarse mesh: unknown groups, no Dirichlet group, size limits.
 std::vector<CaseError> check_against_mesh(const CaseSpec& spec, const Mesh& mesh,
                                           const CaseLimits& limits) {
-  return check_against_groups(spec, mesh.group_names(),
-                              unknowns_after_refinement(mesh.num_triangles(), mesh.num_edges(),
-                                                        mesh.num_vertices(), spec.mesh.refinements),
-                              true, limits);
+  return check_against_groups(
+      spec, mesh.group_names(),
+      unknowns_after_refinement(mesh.num_triangles(), mesh.num_edges(), mesh.num_vertices(),
+                                spec.mesh.refinements, spec.mesh.order),
+      true, limits);
 }
 
 /// solver.time_limit_s from the run's start, or none.
@@ -174,8 +175,8 @@ RunOutput run_point(const CaseSpec& spec, const RunControl& control, const CaseL
   const auto t_end = Clock::now();
   ProblemSize size;
   size.levels = disc.num_levels();
-  size.dofs = problem.qp.size();
-  size.dofs_total = disc.finest_space().num_dofs();
+  size.dofs = solution.dofs;
+  size.dofs_total = solution.dofs_total;
   size.vertices = disc.meshes().finest().num_vertices();
   size.triangles = disc.meshes().finest().num_triangles();
   RunTiming timing;

@@ -36,6 +36,9 @@ struct MeshSpec {
   std::string geo_path;  ///< kind == kGeoFile (CLI only, never from the network)
   double size = 0.25;    ///< coarse mesh size
   int refinements = 0;   ///< levels = refinements + 1
+  /// Polynomial order of the space on the finest mesh: 1 (P1 × RT0) or 2 (P2 × RT1 on top of
+  /// the lowest-order hierarchy, docs/method.md §10).
+  int order = 1;
 };
 
 struct Material {

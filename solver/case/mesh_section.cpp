@@ -232,6 +232,10 @@ ObjectRulePtr mesh_rule(const CaseReadOptions& options) {
       optional_field("refinements", refinements, defaults.refinements,
                      "uniform refinements of the coarse mesh; the multilevel hierarchy has "
                      "refinements + 1 levels"),
+      optional_field("order", integer_value(Range::closed(1, 2)), defaults.order,
+                     "polynomial order of the space on the finest mesh: 1 (P1 displacement × RT0 "
+                     "stress rows) or 2 (P2 × RT1, solved by the multilevel method on the "
+                     "order-1 levels of the same meshes)"),
   };
   r->exclusive = {{{{"builtin"}, {"geometry"}, {"msh"}, {"msh_file"}, {"geo_file"}},
                    "no mesh source: give exactly one of builtin, geometry, msh, msh_file or "
@@ -248,6 +252,7 @@ MeshSpec read_mesh_section(const json& j) {
   MeshSpec m;
   m.size = j.value("size", m.size);
   m.refinements = j.value("refinements", m.refinements);
+  m.order = j.value("order", m.order);
   if (const auto it = j.find("builtin"); it != j.end()) {
     m.kind = MeshSpec::Kind::kBuiltin;
     m.builtin = builtin_parts(*it).first;

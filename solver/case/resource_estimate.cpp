@@ -6,7 +6,8 @@
 
 namespace fosls {
 
-double bytes_per_unknown(SolverMethod method) {
+double bytes_per_unknown(SolverMethod method, int order) {
+  if (order == 2) return method == SolverMethod::kPdas ? 3460 : 2040;  // mmg; the others refused
   // tests/benchmarks/memory_calibration.py, fitted on relative error; see docs/case-format.md.
   switch (method) {
     case SolverMethod::kMmg:
@@ -22,26 +23,29 @@ double bytes_per_unknown(SolverMethod method) {
 }
 
 long long unknowns_after_refinement(long long triangles, long long edges, long long vertices,
-                                    int refinements) {
+                                    int refinements, int order) {
   long long nt = triangles, ne = edges, nv = vertices;
   for (int k = 0; k < refinements; ++k) {
     nv = nv + ne;
     ne = 2 * ne + 3 * nt;
     nt = 4 * nt;
   }
-  return 2 * nv + 2 * ne;
+  return order == 2 ? 2 * nv + 6 * ne + 4 * nt : 2 * nv + 2 * ne;
 }
 
-long long unknowns_after_refinement(double triangles, double boundary_edges, int refinements) {
+long long estimated_unknowns_after_refinement(double triangles, double boundary_edges,
+                                              int refinements, int order) {
   // A triangulated disk: 3T = 2E − B (every interior edge in two triangles) and V − E + T = 1.
   const double edges = (3 * triangles + boundary_edges) / 2;
   const double vertices = 1 + edges - triangles;
   return unknowns_after_refinement(std::llround(triangles), std::llround(edges),
-                                   std::llround(vertices), refinements);
+                                   std::llround(vertices), refinements, order);
 }
 
-ResourceEstimate estimate_resources(long long unknowns, bool exact, SolverMethod method) {
-  return {unknowns, exact, kSolveBaseBytes + bytes_per_unknown(method) * unknowns};
+ResourceEstimate estimate_resources(long long unknowns, bool exact, SolverMethod method,
+                                    int order) {
+  return {unknowns, exact, kSolveBaseBytes + bytes_per_unknown(method, order) * unknowns,
+          "/mesh/refinements", order};
 }
 
 ResourceEstimate estimate_adaptive_resources(long long max_dofs, SolverMethod method) {

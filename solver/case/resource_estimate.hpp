@@ -17,18 +17,24 @@ namespace fosls {
 /// tests/benchmarks/memory_calibration.py, docs/case-format.md "Resources").
 inline constexpr double kSolveBaseBytes = 17.9 * (1 << 20);
 
-/// The fitted slope of a method, bytes per unknown of the finest level.
-double bytes_per_unknown(SolverMethod method);
+/// The fitted slope of a method, bytes per unknown of the finest level; for mesh.order 2 (a
+/// matrix with about twice the entries per row, and the lowest-order level of the same mesh
+/// below it) measured on the same square at 115 000 and 459 000 unknowns (docs/case-format.md,
+/// "Resources").
+double bytes_per_unknown(SolverMethod method, int order = 1);
 
-/// Unknowns of the finest level (2 per vertex, 2 per edge) after `refinements` red
-/// refinements of a coarse mesh with these counts: each refinement adds a vertex per edge,
-/// halves every edge and adds three edges inside every triangle, which it splits into four.
+/// Unknowns of the finest level (order 1: 2 per vertex and per edge; order 2: 2 per vertex, 6
+/// per edge, 4 per triangle) after `refinements` red refinements of a coarse mesh with these
+/// counts: each refinement adds a vertex per edge, halves every edge and adds three edges
+/// inside every triangle, which it splits into four.
 long long unknowns_after_refinement(long long triangles, long long edges, long long vertices,
-                                    int refinements);
+                                    int refinements, int order = 1);
 
 /// The same from a coarse triangle and boundary edge count only (estimated before meshing):
-/// the other counts follow from Euler's formula for a disk.
-long long unknowns_after_refinement(double triangles, double boundary_edges, int refinements);
+/// the other counts follow from Euler's formula for a disk. (A name of its own: as an overload
+/// it won over the exact counts' version for a call with int counts.)
+long long estimated_unknowns_after_refinement(double triangles, double boundary_edges,
+                                              int refinements, int order = 1);
 
 /// What admission and `fosls-contact estimate` report.
 struct ResourceEstimate {
@@ -37,9 +43,11 @@ struct ResourceEstimate {
   double memory_bytes = 0;      ///< estimated peak resident memory of the solve
   /// The case field that sets the size: what to change when the estimate is too large.
   std::string limited_by = "/mesh/refinements";
+  int order = 1;  ///< mesh.order the estimate is for
 };
 
-ResourceEstimate estimate_resources(long long unknowns, bool exact, SolverMethod method);
+ResourceEstimate estimate_resources(long long unknowns, bool exact, SolverMethod method,
+                                    int order = 1);
 
 /// An adaptive run's peak: its finest level has at most `max_dofs` unknowns, and mmg and tnnmg
 /// keep every level of the bisection hierarchy, whose sizes fall by about 2/3 per level (about

@@ -121,7 +121,8 @@ json mesh_json(const MeshSpec& mesh) {
   static const char* const kSources[] = {"builtin", "geometry", "msh", "geo_file"};
   json m = {{"source", mesh.msh_path.empty() ? kSources[static_cast<int>(mesh.kind)] : "msh_file"},
             {"size", mesh.size},
-            {"refinements", mesh.refinements}};
+            {"refinements", mesh.refinements},
+            {"order", mesh.order}};
   // What a viewer needs to compare with a reference (e.g. the Hertz radius).
   if (mesh.kind == MeshSpec::Kind::kBuiltin) {
     m["builtin"] = mesh.builtin;

@@ -334,6 +334,10 @@ ObjectRulePtr mesh_echo_rule() {
                     "", "the mesh source of the case"),
        output_field("size", number(), "L", "mesh.size of the case"),
        output_field("refinements", count(), "1", "mesh.refinements of the case"),
+       output_field("order", count(), "1",
+                    "mesh.order of the case: 1, or 2 for the order-2 space (dofs and dofs_total "
+                    "count its DOFs; the contact output and the VTU are its lowest-order "
+                    "interpolant)"),
        optional_field("builtin", choice_value({"square", "hertz"}), nullptr,
                       "the builtin geometry (builtin meshes only)"),
        optional_field("params", params, nullptr,

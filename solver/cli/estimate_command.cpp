@@ -48,8 +48,9 @@ int run_estimate(const std::string& path, const std::string& max_memory) {
                  "make; it stops earlier once the force is accurate enough)\n";
   const long long unknowns = admission.estimate->unknowns;
   for (const MethodInfo& m : solver_methods()) {
-    const auto e = adaptive ? estimate_adaptive_resources(unknowns, m.method)
-                            : estimate_resources(unknowns, true, m.method);
+    const auto e = adaptive
+                       ? estimate_adaptive_resources(unknowns, m.method)
+                       : estimate_resources(unknowns, true, m.method, admission.spec->mesh.order);
     const auto seconds = estimated_seconds(unknowns, m.method);
     const std::string time = seconds ? describe_seconds(*seconds) : "time not estimated";
     std::printf("  %-6s %8.0f MiB  %s\n", m.name, e.memory_bytes / (1 << 20), time.c_str());

@@ -153,9 +153,11 @@ void print_result_summary(std::ostream& out, const json& r) {
   const bool converged = r.value("converged", false);
   const std::string what = converged ? "converged in " : "NOT converged: stopped after ";
   out << what << r["iterations"].get<int>() << " iterations (" << r["levels"].get<int>()
-      << " levels, " << r["dofs"].get<long long>() << " unknowns, " << g(r["timing"]["total_s"], 3)
-      << " s; relative KKT residual " << g(r["relative_kkt_residual"], 2) << ", tolerance "
-      << g(r["tolerance"], 2) << stopped_by(r) << ")\n";
+      << " levels, " << r["dofs"].get<long long>() << " unknowns"
+      << (r["mesh"].value("order", 1) == 2 ? " of order 2" : "") << ", "
+      << g(r["timing"]["total_s"], 3) << " s; relative KKT residual "
+      << g(r["relative_kkt_residual"], 2) << ", tolerance " << g(r["tolerance"], 2) << stopped_by(r)
+      << ")\n";
   print_contact(out, r);
   out << "  error estimator     J^1/2 = " << g(r["functional"]["estimator"], 3)
       << " (scaled units)\n";

@@ -13,9 +13,12 @@ Two tables, in one run on this machine (docs/validation.md §14, docs/performanc
    (b) the same with the recommended volumetric weight (c2_volumetric 0.5 at λ = 1, 2 at
    λ = ∞, docs/method.md §2.2), (c) `fosls-bench-displacement` (P1 at λ = 1, the mixed element at
    λ = ∞) at the coarsest refinement whose force is within tol — chosen knowing the reference,
-   which a user does not have, so (c) is the displacement FEM at its best.
+   which a user does not have, so (c) is the displacement FEM at its best; and (d) (a) with
+   `"mesh": {"order": 2}`, the order-2 space (docs/method.md §10).
 
-    tests/benchmarks/accuracy_table.py build/bin [--finest 6] [--fem-finest 6]
+The efficiency table has the order-2 levels too (up to --order2-finest).
+
+    tests/benchmarks/accuracy_table.py build/bin [--finest 6] [--fem-finest 6] [--order2-finest 5]
 
 References (docs/validation.md §12, §14): Hertz λ = 1 0.0125226, λ = ∞ 0.0214937 (body normal);
 the Signorini square λ = 1 0.083366, λ = ∞ 0.136701; the L-shape 0.0142673.
@@ -69,9 +72,10 @@ def run_json(cmd, case, workdir):
     return json.loads(proc.stdout), wall
 
 
-def fosls(bindir, case, refinements, tol, max_dofs, weights=None, workdir="."):
+def fosls(bindir, case, refinements, tol, max_dofs, weights=None, workdir=".", order=1):
     case = json.loads(json.dumps(case))
     case["mesh"]["refinements"] = refinements
+    case["mesh"]["order"] = order
     case.setdefault("solver", {}).pop("tolerance", None)
     case["accuracy"] = {"force": tol, "max_dofs": max_dofs}
     if weights:
@@ -91,22 +95,25 @@ def magnitude(force):
     return math.hypot(force[0], force[1])
 
 
-def efficiency_table(bindir, finest, workdir):
-    """Per level: force, true error, estimate, ratio and efficiency."""
-    print("| case | refinements | unknowns | force | true error | estimate | ratio ρ | "
+def efficiency_table(bindir, finest, order2_finest, workdir):
+    """Per level: force, true error, estimate, ratio and efficiency, for both orders."""
+    print("| case | order | refinements | unknowns | force | true error | estimate | ratio ρ | "
           "estimate / error |")
-    print("|---|---:|---:|---:|---:|---:|---:|---:|")
-    for label, (name, ref, start, _) in CASES.items():
-        result, _ = fosls(bindir, load_case(bindir, name), start, 1e-9, 2_000_000, None, workdir)
+    print("|---|---:|---:|---:|---:|---:|---:|---:|---:|")
+    for (label, (name, ref, start, _)), order in [(c, o) for o in (1, 2) for c in CASES.items()]:
+        last = finest if order == 1 else order2_finest
+        first = start if order == 1 else 1
+        result, _ = fosls(bindir, load_case(bindir, name), first, 1e-9, 2_000_000, None, workdir,
+                          order)
         for s in result["accuracy"]["steps"]:
-            if s["refinements"] > finest:
+            if s["refinements"] > last:
                 break
             force = magnitude(s["force"])
             error = abs(force - ref) / ref
             est = s["estimate"]
             ratio = f"{s['ratio']:.2f}{'' if s['ratio_observed'] else ' (assumed)'}" \
                 if s["ratio"] is not None else ""
-            print(f"| {label} | {s['refinements']} | {s['dofs']:,} | {force:.7f} | "
+            print(f"| {label} | {order} | {s['refinements']} | {s['dofs']:,} | {force:.7f} | "
                   f"{100 * error:.3f} % | "
                   f"{'' if est is None else f'{100 * est:.3f} %'} | {ratio} | "
                   f"{'' if est is None else f'{est / error:.2f}'} |".replace(",", " "))
@@ -123,8 +130,9 @@ def fem_at_best(bindir, case, ref, tol, element, fem_finest, workdir, start):
 
 def time_table(bindir, tolerances, fem_finest, max_dofs, workdir):
     print("| case | tol | (a) default: time, error, levels | (b) c2_volumetric: time, error | "
-          "(c) displacement FEM: time, error, refinements | (c)/(a) | (c)/(b) |")
-    print("|---|---:|---|---|---|---:|---:|")
+          "(d) order 2: time, error, levels | "
+          "(c) displacement FEM: time, error, refinements | (c)/(a) | (c)/(b) | (c)/(d) |")
+    print("|---|---:|---|---|---|---|---:|---:|---:|")
     for label, (name, ref, start, element) in CASES.items():
         if name == "lshape":
             continue
@@ -133,8 +141,9 @@ def time_table(bindir, tolerances, fem_finest, max_dofs, workdir):
         for tol in tolerances:
             cells = []
             times = []
-            for weights in (None, {"c2_volumetric": 2.0 if lam_inf else 0.5}):
-                result, wall = fosls(bindir, case, start, tol, max_dofs, weights, workdir)
+            variants = [(None, 1), ({"c2_volumetric": 2.0 if lam_inf else 0.5}, 1), (None, 2)]
+            for weights, order in variants:
+                result, wall = fosls(bindir, case, start, tol, max_dofs, weights, workdir, order)
                 a = result["accuracy"]
                 error = abs(magnitude(result["contact"]["force"]) - ref) / ref
                 levels = f"r{a['steps'][0]['refinements']}–{a['steps'][-1]['refinements']}"
@@ -149,7 +158,7 @@ def time_table(bindir, tolerances, fem_finest, max_dofs, workdir):
                 ratios = [f"{wall / t:.2f}" if t else "—" for t in times]
             else:
                 cells.append(f"not within tol up to refinements {fem_finest}")
-                ratios = ["—", "—"]
+                ratios = ["—", "—", "—"]
             print(f"| {label} | {100 * tol:g} % | " + " | ".join(cells) + " | " +
                   " | ".join(ratios) + " |")
 
@@ -159,12 +168,13 @@ def main():
     parser.add_argument("bindir")
     parser.add_argument("--finest", type=int, default=6)
     parser.add_argument("--fem-finest", type=int, default=6)
+    parser.add_argument("--order2-finest", type=int, default=5)
     parser.add_argument("--max-dofs", type=int, default=8_000_000)
     parser.add_argument("--tolerances", default="5e-4,1e-4")
     args = parser.parse_args()
     with tempfile.TemporaryDirectory() as workdir:
         print("Efficiency of the force error estimate (accuracy.force 1e-9: every level solved)\n")
-        efficiency_table(args.bindir, args.finest, workdir)
+        efficiency_table(args.bindir, args.finest, args.order2_finest, workdir)
         print("\nTime to a requested force accuracy (wall time of the whole process)\n")
         tolerances = [float(t) for t in args.tolerances.split(",")]
         time_table(args.bindir, tolerances, args.fem_finest, args.max_dofs, workdir)

@@ -33,7 +33,7 @@ INSTANTIATE_TEST_SUITE_P(Shipped, AccuracyExamples,
                          ::testing::Values("hertz", "hertz_accuracy", "hertz_incompressible",
                                            "hertz_adaptive", "hertz_friction", "cattaneo_mindlin",
                                            "signorini_square", "signorini_square_incompressible",
-                                           "signorini_square_adaptive"));
+                                           "signorini_square_adaptive", "signorini_square_order2"));
 
 }  // namespace
 }  // namespace fosls

@@ -49,7 +49,7 @@ long long estimated_unknowns(const GeometrySpec& g, double size) {
   SizeField field;
   field.size = size;
   const CoarseMeshEstimate e = estimate_coarse_mesh(g, field);
-  return unknowns_after_refinement(e.triangles(), e.boundary_edges, 0);
+  return estimated_unknowns_after_refinement(e.triangles(), e.boundary_edges, 0);
 }
 
 long long real_unknowns(const GeometrySpec& g, double size) {

@@ -180,8 +180,9 @@ TEST(ResultWarnings, WarningsAndTheirDetailsAgree) {
 }
 
 TEST(ResultWarnings, TheShippedExamplesNeedNoReview) {
-  for (const char* name : {"hertz", "hertz_incompressible", "signorini_square",
-                           "signorini_square_incompressible", "linear_square"}) {
+  for (const char* name :
+       {"hertz", "hertz_incompressible", "signorini_square", "signorini_square_incompressible",
+        "signorini_square_order2", "linear_square"}) {
     json j = testing::load_shipped_example(name);
     j["mesh"]["refinements"] = std::min(2, j["mesh"]["refinements"].get<int>());
     const json r = solve(j);
