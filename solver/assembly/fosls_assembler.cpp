@@ -389,10 +389,15 @@ void FoslsAssembler::set_contact_bounds(Vector& upper) const {
   }
 }
 
-Vector FoslsAssembler::full_vector(const AssembledProblem& p, const Vector& x_free) const {
-  Vector x = p.fixed_values;
-  for (int f = 0; f < space_.num_free(); ++f) x[space_.free_to_full()[f]] = x_free[f];
+Vector full_from_free(const Vector& fixed_values, const std::vector<int>& free_to_full,
+                      const Vector& x_free) {
+  Vector x = fixed_values;
+  for (std::size_t f = 0; f < free_to_full.size(); ++f) x[free_to_full[f]] = x_free[f];
   return x;
+}
+
+Vector FoslsAssembler::full_vector(const AssembledProblem& p, const Vector& x_free) const {
+  return full_from_free(p.fixed_values, space_.free_to_full(), x_free);
 }
 
 double FoslsAssembler::edge_mean_penetration(const Vector& x_full, int e) const {

@@ -97,6 +97,11 @@ class FoslsAssembler {
   std::vector<double> vertex_gap_;
 };
 
+/// The full DOF vector of a solution: the fixed DOFs' values with the free ones put in place
+/// (every space's full_vector).
+Vector full_from_free(const Vector& fixed_values, const std::vector<int>& free_to_full,
+                      const Vector& x_free);
+
 /// Constraint directions at contact vertices for groups that constrain along the obstacle
 /// normal (docs/method.md §1); empty when every contact group uses the body normal.
 std::vector<Point> obstacle_vertex_normals(const Mesh& mesh, const ProblemData& data);

@@ -349,9 +349,7 @@ void P2Rt1Assembler::add_contact_terms(const Vector& xd, SparseMatrix& a, Vector
 }
 
 Vector P2Rt1Assembler::full_vector(const AssembledProblem& p, const Vector& x_free) const {
-  Vector x = p.fixed_values;
-  for (int f = 0; f < space_.num_free(); ++f) x[space_.free_to_full()[f]] = x_free[f];
-  return x;
+  return full_from_free(p.fixed_values, space_.free_to_full(), x_free);
 }
 
 FunctionalParts P2Rt1Assembler::functional(const Vector& x_full) const {

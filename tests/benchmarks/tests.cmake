@@ -10,3 +10,7 @@ target_link_libraries(fosls-bench-displacement PRIVATE fosls_internals ${UMFPACK
 # The order-2 space's force, solved by pdas (docs/performance.md, "Order 2").
 add_executable(fosls-bench-order2 ${CMAKE_CURRENT_LIST_DIR}/order2_force.cpp)
 target_link_libraries(fosls-bench-order2 PRIVATE fosls_internals)
+
+# Three dimensions, stage 1: the multilevel method per level (docs/performance.md, "3D").
+add_executable(fosls-bench-3d ${CMAKE_CURRENT_LIST_DIR}/tet_linear.cpp)
+target_link_libraries(fosls-bench-3d PRIVATE fosls_internals)

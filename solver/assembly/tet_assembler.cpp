@@ -1,0 +1,203 @@
+#include "assembly/tet_assembler.hpp"
+
+#include <cmath>
+#include <stdexcept>
+
+#include "fem/tet_element.hpp"
+
+namespace fosls {
+
+using Mat24 = Eigen::Matrix<double, 24, 24>;
+using Vec24 = Eigen::Matrix<double, 24, 1>;
+using Row24 = Eigen::Matrix<double, 1, 24>;
+
+struct TetAssembler::Local {
+  Mat24 K;
+  Vec24 b;
+  double c = 0.0;
+};
+
+namespace {
+
+/// The functional's operators at one point of a tetrahedron on its 24 DOFs (u: 3k + c, σ:
+/// 12 + 3k + i), μ = 1.
+struct PointOperators {
+  Eigen::Matrix<double, 9, 24> constitutive;  ///< rows 3i + j of Aσ − ε(u)
+  Eigen::Matrix<double, 3, 24> asymmetry;     ///< σ_01 − σ_10, σ_02 − σ_20, σ_12 − σ_21
+};
+
+PointOperators point_operators(const TetElement& e, const Point3& x, double kappa) {
+  PointOperators op;
+  op.constitutive.setZero();
+  op.asymmetry.setZero();
+  for (int k = 0; k < 4; ++k) {
+    const Point3 psi = e.rt0(k, x);
+    for (int i = 0; i < 3; ++i)
+      for (int j = 0; j < 3; ++j) {
+        // Aσ = (σ − κ tr σ I) / (2μ);  −ε(u) = −½(∇u + ∇uᵀ).
+        op.constitutive(3 * i + j, 12 + 3 * k + i) += 0.5 * psi[j];
+        if (i == j)
+          for (int m = 0; m < 3; ++m)
+            op.constitutive(4 * i, 12 + 3 * k + m) -= 0.5 * kappa * psi[m];
+        op.constitutive(3 * i + j, 3 * k + i) -= 0.5 * e.grad[k][j];
+        op.constitutive(3 * i + j, 3 * k + j) -= 0.5 * e.grad[k][i];
+      }
+    const std::array<std::array<int, 2>, 3> pairs = {{{0, 1}, {0, 2}, {1, 2}}};
+    for (int p = 0; p < 3; ++p) {
+      const auto [i, j] = pairs[p];
+      op.asymmetry(p, 12 + 3 * k + i) += psi[j];
+      op.asymmetry(p, 12 + 3 * k + j) -= psi[i];
+    }
+  }
+  return op;
+}
+
+Eigen::Matrix<double, 3, 24> divergence_operator(const TetElement& e) {
+  Eigen::Matrix<double, 3, 24> d = Eigen::Matrix<double, 3, 24>::Zero();
+  for (int k = 0; k < 4; ++k)
+    for (int i = 0; i < 3; ++i) d(i, 12 + 3 * k + i) = e.rt0_div(k);
+  return d;
+}
+
+Eigen::Vector3d evaluate(const std::array<ScalarFunction3, 3>& f, const Point3& x, double scale) {
+  Eigen::Vector3d v;
+  for (int i = 0; i < 3; ++i) v[i] = f[i] ? f[i](x) / scale : 0.0;
+  return v;
+}
+
+}  // namespace
+
+TetAssembler::TetAssembler(const TetSpace& space, const TetProblemData& data)
+    : space_(space), data_(data) {
+  mu_ = data.material.mu;
+  if (!(mu_ > 0)) throw std::invalid_argument("mu must be positive");
+  const double lambda = data.material.lambda / mu_;
+  kappa_ = data.material.incompressible() ? 1.0 / 3.0 : lambda / (3.0 * lambda + 2.0);
+}
+
+void TetAssembler::element_kernel(int t, Local& out) const {
+  const FunctionalWeights& w = data_.weights;
+  const TetElement e(space_.mesh(), t);
+  const auto div = divergence_operator(e);
+  const double wq = 0.25 * e.volume;
+  out.K.setZero();
+  out.b.setZero();
+  out.c = 0.0;
+  for (const Point3& x : tet_quadrature_points(e)) {
+    const PointOperators op = point_operators(e, x, kappa_);
+    out.K.noalias() += (2.0 * w.c2 * wq) * op.constitutive.transpose() * op.constitutive;
+    if (w.c2_volumetric != 1.0) {
+      // |R|² = |dev R|² + ⅓ (tr R)²: the volumetric part re-weighted (docs/method.md §2.2).
+      const Row24 trace = op.constitutive.row(0) + op.constitutive.row(4) + op.constitutive.row(8);
+      out.K.noalias() +=
+          (2.0 * w.c2 * wq * (w.c2_volumetric - 1.0) / 3.0) * trace.transpose() * trace;
+    }
+    if (w.c4 != 0.0) out.K.noalias() += (2.0 * w.c4 * wq) * op.asymmetry.transpose() * op.asymmetry;
+    const Eigen::Vector3d f = evaluate(data_.body_force, x, mu_);
+    out.b.noalias() -= (2.0 * w.c1 * wq) * div.transpose() * f;
+    out.c += w.c1 * wq * f.squaredNorm();
+  }
+  out.K.noalias() += (2.0 * w.c1 * e.volume) * div.transpose() * div;
+}
+
+Vector TetAssembler::essential_values() const {
+  const TetMesh& mesh = space_.mesh();
+  Vector xd = Vector::Zero(space_.num_dofs());
+  for (int f = 0; f < mesh.num_faces(); ++f) {
+    const int g = mesh.face_group(f);
+    if (g < 0) continue;
+    const TetProblemData::Group& gd = data_.groups[g];
+    const auto& v = mesh.face(f);
+    if (gd.role == GroupRole::kDirichlet) {
+      for (int a : v) xd.segment<3>(space_.u_dof(a, 0)) = evaluate(gd.values, mesh.vertex(a), 1.0);
+    } else {
+      // ∫_f t dA by the edge-midpoint rule (exact for degree 2), in units of μ.
+      Eigen::Vector3d flux = Eigen::Vector3d::Zero();
+      for (int k = 0; k < 3; ++k)
+        flux += evaluate(gd.values, 0.5 * (mesh.vertex(v[k]) + mesh.vertex(v[(k + 1) % 3])), mu_);
+      xd.segment<3>(space_.sigma_dof(f, 0)) = flux * mesh.face_area(f) / 3.0;
+    }
+  }
+  for (int d = 0; d < space_.num_dofs(); ++d)
+    if (!space_.fixed(d)) xd[d] = 0.0;
+  return xd;
+}
+
+TetAssembledProblem TetAssembler::assemble_system() const {
+  const TetMesh& mesh = space_.mesh();
+  const int n = space_.num_free();
+  TetAssembledProblem out;
+  out.stress_scale = mu_;
+  const Vector xd = essential_values();
+  std::vector<Eigen::Triplet<double>> a;
+  a.reserve(static_cast<std::size_t>(mesh.num_tets()) * 24 * 24);
+  Vector b = Vector::Zero(n);
+  double c = 0.0;
+  Local loc;
+  for (int t = 0; t < mesh.num_tets(); ++t) {
+    element_kernel(t, loc);
+    const auto dofs = space_.tet_dofs(t);
+    c += loc.c;
+    for (int i = 0; i < 24; ++i) {
+      const int fi = space_.free_index(dofs[i]);
+      if (fi < 0) {
+        const double xi = xd[dofs[i]];
+        c -= loc.b[i] * xi;
+        for (int j = 0; j < 24; ++j)
+          if (space_.free_index(dofs[j]) < 0) c += 0.5 * loc.K(i, j) * xi * xd[dofs[j]];
+        continue;
+      }
+      double bi = loc.b[i];
+      for (int j = 0; j < 24; ++j) {
+        const int fj = space_.free_index(dofs[j]);
+        if (fj >= 0)
+          a.emplace_back(fi, fj, loc.K(i, j));
+        else
+          bi -= loc.K(i, j) * xd[dofs[j]];
+      }
+      b[fi] += bi;
+    }
+  }
+  out.qp.A.resize(n, n);
+  out.qp.A.setFromTriplets(a.begin(), a.end());
+  out.qp.b = std::move(b);
+  out.qp.constant = c;
+  out.qp.lower = Vector::Constant(n, -kNoBound);
+  out.qp.upper = Vector::Constant(n, kNoBound);
+  out.fixed_values = xd;
+  return out;
+}
+
+Vector TetAssembler::full_vector(const TetAssembledProblem& p, const Vector& x_free) const {
+  return full_from_free(p.fixed_values, space_.free_to_full(), x_free);
+}
+
+FunctionalParts TetAssembler::functional(const Vector& x_full) const {
+  const TetMesh& mesh = space_.mesh();
+  const FunctionalWeights& w = data_.weights;
+  FunctionalParts parts;
+  parts.element.assign(mesh.num_tets(), 0.0);
+  for (int t = 0; t < mesh.num_tets(); ++t) {
+    const TetElement e(mesh, t);
+    const auto dofs = space_.tet_dofs(t);
+    Vec24 xl;
+    for (int i = 0; i < 24; ++i) xl[i] = x_full[dofs[i]];
+    const Eigen::Vector3d div = divergence_operator(e) * xl;
+    double m = 0, c = 0, as = 0;
+    for (const Point3& x : tet_quadrature_points(e)) {
+      const PointOperators op = point_operators(e, x, kappa_);
+      const double wq = 0.25 * e.volume;
+      m += w.c1 * wq * (div + evaluate(data_.body_force, x, mu_)).squaredNorm();
+      const Eigen::Matrix<double, 9, 1> r = op.constitutive * xl;
+      c += w.c2 * wq * r.squaredNorm();
+      if (w.c2_volumetric != 1.0)
+        c += w.c2 * wq * (w.c2_volumetric - 1.0) / 3.0 * std::pow(r[0] + r[4] + r[8], 2);
+      as += w.c4 * wq * (op.asymmetry * xl).squaredNorm();
+    }
+    parts.element[t] = m + c + as;
+    parts.momentum += m, parts.constitutive += c, parts.asymmetry += as;
+  }
+  return parts;
+}
+
+}  // namespace fosls

@@ -1,0 +1,61 @@
+#pragma once
+// Assembly of the FOSLS functional in three dimensions (docs/method.md §11, stage 1: linear
+// elasticity) into the BoxQp every solver works on (here without bounds).
+
+#include <functional>
+#include <vector>
+
+#include "assembly/fosls_assembler.hpp"
+#include "core/box_qp.hpp"
+#include "fem/tet_space.hpp"
+
+namespace fosls {
+
+using ScalarFunction3 = std::function<double(const Point3&)>;
+
+/// A 3D problem: material, weights (c1 c2 c4 and c2_volumetric; no contact term), body force
+/// and per mesh group its role and data (u_D or t_N, Cartesian components; empty is zero).
+struct TetProblemData {
+  ElasticMaterial material;
+  FunctionalWeights weights;
+  std::array<ScalarFunction3, 3> body_force;
+  struct Group {
+    GroupRole role = GroupRole::kNeumann;
+    std::array<ScalarFunction3, 3> values;
+  };
+  std::vector<Group> groups;  ///< indexed like TetMesh::group_names()
+  std::vector<GroupRole> roles() const {
+    std::vector<GroupRole> r;
+    for (const Group& g : groups) r.push_back(g.role);
+    return r;
+  }
+};
+
+struct TetAssembledProblem {
+  BoxQp qp;             ///< over the free DOFs, stresses in units of μ
+  Vector fixed_values;  ///< full vector: the fixed DOFs' values, zero elsewhere
+  double stress_scale = 1.0;
+};
+
+class TetAssembler {
+ public:
+  TetAssembler(const TetSpace& space, const TetProblemData& data);
+
+  TetAssembledProblem assemble_system() const;
+  Vector full_vector(const TetAssembledProblem& p, const Vector& x_free) const;
+  /// J at a full DOF vector: momentum, constitutive and asymmetry terms (`element` per
+  /// tetrahedron).
+  FunctionalParts functional(const Vector& x_full) const;
+
+ private:
+  struct Local;
+  void element_kernel(int t, Local& out) const;
+  Vector essential_values() const;
+
+  const TetSpace& space_;
+  const TetProblemData& data_;
+  double mu_ = 1.0;
+  double kappa_ = 1.0 / 3.0;  ///< λ / (3λ + 2μ), → ⅓ as λ → ∞
+};
+
+}  // namespace fosls

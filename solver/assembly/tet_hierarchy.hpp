@@ -1,0 +1,43 @@
+#pragma once
+// The 3D levels for the multilevel solvers (docs/method.md §11): transfers between the spaces
+// of a tetrahedral hierarchy and the vertex patches, as a LevelHierarchy — the solvers
+// themselves are the 2D ones, which see matrices, patches and transfers only.
+
+#include <memory>
+#include <vector>
+
+#include "assembly/tet_assembler.hpp"
+#include "core/level_hierarchy.hpp"
+#include "mesh/tet_refinement.hpp"
+
+namespace fosls {
+
+/// P_j between full Cartesian DOF vectors: u by P1 interpolation; σ: a fine face inside a
+/// coarse face carries a quarter of its flux (with the sign of the two normals' agreement), a
+/// fine face inside a coarse tetrahedron the exact flux of the coarse (linear) RT0 field.
+Eigen::SparseMatrix<double> tet_prolongation(const TetMesh& coarse, const TetMesh& fine,
+                                             const TetRefinementMaps& maps);
+
+/// The vertex patches of a space in its free numbering: the vertex's u DOFs and the σ DOFs of
+/// every face through it (the Arnold–Falk–Winther star), swept in vertex order.
+std::vector<std::vector<int>> tet_vertex_patches(const TetSpace& space);
+
+/// A case's 3D discretisation on all levels: spaces, the finest level's QP and the hierarchy.
+class TetDiscretization {
+ public:
+  TetDiscretization(TetHierarchy meshes, TetProblemData data);
+  const TetHierarchy& meshes() const { return meshes_; }
+  const TetSpace& finest_space() const { return *spaces_.back(); }
+  const TetAssembler& assembler() const { return *assembler_; }
+  const TetAssembledProblem& problem() const { return problem_; }
+  LevelHierarchy build_level_hierarchy() const;
+
+ private:
+  TetHierarchy meshes_;
+  TetProblemData data_;
+  std::vector<std::unique_ptr<TetSpace>> spaces_;
+  std::unique_ptr<TetAssembler> assembler_;
+  TetAssembledProblem problem_;
+};
+
+}  // namespace fosls

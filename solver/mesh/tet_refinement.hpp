@@ -1,0 +1,50 @@
+#pragma once
+// Uniform refinement of tetrahedral meshes (each tetrahedron into eight, Bey's red refinement)
+// and the nested hierarchy T_1 ⊂ … ⊂ T_J of the 3D multilevel method (docs/method.md §11);
+// the built-in box mesh.
+
+#include <vector>
+
+#include "mesh/tet_mesh.hpp"
+
+namespace fosls {
+
+/// Parent/child relation between a tetrahedral mesh and its red refinement. Fine vertex
+/// v < num_coarse_vertices is coarse vertex v; fine vertex num_coarse_vertices + k is the
+/// midpoint of the coarse edge midpoint_ends[k].
+struct TetRefinementMaps {
+  int num_coarse_vertices = 0;
+  std::vector<std::array<int, 2>> midpoint_ends;
+  /// For each fine face inside a coarse face (a quarter of it): that face; −1 otherwise.
+  std::vector<int> parent_face;
+  /// For each fine face inside a coarse tetrahedron: that tetrahedron; −1 otherwise.
+  std::vector<int> parent_tet_of_face;
+  /// For each fine tetrahedron: the coarse one that contains it.
+  std::vector<int> tet_parent;
+};
+
+struct TetRefinement {
+  TetMesh fine;
+  TetRefinementMaps maps;
+};
+
+/// Every tetrahedron (x0, x1, x2, x3) into its four corner tetrahedra and four from the inner
+/// octahedron, cut along the diagonal x02–x13 (Bey 1995: the vertex order of the children keeps
+/// the shapes of the refinements of a tetrahedron in finitely many classes).
+TetRefinement refine_tets_uniformly(const TetMesh& coarse);
+
+struct TetHierarchy {
+  std::vector<TetMesh> meshes;
+  std::vector<TetRefinementMaps> maps;  ///< maps[j]: level j−1 to j (maps[0] empty)
+  int num_levels() const { return static_cast<int>(meshes.size()); }
+  const TetMesh& finest() const { return meshes.back(); }
+};
+
+TetHierarchy build_tet_hierarchy(TetMesh coarse, int refinements);
+
+/// The box [0, lx] × [0, ly] × [0, lz] in n_x × n_y × n_z cubes of six Kuhn tetrahedra each (a
+/// conforming mesh whose red refinements stay in three shape classes); boundary groups left,
+/// right (x = 0, lx), front, back (y), bottom, top (z).
+TetMesh make_box(const std::array<int, 3>& cells, const Point3& lengths = Point3(1, 1, 1));
+
+}  // namespace fosls
