@@ -1,6 +1,7 @@
 #include "assembly/tet_assembler.hpp"
 
 #include <cmath>
+#include <limits>
 #include <stdexcept>
 
 #include "fem/tet_element.hpp"
@@ -73,6 +74,49 @@ TetAssembler::TetAssembler(const TetSpace& space, const TetProblemData& data)
   if (!(mu_ > 0)) throw std::invalid_argument("mu must be positive");
   const double lambda = data.material.lambda / mu_;
   kappa_ = data.material.incompressible() ? 1.0 / 3.0 : lambda / (3.0 * lambda + 2.0);
+  const TetMesh& mesh = space.mesh();
+  vertex_gap_.assign(mesh.num_vertices(), std::numeric_limits<double>::infinity());
+  for (int f = 0; f < mesh.num_faces(); ++f) {
+    if (!space.is_contact_face(f)) continue;
+    const ScalarFunction3& gap = data.groups[mesh.face_group(f)].gap;
+    for (int v : mesh.face(f))
+      vertex_gap_[v] = std::min(vertex_gap_[v], gap ? gap(mesh.vertex(v)) : 0.0);
+  }
+}
+
+void TetAssembler::rotate_local(int t, Local& loc) const {
+  const TetMesh& mesh = space_.mesh();
+  auto rotate = [&loc](int o, const Eigen::Matrix3d& q) {
+    loc.K.middleCols<3>(o) = (loc.K.middleCols<3>(o) * q).eval();
+    loc.K.middleRows<3>(o) = (q.transpose() * loc.K.middleRows<3>(o)).eval();
+    loc.b.segment<3>(o) = (q.transpose() * loc.b.segment<3>(o)).eval();
+  };
+  for (int k = 0; k < 4; ++k) {
+    if (const int v = mesh.tet(t)[k]; space_.is_contact_vertex(v))
+      rotate(3 * k, space_.vertex_frame(v));
+    if (const int f = mesh.tet_face(t, k); space_.is_contact_face(f))
+      rotate(12 + 3 * k, normal_frame(mesh.face_normal(f)));
+  }
+}
+
+std::vector<std::pair<int, double>> TetAssembler::contact_couplings(int f) const {
+  const TetMesh& mesh = space_.mesh();
+  const double c3 = data_.weights.c3 / 3.0;  // the mean of u·n over the face, times |f| σ_nn = S_n
+  std::vector<std::pair<int, double>> out;
+  for (int v : mesh.face(f)) {
+    if (space_.is_contact_vertex(v)) {
+      out.emplace_back(space_.u_dof(v, 0), c3);
+    } else {
+      for (int c = 0; c < 3; ++c) out.emplace_back(space_.u_dof(v, c), c3 * mesh.face_normal(f)[c]);
+    }
+  }
+  return out;
+}
+
+double TetAssembler::contact_gap_term(int f) const {
+  double g = 0.0;
+  for (int v : space_.mesh().face(f)) g += vertex_gap_[v];
+  return data_.weights.c3 * g / 3.0;
 }
 
 void TetAssembler::element_kernel(int t, Local& out) const {
@@ -136,6 +180,7 @@ TetAssembledProblem TetAssembler::assemble_system() const {
   Local loc;
   for (int t = 0; t < mesh.num_tets(); ++t) {
     element_kernel(t, loc);
+    rotate_local(t, loc);
     const auto dofs = space_.tet_dofs(t);
     c += loc.c;
     for (int i = 0; i < 24; ++i) {
@@ -158,12 +203,30 @@ TetAssembledProblem TetAssembler::assemble_system() const {
       b[fi] += bi;
     }
   }
+  for (int f = 0; f < mesh.num_faces(); ++f) {
+    if (!space_.is_contact_face(f)) continue;
+    const int s = space_.free_index(space_.sigma_dof(f, 0));
+    b[s] += contact_gap_term(f);
+    for (const auto& [dof, value] : contact_couplings(f)) {
+      if (const int fu = space_.free_index(dof); fu >= 0) {
+        a.emplace_back(s, fu, value);
+        a.emplace_back(fu, s, value);
+      } else {
+        b[s] -= value * xd[dof];
+      }
+    }
+  }
   out.qp.A.resize(n, n);
   out.qp.A.setFromTriplets(a.begin(), a.end());
   out.qp.b = std::move(b);
   out.qp.constant = c;
   out.qp.lower = Vector::Constant(n, -kNoBound);
   out.qp.upper = Vector::Constant(n, kNoBound);
+  for (int i = 0; i < n; ++i) {
+    const int d = space_.free_to_full()[i];
+    if (space_.role(d) == DofRole::kNormalU) out.qp.upper[i] = vertex_gap_[d / 3];
+    if (space_.role(d) == DofRole::kNormalS) out.qp.upper[i] = 0.0;
+  }
   out.fixed_values = xd;
   return out;
 }
@@ -175,13 +238,14 @@ Vector TetAssembler::full_vector(const TetAssembledProblem& p, const Vector& x_f
 FunctionalParts TetAssembler::functional(const Vector& x_full) const {
   const TetMesh& mesh = space_.mesh();
   const FunctionalWeights& w = data_.weights;
+  const Vector x_cart = space_.rotation() * x_full;
   FunctionalParts parts;
   parts.element.assign(mesh.num_tets(), 0.0);
   for (int t = 0; t < mesh.num_tets(); ++t) {
     const TetElement e(mesh, t);
     const auto dofs = space_.tet_dofs(t);
     Vec24 xl;
-    for (int i = 0; i < 24; ++i) xl[i] = x_full[dofs[i]];
+    for (int i = 0; i < 24; ++i) xl[i] = x_cart[dofs[i]];
     const Eigen::Vector3d div = divergence_operator(e) * xl;
     double m = 0, c = 0, as = 0;
     for (const Point3& x : tet_quadrature_points(e)) {
@@ -197,7 +261,24 @@ FunctionalParts TetAssembler::functional(const Vector& x_full) const {
     parts.element[t] = m + c + as;
     parts.momentum += m, parts.constitutive += c, parts.asymmetry += as;
   }
+  for (int f = 0; f < mesh.num_faces(); ++f) {
+    if (!space_.is_contact_face(f)) continue;
+    const double sn = x_full[space_.sigma_dof(f, 0)];
+    double term = -contact_gap_term(f) * sn;
+    for (const auto& [dof, value] : contact_couplings(f)) term += value * x_full[dof] * sn;
+    parts.contact += term;
+    parts.element[mesh.face_tets(f)[0]] += term;
+  }
   return parts;
+}
+
+Point3 TetAssembler::contact_force(const Vector& x_full) const {
+  const TetMesh& mesh = space_.mesh();
+  Point3 force = Point3::Zero();
+  for (int f = 0; f < mesh.num_faces(); ++f)
+    if (space_.is_contact_face(f))
+      force += normal_frame(mesh.face_normal(f)) * x_full.segment<3>(space_.sigma_dof(f, 0));
+  return mu_ * force;
 }
 
 }  // namespace fosls

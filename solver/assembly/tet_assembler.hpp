@@ -13,8 +13,8 @@ namespace fosls {
 
 using ScalarFunction3 = std::function<double(const Point3&)>;
 
-/// A 3D problem: material, weights (c1 c2 c4 and c2_volumetric; no contact term), body force
-/// and per mesh group its role and data (u_D or t_N, Cartesian components; empty is zero).
+/// A 3D problem: material, weights, body force and per mesh group its role and data (u_D or
+/// t_N, Cartesian components, empty is zero; for contact the gap g ≥ u·n along the body normal).
 struct TetProblemData {
   ElasticMaterial material;
   FunctionalWeights weights;
@@ -22,6 +22,7 @@ struct TetProblemData {
   struct Group {
     GroupRole role = GroupRole::kNeumann;
     std::array<ScalarFunction3, 3> values;
+    ScalarFunction3 gap;  ///< contact
   };
   std::vector<Group> groups;  ///< indexed like TetMesh::group_names()
   std::vector<GroupRole> roles() const {
@@ -43,19 +44,29 @@ class TetAssembler {
 
   TetAssembledProblem assemble_system() const;
   Vector full_vector(const TetAssembledProblem& p, const Vector& x_free) const;
-  /// J at a full DOF vector: momentum, constitutive and asymmetry terms (`element` per
-  /// tetrahedron).
+  /// J at a full DOF vector (`element` per tetrahedron, the contact term of a contact face
+  /// added to its tetrahedron's).
   FunctionalParts functional(const Vector& x_full) const;
+  /// ∫_Γ_C σn dA in physical units: the obstacle's force on the body.
+  Point3 contact_force(const Vector& x_full) const;
 
  private:
   struct Local;
   void element_kernel(int t, Local& out) const;
+  /// The local matrix and vector in the rotated coordinates of contact vertices and faces.
+  void rotate_local(int t, Local& loc) const;
   Vector essential_values() const;
+  /// C3 ⟨u·n − g, σ_nn⟩ on face f as (DOF, coefficient of S_n) pairs — u·n linear between the
+  /// vertices (U_n at a contact vertex, n_f·u at a Dirichlet one), σ_nn = S_n/|f| — and the
+  /// gap's part.
+  std::vector<std::pair<int, double>> contact_couplings(int f) const;
+  double contact_gap_term(int f) const;
 
   const TetSpace& space_;
   const TetProblemData& data_;
   double mu_ = 1.0;
-  double kappa_ = 1.0 / 3.0;  ///< λ / (3λ + 2μ), → ⅓ as λ → ∞
+  double kappa_ = 1.0 / 3.0;        ///< λ / (3λ + 2μ), → ⅓ as λ → ∞
+  std::vector<double> vertex_gap_;  ///< g at the vertices of contact faces, +inf elsewhere
 };
 
 }  // namespace fosls

@@ -1,5 +1,10 @@
 #include "assembly/tet_hierarchy.hpp"
 
+#include <algorithm>
+#include <cmath>
+#include <map>
+#include <set>
+
 #include "fem/tet_element.hpp"
 
 namespace fosls {
@@ -56,6 +61,86 @@ std::vector<std::vector<int>> tet_vertex_patches(const TetSpace& space) {
   return patches;
 }
 
+namespace {
+
+/// Contact links between a level and the one below (docs/method.md §4.3 in 3D): one per coarse
+/// contact edge for U_n (its ends and the fine midpoint, interpolated with ½, ½ as in 2D) and
+/// two per coarse contact face for S_n (its four quarters, each with weight ¼), so that the 2D
+/// projections of the defect obstacle apply unchanged.
+std::vector<ContactLink> tet_contact_links(const TetSpace& coarse, const TetSpace& fine,
+                                           const TetRefinementMaps& maps,
+                                           const SparseMatrix& prolongation) {
+  const TetMesh& cm = coarse.mesh();
+  std::map<std::pair<int, int>, int> midpoint;
+  for (std::size_t k = 0; k < maps.midpoint_ends.size(); ++k)
+    midpoint[{maps.midpoint_ends[k][0], maps.midpoint_ends[k][1]}] =
+        maps.num_coarse_vertices + static_cast<int>(k);
+  auto normal_u = [](const TetSpace& s, int v) {
+    return s.is_contact_vertex(v) ? s.free_index(s.u_dof(v, 0)) : -1;
+  };
+  std::vector<ContactLink> links;
+  std::set<std::pair<int, int>> edges;
+  std::vector<std::vector<int>> quarters(cm.num_faces());
+  for (int f = 0; f < fine.mesh().num_faces(); ++f)
+    if (const int parent = maps.parent_face[f]; parent >= 0 && coarse.is_contact_face(parent))
+      quarters[parent].push_back(f);
+  for (int F = 0; F < cm.num_faces(); ++F) {
+    if (!coarse.is_contact_face(F)) continue;
+    const auto& v = cm.face(F);
+    for (int k = 0; k < 3; ++k) {
+      const std::pair<int, int> e = std::minmax(v[k], v[(k + 1) % 3]);
+      if (!edges.insert(e).second) continue;
+      ContactLink link;
+      link.coarse_un_a = normal_u(coarse, e.first);
+      link.coarse_un_b = normal_u(coarse, e.second);
+      link.fine_un_a = normal_u(fine, e.first);
+      link.fine_un_b = normal_u(fine, e.second);
+      link.fine_un_mid = normal_u(fine, midpoint.at(e));
+      links.push_back(link);
+    }
+    const int coarse_sn = coarse.free_index(coarse.sigma_dof(F, 0));
+    for (std::size_t q = 0; q + 1 < quarters[F].size(); q += 2) {
+      ContactLink link;
+      link.coarse_sn = coarse_sn;
+      for (int k = 0; k < 2; ++k) {
+        link.fine_sn[k] = fine.free_index(fine.sigma_dof(quarters[F][q + k], 0));
+        link.sn_weight[k] = prolongation.coeff(link.fine_sn[k], coarse_sn);
+      }
+      links.push_back(link);
+    }
+  }
+  return links;
+}
+
+/// Free DOFs of the tetrahedra within two layers of the contact boundary, sorted: the strip
+/// smoother's block (docs/method.md §4.1; two layers as in 2D).
+std::vector<int> tet_contact_strip(const TetSpace& space) {
+  const TetMesh& mesh = space.mesh();
+  std::vector<char> near(mesh.num_vertices(), 0);
+  for (int f = 0; f < mesh.num_faces(); ++f)
+    if (space.is_contact_face(f))
+      for (int v : mesh.face(f)) near[v] = 1;
+  auto touches = [&](int t) {
+    const auto& v = mesh.tet(t);
+    return near[v[0]] || near[v[1]] || near[v[2]] || near[v[3]];
+  };
+  std::vector<char> second = near;
+  for (int t = 0; t < mesh.num_tets(); ++t)
+    if (touches(t))
+      for (int v : mesh.tet(t)) second[v] = 1;
+  near = second;
+  std::vector<int> strip;
+  for (int t = 0; t < mesh.num_tets(); ++t)
+    if (touches(t))
+      for (int dof : space.tet_dofs(t))
+        if (const int f = space.free_index(dof); f >= 0) strip.push_back(f);
+  std::sort(strip.begin(), strip.end());
+  strip.erase(std::unique(strip.begin(), strip.end()), strip.end());
+  return strip;
+}
+
+}  // namespace
+
 TetDiscretization::TetDiscretization(TetHierarchy meshes, TetProblemData data)
     : meshes_(std::move(meshes)), data_(std::move(data)) {
   for (const TetMesh& m : meshes_.meshes)
@@ -73,20 +158,25 @@ LevelHierarchy TetDiscretization::build_level_hierarchy() const {
     level.num_dofs = fine.num_free();
     level.patches = tet_vertex_patches(fine);
     level.patch_split = {0, 0};  // one thread: every patch in the sequential part
+    level.contact_strip = tet_contact_strip(fine);
     if (j == 0) continue;
     const TetSpace& coarse = *spaces_[j - 1];
+    // In both levels' rotated coordinates (contact frames), like the 2D free_prolongation.
     const Eigen::SparseMatrix<double> full =
-        tet_prolongation(coarse.mesh(), fine.mesh(), meshes_.maps[j]);
+        fine.rotation().transpose() *
+        tet_prolongation(coarse.mesh(), fine.mesh(), meshes_.maps[j]) * coarse.rotation();
     std::vector<Eigen::Triplet<double>> t;
     for (int col = 0; col < full.outerSize(); ++col) {
       const int fc = coarse.free_index(col);
       if (fc < 0) continue;
       for (Eigen::SparseMatrix<double>::InnerIterator it(full, col); it; ++it)
-        if (const int fr = fine.free_index(static_cast<int>(it.row())); fr >= 0)
+        if (const int fr = fine.free_index(static_cast<int>(it.row()));
+            fr >= 0 && std::abs(it.value()) > 1e-14)
           t.emplace_back(fr, fc, it.value());
     }
     level.prolongation.resize(fine.num_free(), coarse.num_free());
     level.prolongation.setFromTriplets(t.begin(), t.end());
+    level.links = tet_contact_links(coarse, fine, meshes_.maps[j], level.prolongation);
   }
   return h;
 }

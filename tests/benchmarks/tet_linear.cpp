@@ -7,7 +7,10 @@
 //   build/bin/fosls-bench-3d --header
 //   for l in 1 inf; do for r in 1 2 3 4; do build/bin/fosls-bench-3d $l $r; done; done
 //
-// One process per row, so that its peak memory is that row's.
+// One process per row, so that its peak memory is that row's. With a third argument `contact`
+// (and optionally `pdas`, or `nostrip` for mmg without the contact-strip solves) the problem is the
+// 3D Signorini block of tests/solver/tet_contact_test.cpp instead (stage 2), solved to a relative
+// KKT residual of 1e-8.
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -15,6 +18,7 @@
 #include <limits>
 #include <string>
 
+#include "../tet_problems.hpp"
 #include "assembly/tet_hierarchy.hpp"
 #include "core/peak_memory.hpp"
 #include "solvers/solve_loop.hpp"
@@ -55,23 +59,41 @@ int main(int argc, char** argv) {
         "peak memory |\n|---|---:|---:|---:|---:|---:|---:|---:|\n");
     return 0;
   }
-  if (argc != 3) {
-    std::fprintf(stderr, "usage: fosls-bench-3d --header | fosls-bench-3d LAMBDA REFINEMENTS\n");
+  if (argc < 3 || argc > 5) {
+    std::fprintf(stderr,
+                 "usage: fosls-bench-3d --header | fosls-bench-3d LAMBDA REFINEMENTS [contact "
+                 "[pdas|nostrip]]\n");
     return 2;
   }
+  const bool contact = argc >= 4 && std::string(argv[3]) == "contact";
+  const bool pdas = argc == 5 && std::string(argv[4]) == "pdas";
+  const bool no_strip = argc == 5 && std::string(argv[4]) == "nostrip";
   const double lambda =
       std::string(argv[1]) == "inf" ? std::numeric_limits<double>::infinity() : std::atof(argv[1]);
   const int r = std::atoi(argv[2]);
   const auto t0 = Clock::now();
-  const TetDiscretization disc(build_tet_hierarchy(make_box({2, 2, 2}), r), problem(lambda));
+  const TetDiscretization disc(build_tet_hierarchy(make_box({2, 2, 2}), r),
+                               contact ? testing::signorini_block(lambda) : problem(lambda));
   const double assembly_s = seconds_since(t0);
   const auto t1 = Clock::now();
   Vector x = Vector::Zero(disc.problem().qp.size());
-  const SolverReport report =
-      solve_box_qp(disc.problem().qp, disc.build_level_hierarchy(), SolverOptions{}, {}, x);
-  std::printf("| %s | %d | %d | %d | %d%s | %.2f s | %.2f s | %.0f MiB |\n", argv[1], r,
-              disc.meshes().finest().num_tets(), disc.problem().qp.size(), report.iterations,
-              report.converged ? "" : " (NOT converged)", assembly_s, seconds_since(t1),
-              peak_rss_mib());
+  SolverOptions options;
+  if (pdas) options.method = SolverMethod::kPdas;
+  options.multilevel.strip = !no_strip;
+  const SolverReport report = solve_box_qp(
+      disc.problem().qp, pdas ? LevelHierarchy{} : disc.build_level_hierarchy(), options, {}, x);
+  const TetAssembler& a = disc.assembler();
+  const double force = a.contact_force(a.full_vector(disc.problem(), x)).z();
+  std::printf("| %s | %d | %d | %d | %s %d%s | %.2f s | %.2f s | %.0f MiB |", argv[1], r,
+              disc.meshes().finest().num_tets(), disc.problem().qp.size(), pdas ? "pdas" : "mmg",
+              report.iterations, report.converged ? "" : " (NOT converged)", assembly_s,
+              seconds_since(t1), peak_rss_mib());
+  if (contact)
+    std::printf(
+        " F_z = %.8f | galerkin %.2f s, smoothing %.2f s, strip %.2f s, coarse %.2f s, "
+        "set-up %.2f s |",
+        force, report.cycle.galerkin_s, report.cycle.smoothing_s, report.cycle.strip_s,
+        report.cycle.coarse_s, report.setup_s);
+  std::printf("\n");
   return 0;
 }
