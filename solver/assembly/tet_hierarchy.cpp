@@ -112,8 +112,9 @@ std::vector<ContactLink> tet_contact_links(const TetSpace& coarse, const TetSpac
   return links;
 }
 
-/// Free DOFs of the tetrahedra within two layers of the contact boundary, sorted: the strip
-/// smoother's block (docs/method.md §4.1; two layers as in 2D).
+/// Free DOFs of the tetrahedra touching the contact boundary, sorted: the strip smoother's
+/// block (docs/method.md §4.1). One layer, not 2D's two: in 3D the strip is a slab whose exact
+/// solve dominated the solve with two (docs/performance.md, "3D").
 std::vector<int> tet_contact_strip(const TetSpace& space) {
   const TetMesh& mesh = space.mesh();
   std::vector<char> near(mesh.num_vertices(), 0);
@@ -124,11 +125,6 @@ std::vector<int> tet_contact_strip(const TetSpace& space) {
     const auto& v = mesh.tet(t);
     return near[v[0]] || near[v[1]] || near[v[2]] || near[v[3]];
   };
-  std::vector<char> second = near;
-  for (int t = 0; t < mesh.num_tets(); ++t)
-    if (touches(t))
-      for (int v : mesh.tet(t)) second[v] = 1;
-  near = second;
   std::vector<int> strip;
   for (int t = 0; t < mesh.num_tets(); ++t)
     if (touches(t))

@@ -1,7 +1,7 @@
 // Three dimensions, stage 2 (docs/method.md §11): frictionless contact of a block pressed onto a
 // curved gap — the 3D Signorini block. The monotone multilevel method keeps J non-increasing and
 // every iterate feasible after each smoother sweep and coarse correction, agrees with pdas on
-// the same discrete problem, and converges in at most 40 iterations (not yet flat over levels).
+// the same discrete problem, and converges in at most 45 iterations (not yet flat over levels).
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -61,7 +61,7 @@ TEST_P(TetContact, MonotoneFeasibleAndEqualToPdas) {
     EXPECT_NEAR(f_mmg.x(), 0.0, 1e-6 * f_pdas.z());  // symmetric about x = ½ and y = ½
     std::printf("λ = %g, r = %d: %d unknowns, mmg %d iterations, F_z %.8f (pdas %.8f)\n",
                 GetParam(), r, qp.size(), mmg.iterations, f_mmg.z(), f_pdas.z());
-    EXPECT_LE(mmg.iterations, 40) << r;  // measured 17–36 to 1e-10 (validation.md §16)
+    EXPECT_LE(mmg.iterations, 45) << r;  // measured 20–40 to 1e-10 (validation.md §16)
   }
 }
 
