@@ -38,6 +38,35 @@ struct AssemblyPattern {
 AssemblyPattern assembly_pattern(const FoslsSpace& space, int threads,
                                  const Deadline& deadline = {});
 
+/// The matrix of `n` free DOFs with a stored (zero) entry wherever two free DOFs share a cell,
+/// compressed column-major with sorted rows, for spaces whose cells are not FoslsSpace's
+/// triangles (order 2, tetrahedra): `free_dofs(c)` gives cell c's DOFs as free indices, −1 for
+/// fixed ones. Values are then added in place (entry_position), with no triplet list.
+template <class FreeDofs>
+SparseMatrix cell_pattern(int n, int cells, const FreeDofs& free_dofs) {
+  std::vector<int> start(n + 1, 0);
+  for (int c = 0; c < cells; ++c)
+    for (int f : free_dofs(c))
+      if (f >= 0) ++start[f + 1];
+  for (int f = 0; f < n; ++f) start[f + 1] += start[f];
+  std::vector<int> cells_of(start[n]), next(start.begin(), start.end() - 1);
+  for (int c = 0; c < cells; ++c)
+    for (int f : free_dofs(c))
+      if (f >= 0) cells_of[next[f]++] = c;
+  std::vector<int> outer(n + 1, 0), inner, marker(n, -1);
+  for (int col = 0; col < n; ++col) {
+    const std::size_t first = inner.size();
+    for (int k = start[col]; k < start[col + 1]; ++k)
+      for (int row : free_dofs(cells_of[k]))
+        if (row >= 0 && marker[row] != col) marker[row] = col, inner.push_back(row);
+    std::sort(inner.begin() + first, inner.end());
+    outer[col + 1] = static_cast<int>(inner.size());
+  }
+  std::vector<double> zeros(inner.size(), 0.0);
+  return Eigen::Map<const SparseMatrix>(n, n, static_cast<int>(inner.size()), outer.data(),
+                                        inner.data(), zeros.data());
+}
+
 /// Position of entry (row, col) in the values of a compressed column-major `pattern`; the
 /// entry must be stored.
 inline int entry_position(const SparseMatrix& pattern, int row, int col) {

@@ -68,41 +68,15 @@ Eigen::Vector2d scaled_body_force(const ProblemData& data, const Point& x, doubl
   return f;
 }
 
-/// The matrix of the free DOFs with a stored (zero) entry wherever two free DOFs share a
-/// triangle (which covers the contact term's couplings), compressed column-major with sorted
-/// rows: the values are then added in place, with no triplet list (28² per triangle).
+/// The matrix pattern: every pair of free DOFs of a triangle (which covers the contact term's
+/// couplings); the values are added in place, with no triplet list (28² per triangle).
 SparseMatrix order2_pattern(const P2Rt1Space& space) {
-  const Mesh& mesh = space.mesh();
-  const int n = space.num_free();
-  std::vector<int> start(n + 1, 0), triangles;
-  auto free_dofs = [&space](int t) {
+  return cell_pattern(space.num_free(), space.mesh().num_triangles(), [&space](int t) {
     std::array<int, kLocal> free;
     const auto dofs = space.triangle_dofs(t);
     for (int i = 0; i < kLocal; ++i) free[i] = space.free_index(dofs[i]);
     return free;
-  };
-  for (int t = 0; t < mesh.num_triangles(); ++t)
-    for (int f : free_dofs(t))
-      if (f >= 0) ++start[f + 1];
-  for (int f = 0; f < n; ++f) start[f + 1] += start[f];
-  triangles.resize(start[n]);
-  std::vector<int> next(start.begin(), start.end() - 1);
-  for (int t = 0; t < mesh.num_triangles(); ++t)
-    for (int f : free_dofs(t))
-      if (f >= 0) triangles[next[f]++] = t;
-  std::vector<int> outer(n + 1, 0), inner, marker(n, -1);
-  for (int col = 0; col < n; ++col) {
-    const std::size_t first = inner.size();
-    for (int k = start[col]; k < start[col + 1]; ++k)
-      for (int row : free_dofs(triangles[k]))
-        if (row >= 0 && marker[row] != col) marker[row] = col, inner.push_back(row);
-    std::sort(inner.begin() + first, inner.end());
-    outer[col + 1] = static_cast<int>(inner.size());
-  }
-  std::vector<double> zeros(inner.size(), 0.0);
-  SparseMatrix a = Eigen::Map<const SparseMatrix>(n, n, static_cast<int>(inner.size()),
-                                                  outer.data(), inner.data(), zeros.data());
-  return a;
+  });
 }
 
 Eigen::Matrix2d rotation_block(const Point& n) {

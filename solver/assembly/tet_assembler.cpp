@@ -4,6 +4,7 @@
 #include <limits>
 #include <stdexcept>
 
+#include "assembly/assembly_pattern.hpp"
 #include "fem/tet_element.hpp"
 
 namespace fosls {
@@ -173,8 +174,15 @@ TetAssembledProblem TetAssembler::assemble_system() const {
   TetAssembledProblem out;
   out.stress_scale = mu_;
   const Vector xd = essential_values();
-  std::vector<Eigen::Triplet<double>> a;
-  a.reserve(static_cast<std::size_t>(mesh.num_tets()) * 24 * 24);
+  // Pattern first, values in place (no 24² triplets per tetrahedron); the contact couplings lie
+  // within the contact face's tetrahedron, so in the pattern.
+  SparseMatrix a = cell_pattern(n, mesh.num_tets(), [this](int t) {
+    std::array<int, 24> free;
+    const auto dofs = space_.tet_dofs(t);
+    for (int i = 0; i < 24; ++i) free[i] = space_.free_index(dofs[i]);
+    return free;
+  });
+  double* values = a.valuePtr();
   Vector b = Vector::Zero(n);
   double c = 0.0;
   Local loc;
@@ -196,7 +204,7 @@ TetAssembledProblem TetAssembler::assemble_system() const {
       for (int j = 0; j < 24; ++j) {
         const int fj = space_.free_index(dofs[j]);
         if (fj >= 0)
-          a.emplace_back(fi, fj, loc.K(i, j));
+          values[entry_position(a, fi, fj)] += loc.K(i, j);
         else
           bi -= loc.K(i, j) * xd[dofs[j]];
       }
@@ -209,15 +217,14 @@ TetAssembledProblem TetAssembler::assemble_system() const {
     b[s] += contact_gap_term(f);
     for (const auto& [dof, value] : contact_couplings(f)) {
       if (const int fu = space_.free_index(dof); fu >= 0) {
-        a.emplace_back(s, fu, value);
-        a.emplace_back(fu, s, value);
+        values[entry_position(a, s, fu)] += value;
+        values[entry_position(a, fu, s)] += value;
       } else {
         b[s] -= value * xd[dof];
       }
     }
   }
-  out.qp.A.resize(n, n);
-  out.qp.A.setFromTriplets(a.begin(), a.end());
+  out.qp.A.swap(a);
   out.qp.b = std::move(b);
   out.qp.constant = c;
   out.qp.lower = Vector::Constant(n, -kNoBound);
