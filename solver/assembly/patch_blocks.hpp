@@ -7,6 +7,7 @@
 // stays monotone, the result is the same bit for bit on one or two threads, and the threads
 // meet once per sweep.
 
+#include <Eigen/Core>
 #include <array>
 #include <vector>
 
@@ -22,5 +23,10 @@ struct VertexBlocks {
 /// Splits the vertices at the median of the coordinate with the larger extent and moves the
 /// vertices of the upper half within two edges of the lower half into the separator.
 VertexBlocks two_vertex_blocks(const Mesh& mesh);
+
+/// The same for any mesh: vertex v at `points[v]` (2 or 3 coordinates), `edges` the pairs of
+/// vertices that share a cell, in a fixed order (the tetrahedral meshes' vertex stars).
+VertexBlocks two_vertex_blocks(const std::vector<Eigen::VectorXd>& points,
+                               const std::vector<std::array<int, 2>>& edges);
 
 }  // namespace fosls

@@ -5,6 +5,7 @@
 #include <map>
 #include <set>
 
+#include "assembly/patch_blocks.hpp"
 #include "fem/tet_element.hpp"
 
 namespace fosls {
@@ -45,10 +46,26 @@ Eigen::SparseMatrix<double> tet_prolongation(const TetMesh& coarse, const TetMes
   return p;
 }
 
-std::vector<std::vector<int>> tet_vertex_patches(const TetSpace& space) {
-  const auto faces = space.mesh().vertex_faces();
+std::vector<std::vector<int>> tet_vertex_patches(const TetSpace& space, std::array<int, 2>* split) {
+  const TetMesh& mesh = space.mesh();
+  const auto faces = mesh.vertex_faces();
+  // The vertex pairs of the tetrahedra, sorted: the graph the two blocks are separated in.
+  std::vector<std::array<int, 2>> edges;
+  for (int t = 0; t < mesh.num_tets(); ++t)
+    for (int i = 0; i < 4; ++i)
+      for (int j = i + 1; j < 4; ++j)
+        edges.push_back(
+            {std::min(mesh.tet(t)[i], mesh.tet(t)[j]), std::max(mesh.tet(t)[i], mesh.tet(t)[j])});
+  std::sort(edges.begin(), edges.end());
+  edges.erase(std::unique(edges.begin(), edges.end()), edges.end());
+  std::vector<Eigen::VectorXd> points;
+  for (int v = 0; v < mesh.num_vertices(); ++v) points.emplace_back(mesh.vertex(v));
+  const VertexBlocks blocks = two_vertex_blocks(points, edges);
   std::vector<std::vector<int>> patches;
-  for (int v = 0; v < space.mesh().num_vertices(); ++v) {
+  for (int k = 0; k < mesh.num_vertices(); ++k) {
+    for (int b = 0; b < 2; ++b)
+      if (split && k == blocks.ends[b]) (*split)[b] = static_cast<int>(patches.size());
+    const int v = blocks.order[k];
     std::vector<int> p;
     auto take = [&](int dof) {
       if (const int f = space.free_index(dof); f >= 0) p.push_back(f);
@@ -58,6 +75,9 @@ std::vector<std::vector<int>> tet_vertex_patches(const TetSpace& space) {
       for (int i = 0; i < 3; ++i) take(space.sigma_dof(f, i));
     if (!p.empty()) patches.push_back(std::move(p));
   }
+  for (int b = 0; b < 2; ++b)
+    if (split && blocks.ends[b] == mesh.num_vertices())
+      (*split)[b] = static_cast<int>(patches.size());
   return patches;
 }
 
@@ -152,8 +172,7 @@ LevelHierarchy TetDiscretization::build_level_hierarchy() const {
     const TetSpace& fine = *spaces_[j];
     Level& level = h.levels[j];
     level.num_dofs = fine.num_free();
-    level.patches = tet_vertex_patches(fine);
-    level.patch_split = {0, 0};  // one thread: every patch in the sequential part
+    level.patches = tet_vertex_patches(fine, &level.patch_split);
     level.contact_strip = tet_contact_strip(fine);
     if (j == 0) continue;
     const TetSpace& coarse = *spaces_[j - 1];

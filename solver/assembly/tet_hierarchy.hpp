@@ -19,8 +19,10 @@ Eigen::SparseMatrix<double> tet_prolongation(const TetMesh& coarse, const TetMes
                                              const TetRefinementMaps& maps);
 
 /// The vertex patches of a space in its free numbering: the vertex's u DOFs and the σ DOFs of
-/// every face through it (the Arnold–Falk–Winther star), swept in vertex order.
-std::vector<std::vector<int>> tet_vertex_patches(const TetSpace& space);
+/// every face through it (the Arnold–Falk–Winther star), in two_vertex_blocks' order; `split`,
+/// when given, receives the ends of the two blocks a sweep may run on two threads.
+std::vector<std::vector<int>> tet_vertex_patches(const TetSpace& space,
+                                                 std::array<int, 2>* split = nullptr);
 
 /// A case's 3D discretisation on all levels: spaces, the finest level's QP and the hierarchy.
 class TetDiscretization {
