@@ -288,4 +288,12 @@ Point3 TetAssembler::contact_force(const Vector& x_full) const {
   return mu_ * force;
 }
 
+std::vector<double> TetAssembler::contact_pressure(const Vector& x_full) const {
+  const TetMesh& mesh = space_.mesh();
+  std::vector<double> p(mesh.num_faces(), 0.0);
+  for (int f = 0; f < mesh.num_faces(); ++f)
+    if (space_.is_contact_face(f)) p[f] = -mu_ * x_full[space_.sigma_dof(f, 0)] / mesh.face_area(f);
+  return p;
+}
+
 }  // namespace fosls

@@ -49,6 +49,9 @@ class TetAssembler {
   FunctionalParts functional(const Vector& x_full) const;
   /// ∫_Γ_C σn dA in physical units: the obstacle's force on the body.
   Point3 contact_force(const Vector& x_full) const;
+  /// The contact pressure −σ_nn of each face in physical units (RT0: constant on a face; zero
+  /// off the contact boundary).
+  std::vector<double> contact_pressure(const Vector& x_full) const;
 
  private:
   struct Local;

@@ -28,6 +28,8 @@ std::vector<std::vector<int>> tet_vertex_patches(const TetSpace& space,
 class TetDiscretization {
  public:
   TetDiscretization(TetHierarchy meshes, TetProblemData data);
+  TetDiscretization(const TetDiscretization&) = delete;  // the assembler refers to data_
+  TetDiscretization& operator=(const TetDiscretization&) = delete;
   const TetHierarchy& meshes() const { return meshes_; }
   const TetSpace& finest_space() const { return *spaces_.back(); }
   const TetAssembler& assembler() const { return *assembler_; }

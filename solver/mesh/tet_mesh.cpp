@@ -14,8 +14,12 @@ long long face_key(std::array<int, 3> v) {
 }
 
 TetMesh::TetMesh(std::vector<Point3> vertices, std::vector<std::array<int, 4>> tets,
-                 const std::vector<BoundaryFace>& boundary, std::vector<std::string> group_names)
-    : vertices_(std::move(vertices)), tets_(std::move(tets)), group_names_(std::move(group_names)) {
+                 const std::vector<BoundaryFace>& boundary, std::vector<std::string> group_names,
+                 std::vector<SphereSurface> group_surfaces)
+    : vertices_(std::move(vertices)),
+      tets_(std::move(tets)),
+      group_names_(std::move(group_names)),
+      group_surfaces_(std::move(group_surfaces)) {
   std::unordered_map<long long, int> index;
   index.reserve(2 * tets_.size() + 16);
   tet_faces_.resize(tets_.size());

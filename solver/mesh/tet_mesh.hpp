@@ -21,6 +21,15 @@ struct BoundaryFace {
   int group = -1;
 };
 
+/// A boundary group that lies on a sphere: refinement puts the midpoints of its faces' edges on
+/// it (the 3D counterpart of mesh.hpp's BoundaryCurve). radius 0: the group is flat or unknown.
+struct SphereSurface {
+  Point3 center = Point3::Zero();
+  double radius = 0.0;
+  bool curved() const { return radius > 0; }
+  Point3 project(const Point3& p) const { return center + radius * (p - center).normalized(); }
+};
+
 class TetMesh {
  public:
   TetMesh() = default;
@@ -28,7 +37,8 @@ class TetMesh {
   /// Throws std::invalid_argument when a face is shared by more than two tetrahedra or a
   /// tetrahedron is degenerate.
   TetMesh(std::vector<Point3> vertices, std::vector<std::array<int, 4>> tets,
-          const std::vector<BoundaryFace>& boundary, std::vector<std::string> group_names);
+          const std::vector<BoundaryFace>& boundary, std::vector<std::string> group_names,
+          std::vector<SphereSurface> group_surfaces = {});
 
   int num_vertices() const { return static_cast<int>(vertices_.size()); }
   int num_tets() const { return static_cast<int>(tets_.size()); }
@@ -50,6 +60,12 @@ class TetMesh {
   bool is_boundary_face(int f) const { return face_tets_[f][1] < 0; }
   const std::vector<std::string>& group_names() const { return group_names_; }
   int group_index(const std::string& name) const;
+  /// The sphere group g lies on (not curved() for flat groups).
+  SphereSurface group_surface(int g) const {
+    return g >= 0 && g < static_cast<int>(group_surfaces_.size()) ? group_surfaces_[g]
+                                                                  : SphereSurface{};
+  }
+  const std::vector<SphereSurface>& group_surfaces() const { return group_surfaces_; }
   /// Faces through each vertex (the vertex patches).
   std::vector<std::vector<int>> vertex_faces() const;
 
@@ -63,6 +79,7 @@ class TetMesh {
   std::vector<std::array<int, 2>> face_tets_;
   std::vector<int> face_group_;
   std::vector<std::string> group_names_;
+  std::vector<SphereSurface> group_surfaces_;
 };
 
 /// The sorted vertex triple of a face as one key (21 bits per vertex).

@@ -96,8 +96,13 @@ TetRefinement refine_tets_uniformly(const TetMesh& coarse) {
     for (const std::array<int, 3>& q :
          {std::array<int, 3>{v[0], ab, ac}, {v[1], ab, bc}, {v[2], ac, bc}, {ab, bc, ac}})
       boundary.push_back({q, g});
+    // On a sphere the new vertices go onto it, as 2D's midpoints on arcs: the fine surface
+    // approximates the sphere to O(h²) on every level, not just the coarse mesh's facets.
+    if (const SphereSurface s = coarse.group_surface(g); s.curved())
+      for (int m : {ab, ac, bc}) vertices[m] = s.project(vertices[m]);
   }
-  out.fine = TetMesh(std::move(vertices), std::move(tets), boundary, coarse.group_names());
+  out.fine = TetMesh(std::move(vertices), std::move(tets), boundary, coarse.group_names(),
+                     coarse.group_surfaces());
   map_faces(coarse, out.fine, maps);
   return out;
 }

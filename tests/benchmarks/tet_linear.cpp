@@ -11,6 +11,8 @@
 // (and optionally `pdas`, or `nostrip` for mmg without the contact-strip solves) the problem is the
 // 3D Signorini block of tests/solver/tet_contact_test.cpp instead (stage 2), solved to a relative
 // KKT residual of 1e-8.
+#include <algorithm>
+#include <array>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -21,6 +23,7 @@
 #include "../tet_problems.hpp"
 #include "assembly/tet_hierarchy.hpp"
 #include "core/peak_memory.hpp"
+#include "mesh/tet_half_ball.hpp"
 #include "solvers/solve_loop.hpp"
 
 namespace {
@@ -50,6 +53,50 @@ TetProblemData problem(double lambda) {
   return d;
 }
 
+/// The words after LAMBDA REFINEMENTS.
+struct Options {
+  bool contact = false, hertz = false, pdas = false, no_strip = false;
+  HalfBallSpec ball{.cells = 2, .grading = 3.0};
+  double delta = 0.01;  ///< the Hertz problem's indentation
+};
+
+bool parse_word(const std::string& w, Options& o) {
+  if (w == "contact") return o.contact = true;
+  if (w == "hertz") return o.hertz = true;
+  if (w == "pdas") return o.pdas = true;
+  if (w == "nostrip") return o.no_strip = true;
+  if (w.rfind("cells=", 0) == 0) return (o.ball.cells = std::atoi(w.c_str() + 6)) > 0;
+  if (w.rfind("delta=", 0) == 0) return (o.delta = std::atof(w.c_str() + 6)) > 0;
+  if (w.rfind("grading=", 0) == 0) return (o.ball.grading = std::atof(w.c_str() + 8)) >= 1.0;
+  return false;
+}
+
+TetDiscretization discretization(const Options& o, double lambda, int r) {
+  if (o.hertz)
+    return TetDiscretization(build_tet_hierarchy(make_half_ball(o.ball), r),
+                             testing::hertz_half_ball(lambda, o.delta));
+  return TetDiscretization(build_tet_hierarchy(make_box({2, 2, 2}), r),
+                           o.contact ? testing::signorini_block(lambda) : problem(lambda));
+}
+
+/// The half ball's contact radius and peak pressure: a from the pressure's second moment about
+/// the axis (for Hertz's p0 √(1 − r²/a²), ∫p r² dA / ∫p dA = 2a²/5, so all faces count, not just
+/// the outermost loaded one), p0 as the largest face pressure (a face mean: slightly low).
+std::array<double, 2> contact_radius_and_peak(const TetDiscretization& disc, const Vector& x) {
+  const TetAssembler& a = disc.assembler();
+  const TetMesh& mesh = disc.meshes().finest();
+  const std::vector<double> p = a.contact_pressure(a.full_vector(disc.problem(), x));
+  double force = 0.0, moment = 0.0, peak = 0.0;
+  for (int f = 0; f < mesh.num_faces(); ++f) {
+    const Point3 c = mesh.face_centroid(f);
+    const double projected = std::abs(mesh.face_normal(f).z()) * mesh.face_area(f);
+    force += p[f] * projected;
+    moment += p[f] * projected * (c.x() * c.x() + c.y() * c.y());
+    peak = std::max(peak, p[f]);
+  }
+  return {std::sqrt(2.5 * moment / force), peak};
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -59,40 +106,50 @@ int main(int argc, char** argv) {
         "peak memory |\n|---|---:|---:|---:|---:|---:|---:|---:|\n");
     return 0;
   }
-  if (argc < 3 || argc > 5) {
+  Options o;
+  bool usable = argc >= 3;
+  for (int k = 3; k < argc && usable; ++k) usable = parse_word(argv[k], o);
+  if (!usable) {
     std::fprintf(stderr,
-                 "usage: fosls-bench-3d --header | fosls-bench-3d LAMBDA REFINEMENTS [contact "
-                 "[pdas|nostrip]]\n");
+                 "usage: fosls-bench-3d --header | fosls-bench-3d LAMBDA REFINEMENTS "
+                 "[contact|hertz [cells=N] [grading=P] [delta=D]] [pdas|nostrip]\n");
     return 2;
   }
-  const bool contact = argc >= 4 && std::string(argv[3]) == "contact";
-  const bool pdas = argc == 5 && std::string(argv[4]) == "pdas";
-  const bool no_strip = argc == 5 && std::string(argv[4]) == "nostrip";
   const double lambda =
       std::string(argv[1]) == "inf" ? std::numeric_limits<double>::infinity() : std::atof(argv[1]);
   const int r = std::atoi(argv[2]);
   const auto t0 = Clock::now();
-  const TetDiscretization disc(build_tet_hierarchy(make_box({2, 2, 2}), r),
-                               contact ? testing::signorini_block(lambda) : problem(lambda));
+  const TetDiscretization disc = discretization(o, lambda, r);
   const double assembly_s = seconds_since(t0);
   const auto t1 = Clock::now();
   Vector x = Vector::Zero(disc.problem().qp.size());
   SolverOptions options;
-  if (pdas) options.method = SolverMethod::kPdas;
-  options.multilevel.strip = !no_strip;
+  if (o.pdas) options.method = SolverMethod::kPdas;
+  options.multilevel.strip = !o.no_strip;
   const SolverReport report = solve_box_qp(
-      disc.problem().qp, pdas ? LevelHierarchy{} : disc.build_level_hierarchy(), options, {}, x);
+      disc.problem().qp, o.pdas ? LevelHierarchy{} : disc.build_level_hierarchy(), options, {}, x);
   const TetAssembler& a = disc.assembler();
-  const double force = a.contact_force(a.full_vector(disc.problem(), x)).z();
+  const Point3 force = a.contact_force(a.full_vector(disc.problem(), x));
   std::printf("| %s | %d | %d | %d | %s %d%s | %.2f s | %.2f s | %.0f MiB |", argv[1], r,
-              disc.meshes().finest().num_tets(), disc.problem().qp.size(), pdas ? "pdas" : "mmg",
+              disc.meshes().finest().num_tets(), disc.problem().qp.size(), o.pdas ? "pdas" : "mmg",
               report.iterations, report.converged ? "" : " (NOT converged)", assembly_s,
               seconds_since(t1), peak_rss_mib());
-  if (contact)
+  if (o.hertz) {
+    const auto [radius, peak] = contact_radius_and_peak(disc, x);
+    const double hertz = testing::hertz_force_3d(lambda, o.delta);
+    const double a_f = testing::hertz_radius_3d(lambda, force.z());
+    const double p0_f = testing::hertz_peak_3d(lambda, force.z());
+    std::printf(
+        " F_z = %.7f | Hertz %.7f | error %+.2f %% | a_h %.4f, Hertz(F) %.4f, %+.2f %% | p0_h "
+        "%.4f, Hertz(F) %.4f, %+.2f %% |",
+        force.z(), hertz, 100.0 * (force.z() / hertz - 1.0), radius, a_f,
+        100.0 * (radius / a_f - 1.0), peak, p0_f, 100.0 * (peak / p0_f - 1.0));
+  }
+  if (o.contact || o.hertz)
     std::printf(
         " F_z = %.8f | galerkin %.2f s, smoothing %.2f s, strip %.2f s, coarse %.2f s, "
         "set-up %.2f s |",
-        force, report.cycle.galerkin_s, report.cycle.smoothing_s, report.cycle.strip_s,
+        force.z(), report.cycle.galerkin_s, report.cycle.smoothing_s, report.cycle.strip_s,
         report.cycle.coarse_s, report.setup_s);
   std::printf("\n");
   return 0;

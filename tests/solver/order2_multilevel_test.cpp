@@ -6,6 +6,7 @@
 
 #include <limits>
 
+#include "../sweep_checks.hpp"
 #include "assembly/p2_rt1_assembler.hpp"
 #include "assembly/p2_rt1_level.hpp"
 #include "contact_problems.hpp"
@@ -75,17 +76,8 @@ TEST_P(Order2Multilevel, EnergyNeverIncreasesAndIteratesStayFeasible) {
   Vector x = Vector::Zero(qp.size());
   qp.clip(x);
   Vector r = qp.b - qp.A * x;
-  const double energy0 = std::abs(qp.energy(x)) + 1.0;
-  Vector x_prev = x, r_prev = r;
   int checks = 0;
-  cycle.set_sweep_hook([&](const Vector& xs, const Vector&) {
-    const Vector step = xs - x_prev;  // J(x + δ) − J(x) from the step, as monotonicity_test
-    EXPECT_LE(0.5 * step.dot(qp.A * step) - step.dot(r_prev), 1e-14 * energy0) << checks;
-    EXPECT_TRUE(qp.feasible(xs)) << checks;
-    x_prev = xs;
-    r_prev = qp.b - qp.A * xs;
-    ++checks;
-  });
+  testing::check_every_sweep(cycle, qp, x, checks);
   const double initial_kkt = qp.kkt_residual(x, r);
   int iterations = 0;
   for (; iterations < 200 && qp.kkt_residual(x, r) > 1e-8 * initial_kkt; ++iterations) {
