@@ -11,10 +11,10 @@
 #include <random>
 #include <sstream>
 
+#include "../gmsh_text.hpp"
 #include "case/case_error.hpp"
 #include "case/mesh_factory.hpp"
 #include "mesh/msh_reader.hpp"
-#include "mesher/gmsh_session.hpp"
 
 namespace fosls {
 namespace {
@@ -28,12 +28,7 @@ struct SquareOptions {
 /// MSH 4.1 text of the unit square meshed by gmsh: physical curves "bottom" (tag 1) and
 /// "rest of boundary" (tag 2, a name with spaces) and, optionally, the surface.
 std::string square_msh(const SquareOptions& opt = {}) {
-  const auto path = std::filesystem::temp_directory_path() /
-                    ("fosls_msh_reader_test_" + std::to_string(::getpid()) + ".msh");
-  {
-    std::lock_guard<std::mutex> lock(gmsh_mutex());
-    ensure_gmsh_initialized();
-    gmsh::clear();
+  return testing::gmsh_msh_text(2, [&opt] {
     namespace geo = gmsh::model::geo;
     geo::addPoint(0, 0, 0, 0.3, 1);
     geo::addPoint(1, 0, 0, 0.3, 2);
@@ -51,20 +46,8 @@ std::string square_msh(const SquareOptions& opt = {}) {
     geo::synchronize();
     gmsh::option::setNumber("Mesh.MeshSizeFromPoints", 1);
     gmsh::option::setNumber("Mesh.MeshSizeExtendFromBoundary", 1);
-    gmsh::option::setNumber("Mesh.MshFileVersion", 4.1);
-    gmsh::option::setNumber("Mesh.Binary", 0);
-    gmsh::option::setNumber("Mesh.SaveAll", 0);
     gmsh::option::setNumber("Mesh.ElementOrder", opt.element_order);
-    gmsh::model::mesh::generate(2);
-    gmsh::write(path.string());
-    gmsh::option::setNumber("Mesh.ElementOrder", 1);
-    gmsh::clear();
-  }
-  std::ifstream in(path);
-  std::stringstream s;
-  s << in.rdbuf();
-  std::filesystem::remove(path);
-  return s.str();
+  });
 }
 
 /// The text with the first occurrence of `from` replaced by `to` (which must exist).
