@@ -42,6 +42,8 @@ class TetAssembler {
  public:
   TetAssembler(const TetSpace& space, const TetProblemData& data);
 
+  const TetSpace& space() const { return space_; }
+  const TetProblemData& data() const { return data_; }
   TetAssembledProblem assemble_system() const;
   Vector full_vector(const TetAssembledProblem& p, const Vector& x_free) const;
   /// J at a full DOF vector (`element` per tetrahedron, the contact term of a contact face

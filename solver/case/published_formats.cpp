@@ -5,6 +5,7 @@
 #include "case/rules_markdown.hpp"
 #include "case/rules_schema.hpp"
 #include "case/solver_methods.hpp"
+#include "post/tet_vtu_writer.hpp"
 #include "post/vtu_writer.hpp"
 
 namespace fosls {
@@ -50,9 +51,9 @@ std::string limits_table() {
   return s;
 }
 
-std::string vtu_table() {
+std::string vtu_table(std::span<const VtuArray> arrays) {
   std::string s = "| array | data | components | unit | meaning |\n|---|---|---|---|---|\n";
-  for (const auto& a : vtu_arrays()) {
+  for (const auto& a : arrays) {
     std::vector<std::string> components;
     for (const char* c : a.components) components.emplace_back(c);
     s += std::string("| `") + a.name + "` | " + (a.point_data ? "point" : "cell") + " | " +
@@ -80,7 +81,8 @@ nlohmann::json result_json_schema() {
 
 std::map<std::string, std::string> result_format_blocks() {
   auto blocks = object_tables(*result_rule(), TableKind::kOutput);
-  blocks["vtu"] = vtu_table();
+  blocks["vtu"] = vtu_table(vtu_arrays());
+  blocks["vtu_3d"] = vtu_table(tet_vtu_arrays());
   return blocks;
 }
 

@@ -7,7 +7,6 @@
 #include <sstream>
 #include <stdexcept>
 
-#include "post/base64.hpp"
 #include "post/fe_field.hpp"
 
 namespace fosls {
@@ -101,56 +100,10 @@ const VtuArray& info(const std::string& name) {
   throw std::logic_error("write_vtu writes an array missing from vtu_arrays(): " + name);
 }
 
-/// The attributes after the name: components and their names.
-std::string component_attributes(const VtuArray& a) {
-  if (a.components.empty()) return "";
-  std::string s = " NumberOfComponents=\"" + std::to_string(a.components.size()) + "\"";
-  for (std::size_t c = 0; c < a.components.size(); ++c)
-    s += " ComponentName" + std::to_string(c) + "=\"" + a.components[c] + "\"";
-  return s;
-}
-
-/// One DataArray element: `type` is the VTK type name of T, `attributes` what follows it.
-template <class T>
-void write_data_array(std::ostream& o, const char* type, const std::string& attributes,
-                      const std::vector<T>& values, std::size_t per_line, VtuEncoding encoding) {
-  o << "<DataArray type=\"" << type << "\"" << attributes << " format=\""
-    << (encoding == VtuEncoding::kAscii ? "ascii" : "binary") << "\">\n";
-  if (encoding == VtuEncoding::kAscii) {
-    for (std::size_t i = 0; i < values.size(); ++i)
-      o << +values[i] << (i % per_line + 1 == per_line ? '\n' : ' ');
-  } else {
-    // VTK's inline binary: base64 of the byte count (UInt32) and the values, encoded as one
-    // stream (the reader seeks past the header inside the decoded bytes).
-    const std::uint32_t bytes = static_cast<std::uint32_t>(values.size() * sizeof(T));
-    std::string raw(sizeof bytes + bytes, '\0');
-    std::memcpy(raw.data(), &bytes, sizeof bytes);
-    if (bytes) std::memcpy(raw.data() + sizeof bytes, values.data(), bytes);
-    std::string text;
-    append_base64(text, raw.data(), raw.size());
-    o << text << '\n';
-  }
-  o << "</DataArray>\n";
-}
-
-/// A named array of vtu_arrays() (components per tuple as in its table entry).
+/// A named array of vtu_arrays().
 void write_array(std::ostream& o, const std::string& name, const std::vector<double>& values,
                  VtuEncoding encoding) {
-  const VtuArray& a = info(name);
-  const std::size_t n = a.components.empty() ? 1 : a.components.size();
-  const std::string attributes = " Name=\"" + std::string(a.name) + "\"" + component_attributes(a);
-  const std::string type = encoding == VtuEncoding::kAscii ? "Float64" : a.binary_type;
-  auto as = [&values](auto zero) {
-    return std::vector<decltype(zero)>(values.begin(), values.end());
-  };
-  if (type == "Float32")
-    write_data_array(o, "Float32", attributes, as(0.0f), n, encoding);
-  else if (type == "UInt8")
-    write_data_array(o, "UInt8", attributes, as(std::uint8_t{0}), n, encoding);
-  else if (type == "Int32")
-    write_data_array(o, "Int32", attributes, as(std::int32_t{0}), n, encoding);
-  else
-    write_data_array(o, "Float64", attributes, values, n, encoding);
+  write_array(o, info(name), values, encoding);
 }
 
 /// Plane strain: σ_zz = κ tr σ with κ = λ/(2(λ+μ)), which is ½ for λ = ∞.
@@ -225,28 +178,16 @@ std::string write_vtu(const FoslsAssembler& assembler, const AssembledProblem& p
     state[r.vertex] = r.state;
     gap[r.vertex] = r.gap;
   }
-  std::vector<std::int32_t> connectivity(3 * nt), offsets(nt);
-  for (int t = 0; t < nt; ++t) {
+  std::vector<std::int32_t> connectivity(3 * nt);
+  for (int t = 0; t < nt; ++t)
     for (int k = 0; k < 3; ++k) connectivity[3 * t + k] = mesh.triangle(t)[k];
-    offsets[t] = 3 * (t + 1);
-  }
-  const std::vector<std::uint8_t> types(nt, 5);  // VTK_TRIANGLE
   const StressArrays stress = stress_arrays(mesh, field, kappa);
 
   std::ostringstream o;
   o.precision(12);
-  o << "<?xml version=\"1.0\"?>\n"
-    << "<VTKFile type=\"UnstructuredGrid\" version=\"0.1\" byte_order=\"LittleEndian\" "
-       "header_type=\"UInt32\">\n"
-    << "<UnstructuredGrid>\n<Piece NumberOfPoints=\"" << nv << "\" NumberOfCells=\"" << nt
-    << "\">\n<Points>\n";
-  write_data_array(o, "Float64", " NumberOfComponents=\"3\"", points, 3, encoding);
-  o << "</Points>\n<Cells>\n";
-  write_data_array(o, "Int32", " Name=\"connectivity\"", connectivity, 3, encoding);
-  write_data_array(o, "Int32", " Name=\"offsets\"", offsets, 1, encoding);
-  write_data_array(o, "UInt8", " Name=\"types\"", types, 1, encoding);
+  write_grid(o, points, connectivity, 3, 5, encoding);  // VTK_TRIANGLE
   // No Tensors attribute: VTK's takes 9 (or 6) components, σ has 4 (it warned on every read).
-  o << "</Cells>\n<PointData Vectors=\"u\" Scalars=\"contact_pressure\">\n";
+  o << "<PointData Vectors=\"u\" Scalars=\"contact_pressure\">\n";
   write_array(o, "u", u, encoding);
   write_array(o, "contact_boundary", on_contact, encoding);
   write_array(o, "contact_pressure", pressure, encoding);
@@ -260,7 +201,8 @@ std::string write_vtu(const FoslsAssembler& assembler, const AssembledProblem& p
   write_array(o, "von_mises", stress.von_mises, encoding);
   write_array(o, "functional", functional.element, encoding);
   write_array(o, "generation", std::vector<double>(generation.begin(), generation.end()), encoding);
-  o << "</CellData>\n</Piece>\n</UnstructuredGrid>\n</VTKFile>\n";
+  o << "</CellData>\n";
+  write_grid_end(o);
   return o.str();
 }
 

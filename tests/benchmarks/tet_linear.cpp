@@ -10,13 +10,17 @@
 // One process per row, so that its peak memory is that row's. With a third argument `contact`
 // (and optionally `pdas`, or `nostrip` for mmg without the contact-strip solves) the problem is the
 // 3D Signorini block of tests/solver/tet_contact_test.cpp instead (stage 2), solved to a relative
-// KKT residual of 1e-8.
+// KKT residual of 1e-8; with `hertz` the half ball of tests/solver/tet_hertz_test.cpp (its mesh
+// and indentation set by cells=N grading=P delta=D), which also prints the force against 3D
+// Hertz and the contact radius and peak pressure against Hertz's for that force. vtu=FILE
+// writes the solution for ParaView (post/tet_vtu_writer.hpp).
 #include <algorithm>
 #include <array>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
+#include <fstream>
 #include <limits>
 #include <string>
 
@@ -24,6 +28,7 @@
 #include "assembly/tet_hierarchy.hpp"
 #include "core/peak_memory.hpp"
 #include "mesh/tet_half_ball.hpp"
+#include "post/tet_vtu_writer.hpp"
 #include "solvers/solve_loop.hpp"
 
 namespace {
@@ -58,6 +63,7 @@ struct Options {
   bool contact = false, hertz = false, pdas = false, no_strip = false;
   HalfBallSpec ball{.cells = 2, .grading = 3.0};
   double delta = 0.01;  ///< the Hertz problem's indentation
+  std::string vtu;      ///< where to write the solution for ParaView, if anywhere
 };
 
 bool parse_word(const std::string& w, Options& o) {
@@ -66,6 +72,7 @@ bool parse_word(const std::string& w, Options& o) {
   if (w == "pdas") return o.pdas = true;
   if (w == "nostrip") return o.no_strip = true;
   if (w.rfind("cells=", 0) == 0) return (o.ball.cells = std::atoi(w.c_str() + 6)) > 0;
+  if (w.rfind("vtu=", 0) == 0) return !(o.vtu = w.substr(4)).empty();
   if (w.rfind("delta=", 0) == 0) return (o.delta = std::atof(w.c_str() + 6)) > 0;
   if (w.rfind("grading=", 0) == 0) return (o.ball.grading = std::atof(w.c_str() + 8)) >= 1.0;
   return false;
@@ -112,7 +119,7 @@ int main(int argc, char** argv) {
   if (!usable) {
     std::fprintf(stderr,
                  "usage: fosls-bench-3d --header | fosls-bench-3d LAMBDA REFINEMENTS "
-                 "[contact|hertz [cells=N] [grading=P] [delta=D]] [pdas|nostrip]\n");
+                 "[contact|hertz [cells=N] [grading=P] [delta=D]] [pdas|nostrip] [vtu=FILE]\n");
     return 2;
   }
   const double lambda =
@@ -152,5 +159,7 @@ int main(int argc, char** argv) {
         force.z(), report.cycle.galerkin_s, report.cycle.smoothing_s, report.cycle.strip_s,
         report.cycle.coarse_s, report.setup_s);
   std::printf("\n");
+  if (!o.vtu.empty())
+    std::ofstream(o.vtu) << write_tet_vtu(a, disc.problem(), a.full_vector(disc.problem(), x));
   return 0;
 }
