@@ -15,6 +15,7 @@
 #include "mesh/geometry_spec.hpp"
 #include "mesh/mesh.hpp"
 #include "mesh/mesh_error.hpp"
+#include "mesh/tet_mesh.hpp"
 
 namespace fosls {
 
@@ -55,5 +56,12 @@ Mesh mesh_from_geometry(const GeometrySpec& geometry, const SizeField& size,
 /// length (Mesh.MeshSizeMax); sizes set in the script still apply below it. Errors are
 /// MeshError at /geo_file or /size.
 Mesh mesh_from_geo_file(const std::string& path, double size, const MeshingControl& control = {});
+
+/// Meshes a gmsh .geo script in 3D (tetrahedra, 3D stage 1): physical surfaces become boundary
+/// groups, the volumes are meshed (they need no physical group of their own), `size` caps the
+/// edge length. Surfaces are flat facets under refinement (no SphereSurface). Errors as above,
+/// at /geo_file or /size; a mesh gmsh made that the 3D reader refuses is reported at /geo_file.
+TetMesh tet_mesh_from_geo_file(const std::string& path, double size,
+                               const MeshingControl& control = {});
 
 }  // namespace fosls

@@ -75,12 +75,17 @@ auto reading(const char* what, F&& f) {
 json request_to_json(const MeshRequest& request) {
   if (const auto* g = std::get_if<GeometryMeshRequest>(&request))
     return {{"geometry", geometry_to_json(g->geometry)}, {"size", size_to_json(g->size)}};
+  if (const auto* f = std::get_if<GeoFile3dMeshRequest>(&request))
+    return {{"geo_file_3d", f->path}, {"size", f->size}};
   const auto& f = std::get<GeoFileMeshRequest>(request);
   return {{"geo_file", f.path}, {"size", f.size}};
 }
 
 MeshRequest request_from_json(const json& j) {
   return reading("request", [&]() -> MeshRequest {
+    if (j.contains("geo_file_3d"))
+      return GeoFile3dMeshRequest{j.at("geo_file_3d").get<std::string>(),
+                                  j.at("size").get<double>()};
     if (j.contains("geo_file"))
       return GeoFileMeshRequest{j.at("geo_file").get<std::string>(), j.at("size").get<double>()};
     return GeometryMeshRequest{geometry_from_json(j.at("geometry")), size_from_json(j.at("size"))};
@@ -109,17 +114,32 @@ json problems_answer(const std::vector<MeshProblem>& problems) {
   return {{"problems", list}};
 }
 
+namespace {
+
+/// Throws the mesher's problems when the answer holds them.
+void throw_problems(const json& j) {
+  if (!j.is_object() || !j.contains("problems")) return;
+  std::vector<MeshProblem> problems = reading("answer", [&] {
+    std::vector<MeshProblem> list;
+    for (const auto& p : j.at("problems"))
+      list.push_back({p.at("field").get<std::string>(), p.at("detail").get<std::string>()});
+    return list;
+  });
+  if (problems.empty()) throw std::invalid_argument("the mesher failed without saying why");
+  throw MeshError(std::move(problems));
+}
+
+}  // namespace
+
+json msh_answer(const std::string& msh_text) { return {{"msh", msh_text}}; }
+
+std::string read_msh_answer(const json& j) {
+  throw_problems(j);
+  return reading("answer", [&] { return j.at("msh").get<std::string>(); });
+}
+
 MeshData read_answer(const json& j) {
-  if (j.is_object() && j.contains("problems")) {
-    std::vector<MeshProblem> problems = reading("answer", [&] {
-      std::vector<MeshProblem> list;
-      for (const auto& p : j.at("problems"))
-        list.push_back({p.at("field").get<std::string>(), p.at("detail").get<std::string>()});
-      return list;
-    });
-    if (problems.empty()) throw std::invalid_argument("the mesher failed without saying why");
-    throw MeshError(std::move(problems));
-  }
+  throw_problems(j);
   return reading("answer", [&] {
     const json& m = j.at("mesh");
     MeshData d;

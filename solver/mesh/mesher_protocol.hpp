@@ -27,7 +27,14 @@ struct GeoFileMeshRequest {
   double size = 0;
 };
 
-using MeshRequest = std::variant<GeometryMeshRequest, GeoFileMeshRequest>;
+/// Mesh a gmsh .geo script in 3D (tetrahedra), edge length capped at `size`; the answer is the
+/// mesh as MSH 4.1 text, read by tet_msh_reader.hpp.
+struct GeoFile3dMeshRequest {
+  std::string path;
+  double size = 0;
+};
+
+using MeshRequest = std::variant<GeometryMeshRequest, GeoFileMeshRequest, GeoFile3dMeshRequest>;
 
 /// The arrays a Mesh is built from, as the mesher produced them.
 struct MeshData {
@@ -49,5 +56,10 @@ nlohmann::json problems_answer(const std::vector<MeshProblem>& problems);
 /// Reads an answer: the mesh, or throws MeshError with the mesher's problems. Throws
 /// std::invalid_argument when the text is not an answer.
 MeshData read_answer(const nlohmann::json& j);
+
+/// A 3D answer: the tetrahedral mesh as MSH 4.1 text.
+nlohmann::json msh_answer(const std::string& msh_text);
+/// Reads a 3D answer as read_answer does a 2D one.
+std::string read_msh_answer(const nlohmann::json& j);
 
 }  // namespace fosls

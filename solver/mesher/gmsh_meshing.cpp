@@ -2,8 +2,12 @@
 
 #include <gmsh.h>
 
+#include <unistd.h>
+
 #include <algorithm>
 #include <cmath>
+#include <filesystem>
+#include <fstream>
 #include <new>
 #include <optional>
 #include <sstream>
@@ -107,6 +111,15 @@ void run_geo_script(const std::string& path) {
     if (line.rfind("Error: ", 0) == 0 && count++ < 3)
       errors += (errors.empty() ? "" : "; ") + line.substr(7);
   if (!errors.empty()) throw MeshError(kGeoFileField, "the .geo script failed: " + errors);
+}
+
+/// Runs a .geo script with the common options before and after it (it may change them) and
+/// `size` as the largest edge length.
+void open_geo_script(const std::string& path, double size) {
+  set_common_options();
+  run_geo_script(path);
+  set_common_options();
+  gmsh::option::setNumber("Mesh.MeshSizeMax", size);
 }
 
 std::string last_gmsh_error() {
@@ -346,10 +359,7 @@ MeshData mesh_geo_file_with_gmsh(const GeoFileMeshRequest& request) {
   return guarded(kGeoFileField, [&] {
     ensure_gmsh_initialized();
     ModelScope scope;
-    set_common_options();
-    run_geo_script(path);
-    set_common_options();
-    gmsh::option::setNumber("Mesh.MeshSizeMax", size);
+    open_geo_script(path, size);
 
     gmsh::vectorpair surfaces;
     gmsh::model::getEntities(surfaces, 2);
@@ -407,6 +417,54 @@ MeshData mesh_geo_file_with_gmsh(const GeoFileMeshRequest& request) {
     return extract_mesh(entities, names, circles, kGeoFileField,
                         "; put every boundary curve of the .geo file in a Physical Curve and "
                         "mesh one plane surface in z = 0");
+  });
+}
+
+std::string mesh_geo_file_3d_with_gmsh(const GeoFile3dMeshRequest& request) {
+  const double size = request.size;  // checked by the caller, like the file's readability
+  std::lock_guard<std::mutex> lock(gmsh_mutex());
+  return guarded(kGeoFileField, [&] {
+    ensure_gmsh_initialized();
+    ModelScope scope;
+    open_geo_script(request.path, size);
+    gmsh::vectorpair volumes, surfaces, groups;
+    gmsh::model::getEntities(volumes, 3);
+    if (volumes.empty())
+      throw MeshError(kGeoFileField,
+                      "the .geo file defines no volume to mesh; add a Volume bounded by its "
+                      "surfaces (or a Box, Sphere, ... with SetFactory(\"OpenCASCADE\"))");
+    double x0, y0, z0, x1, y1, z1;
+    gmsh::model::getBoundingBox(-1, -1, x0, y0, z0, x1, y1, z1);
+    // A regular tetrahedron of edge h has volume h³/(6√2).
+    const double estimate =
+        (x1 - x0) * (y1 - y0) * (z1 - z0) / (size * size * size / (6.0 * std::sqrt(2.0)));
+    if (!(estimate <= kMaxCoarseTriangles))
+      throw MeshError(kSizeField, "the mesh size is too small for this geometry: up to " +
+                                      num(estimate) + " coarse tetrahedra (at most " +
+                                      num(kMaxCoarseTriangles) + ")");
+    gmsh::model::getPhysicalGroups(surfaces, 2);
+    if (surfaces.empty())
+      throw MeshError(kGeoFileField,
+                      "the .geo file defines no physical surfaces; put every boundary surface "
+                      "in a Physical Surface, whose name becomes the boundary group");
+    gmsh::model::getPhysicalGroups(groups, 3);
+    if (groups.empty()) {  // gmsh saves only physical groups' elements: the volume must be one
+      std::vector<int> tags;
+      for (const auto& [dim, tag] : volumes) tags.push_back(tag);
+      gmsh::model::addPhysicalGroup(3, tags);
+    }
+    gmsh::model::mesh::generate(3);
+    gmsh::option::setNumber("Mesh.MshFileVersion", 4.1);
+    gmsh::option::setNumber("Mesh.Binary", 0);
+    gmsh::option::setNumber("Mesh.SaveAll", 0);
+    const auto path = std::filesystem::temp_directory_path() /
+                      ("fosls_mesher_" + std::to_string(::getpid()) + ".msh");
+    gmsh::write(path.string());
+    std::ifstream in(path);
+    std::stringstream text;
+    text << in.rdbuf();
+    std::filesystem::remove(path);
+    return text.str();
   });
 }
 

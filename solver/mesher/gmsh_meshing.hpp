@@ -19,4 +19,9 @@ MeshData mesh_geometry_with_gmsh(const GeometryMeshRequest& request);
 /// at /geo_file or /size.
 MeshData mesh_geo_file_with_gmsh(const GeoFileMeshRequest& request);
 
+/// Meshes a gmsh .geo script in 3D: tetrahedra with `size` capping the edge length, physical
+/// surfaces as the boundary groups (all volumes made one physical volume when the script has
+/// none). Returns the mesh as MSH 4.1 ASCII text. Throws MeshError at /geo_file or /size.
+std::string mesh_geo_file_3d_with_gmsh(const GeoFile3dMeshRequest& request);
+
 }  // namespace fosls

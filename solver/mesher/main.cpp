@@ -34,9 +34,12 @@ int main() {
     }
     nlohmann::json answer;
     try {
-      answer = std::holds_alternative<GeometryMeshRequest>(request)
-                   ? mesh_answer(mesh_geometry_with_gmsh(std::get<GeometryMeshRequest>(request)))
-                   : mesh_answer(mesh_geo_file_with_gmsh(std::get<GeoFileMeshRequest>(request)));
+      if (const auto* g = std::get_if<GeometryMeshRequest>(&request))
+        answer = mesh_answer(mesh_geometry_with_gmsh(*g));
+      else if (const auto* f = std::get_if<GeoFileMeshRequest>(&request))
+        answer = mesh_answer(mesh_geo_file_with_gmsh(*f));
+      else
+        answer = msh_answer(mesh_geo_file_3d_with_gmsh(std::get<GeoFile3dMeshRequest>(request)));
     } catch (const MeshError& e) {
       answer = problems_answer(e.problems());
     }
