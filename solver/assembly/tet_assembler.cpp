@@ -79,9 +79,16 @@ TetAssembler::TetAssembler(const TetSpace& space, const TetProblemData& data)
   vertex_gap_.assign(mesh.num_vertices(), std::numeric_limits<double>::infinity());
   for (int f = 0; f < mesh.num_faces(); ++f) {
     if (!space.is_contact_face(f)) continue;
-    const ScalarFunction3& gap = data.groups[mesh.face_group(f)].gap;
-    for (int v : mesh.face(f))
-      vertex_gap_[v] = std::min(vertex_gap_[v], gap ? gap(mesh.vertex(v)) : 0.0);
+    const TetProblemData::Group& group = data.groups[mesh.face_group(f)];
+    for (int v : mesh.face(f)) {
+      double g = group.gap ? group.gap(mesh.vertex(v)) : 0.0;
+      if (group.gap_along_normal) {  // a Dirichlet vertex has no frame: its face's normal
+        const Point3 n =
+            space.is_contact_vertex(v) ? Point3(space.vertex_frame(v).col(0)) : mesh.face_normal(f);
+        g = group.gap_along_normal(mesh.vertex(v), n);
+      }
+      vertex_gap_[v] = std::min(vertex_gap_[v], g);
+    }
   }
 }
 

@@ -23,6 +23,9 @@ struct TetProblemData {
     GroupRole role = GroupRole::kNeumann;
     std::array<ScalarFunction3, 3> values;
     ScalarFunction3 gap;  ///< contact
+    /// Contact: the gap at x along the body's unit outward normal n there (a rigid plane's
+    /// distance along n); used instead of `gap` when set, with the vertex's averaged normal.
+    std::function<double(const Point3& x, const Point3& n)> gap_along_normal;
   };
   std::vector<Group> groups;  ///< indexed like TetMesh::group_names()
   std::vector<GroupRole> roles() const {
