@@ -2,6 +2,7 @@
 
 #include <algorithm>
 
+#include "case/case3d_reader.hpp"
 #include "case/case_sections.hpp"
 #include "case/early_group_check.hpp"
 #include "case/force_accuracy.hpp"
@@ -21,6 +22,9 @@ ObjectRulePtr case_rule(const CaseReadOptions& options) {
       optional_field("units", object_value(units_rule()), nullptr,
                      "the units the case's numbers are in, named in the outputs (absent: not "
                      "declared; the numbers are used as they are either way)"),
+      optional_field("dimension", integer_value(Range::closed(2, 3)), 2,
+                     "2 for this format (plane strain); 3 for a 3D case, whose own format is "
+                     "described under \"3D cases\" (command line only)"),
       required_field("mesh", object_value(mesh_rule(options)), "the mesh of the body"),
       required_field("material", object_value(material_rule()),
                      "the material (mu and lambda, or E and nu)"),
@@ -110,6 +114,14 @@ CaseReadResult read_case(const nlohmann::json& j, const CaseReadOptions& options
     result.errors.push_back(
         {"", "the case must be a JSON object with the fields mesh, material and boundary, got " +
                  describe_value(j)});
+    return result;
+  }
+  if (is_3d_case(j)) {
+    result.errors.push_back(
+        {"/dimension",
+         "a 3D case is solved by fosls-contact solve on the command line in this version; the "
+         "service, the page, estimate and bench take 2D cases (docs/case-format.md, \"3D "
+         "cases\")"});
     return result;
   }
   RuleChecker checker(options);

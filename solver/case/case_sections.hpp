@@ -20,6 +20,11 @@
 namespace fosls {
 
 ObjectRulePtr mesh_rule(const CaseReadOptions& options);
+/// The rules of mesh.geo_file and mesh.msh_file (command line only, the file must exist; an msh
+/// file must hold msh text within the limit, `contents` says what for the docs), shared by the
+/// 3D case's mesh (case3d_reader.hpp).
+ValueRule geo_file_value(const CaseLimits& limits);
+ValueRule msh_file_value(const CaseLimits& limits, const std::string& contents);
 MeshSpec read_mesh_section(const nlohmann::json& j);
 
 ObjectRulePtr geometry_rule(const CaseReadOptions& options);

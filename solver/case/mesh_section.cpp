@@ -137,10 +137,6 @@ bool check_local_file(const json& j, const std::string& pointer, RuleChecker& ch
   return true;
 }
 
-bool check_geo_file(const json& j, const std::string& pointer, RuleChecker& checker) {
-  return check_local_file(j, pointer, checker, "gmsh .geo file");
-}
-
 /// The text of a file, at most `max_bytes` + 1 bytes of it (so that a larger file shows), or
 /// nothing when it cannot be read.
 std::optional<std::string> read_text_file(const std::string& path, std::size_t max_bytes) {
@@ -154,22 +150,6 @@ std::optional<std::string> read_text_file(const std::string& path, std::size_t m
   }
   if (in.bad()) return std::nullopt;
   return text;
-}
-
-bool check_msh_file(const json& j, const std::string& pointer, RuleChecker& checker) {
-  if (!check_local_file(j, pointer, checker, "gmsh .msh file")) return false;
-  const std::size_t max = checker.options().limits.max_text_bytes;
-  const auto text = read_text_file(j.get<std::string>(), max);
-  if (!text) {
-    checker.error(pointer, "cannot read the file " + j.get<std::string>());
-    return false;
-  }
-  if (text->size() > max) {
-    checker.error(pointer, "the file is larger than the limit of " + std::to_string(max) +
-                               " bytes for msh text");
-    return false;
-  }
-  return check_msh_text(json(*text), pointer, checker);
 }
 
 /// A tiny `size` must not build a huge coarse mesh before the DOF limit can be checked: the
@@ -194,7 +174,41 @@ void check_coarse_size(const json& j, const std::string& pointer, RuleChecker& c
   checker.error(size_pointer, s.str());
 }
 
+bool check_geo_file(const json& j, const std::string& pointer, RuleChecker& checker) {
+  return check_local_file(j, pointer, checker, "gmsh .geo file");
+}
+
+bool check_msh_file(const json& j, const std::string& pointer, RuleChecker& checker) {
+  if (!check_local_file(j, pointer, checker, "gmsh .msh file")) return false;
+  const std::size_t max = checker.options().limits.max_text_bytes;
+  const auto text = read_text_file(j.get<std::string>(), max);
+  if (!text) {
+    checker.error(pointer, "cannot read the file " + j.get<std::string>());
+    return false;
+  }
+  if (text->size() > max) {
+    checker.error(pointer, "the file is larger than the limit of " + std::to_string(max) +
+                               " bytes for msh text");
+    return false;
+  }
+  return check_msh_text(json(*text), pointer, checker);
+}
+
 }  // namespace
+
+ValueRule geo_file_value(const CaseLimits& limits) {
+  ValueRule r = string_value(limits.max_path_length, "the path");
+  r.hook = check_geo_file;
+  r.notes = "command line only; the file must exist";
+  return r;
+}
+
+ValueRule msh_file_value(const CaseLimits& limits, const std::string& contents) {
+  ValueRule r = string_value(limits.max_path_length, "the path");
+  r.hook = check_msh_file;
+  r.notes = "command line only; the file must exist and hold " + contents;
+  return r;
+}
 
 ObjectRulePtr mesh_rule(const CaseReadOptions& options) {
   const CaseLimits& limits = options.limits;
@@ -211,12 +225,6 @@ ObjectRulePtr mesh_rule(const CaseReadOptions& options) {
   ValueRule msh = string_value(limits.max_text_bytes, "the msh text");
   msh.hook = check_msh_text;
   msh.notes = "must start with $MeshFormat (gmsh ASCII format 4.1)";
-  ValueRule geo_file = string_value(limits.max_path_length, "the path");
-  geo_file.hook = check_geo_file;
-  geo_file.notes = "command line only; the file must exist";
-  ValueRule msh_file = string_value(limits.max_path_length, "the path");
-  msh_file.hook = check_msh_file;
-  msh_file.notes = "command line only; the file must exist and hold msh text";
   ValueRule refinements = integer_value(Range::closed(0, limits.max_refinements));
 
   r->fields = {
@@ -224,9 +232,9 @@ ObjectRulePtr mesh_rule(const CaseReadOptions& options) {
       optional_field("geometry", object_value(geometry_rule(options)), nullptr,
                      "points, lines and arcs, meshed with gmsh"),
       optional_field("msh", msh, nullptr, "the text of a gmsh mesh file (ASCII 4.1)"),
-      optional_field("msh_file", msh_file, nullptr,
+      optional_field("msh_file", msh_file_value(limits, "msh text"), nullptr,
                      "the path of a gmsh mesh file (ASCII 4.1), read like msh"),
-      optional_field("geo_file", geo_file, nullptr, "the path of a gmsh .geo script"),
+      optional_field("geo_file", geo_file_value(limits), nullptr, "the path of a gmsh .geo script"),
       optional_field("size", number_value(Range::positive()), defaults.size,
                      "target edge length of the coarse mesh (not used by msh)"),
       optional_field("refinements", refinements, defaults.refinements,

@@ -1,5 +1,6 @@
 #include "case/published_formats.hpp"
 
+#include "case/case3d_reader.hpp"
 #include "case/case_reader.hpp"
 #include "case/result_rules.hpp"
 #include "case/rules_markdown.hpp"
@@ -91,8 +92,17 @@ nlohmann::json case_json_schema() {
                            "A contact case of fosls-contact (docs/case-format.md).");
 }
 
+nlohmann::json case3d_json_schema() {
+  return rules_json_schema(*case3d_rule(), "https://fosls-contact.invalid/schemas/case3d.json",
+                           "A 3D contact case of fosls-contact (docs/case-format.md, \"3D "
+                           "cases\").");
+}
+
 std::map<std::string, std::string> case_format_blocks() {
   auto blocks = object_tables(*case_rule(), TableKind::kInput);
+  // The 3D case's own objects (case3d, mesh3d, builtin3d, condition3d); material and solver
+  // are the same rules as 2D's, so their tables are already there.
+  blocks.merge(object_tables(*case3d_rule(), TableKind::kInput));
   blocks["methods"] = methods_table();
   blocks["limits"] = limits_table();
   return blocks;

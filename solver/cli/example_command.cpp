@@ -3,6 +3,7 @@
 #include <iostream>
 #include <memory>
 #include <string>
+#include <vector>
 
 #include "cli/exit_codes.hpp"
 #include "cli/shipped_examples.hpp"
@@ -12,7 +13,8 @@ namespace fosls {
 namespace {
 
 int run_example(const std::string& requested) {
-  const auto examples = shipped_examples();
+  std::vector<ShippedExample> examples(shipped_examples().begin(), shipped_examples().end());
+  examples.insert(examples.end(), shipped_3d_examples().begin(), shipped_3d_examples().end());
   if (requested.empty()) {
     for (const auto& e : examples) std::cout << e.name << '\n';
     return kExitOk;

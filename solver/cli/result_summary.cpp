@@ -147,7 +147,31 @@ std::string stopped_by(const json& r) {
          " x J^1/2, J^1/2 = " + g(r["stopping"]["estimator"], 2);
 }
 
+void print_review(std::ostream& out, const json& r) {
+  if (r.value("converged", false) && r.value("review_required", false))
+    out << "REVIEW: converged, but the warnings above say the answer may be physically empty or "
+           "wrong (exit code 4)\n";
+}
+
 }  // namespace
+
+void print_result_summary_3d(std::ostream& out, const json& r) {
+  const bool converged = r.value("converged", false);
+  out << (converged ? "converged in " : "NOT converged: stopped after ")
+      << r["iterations"].get<int>() << " iterations (3D, " << r["levels"].get<int>() << " levels, "
+      << r["tetrahedra"].get<long long>() << " tetrahedra, " << r["dofs"].get<long long>()
+      << " unknowns, " << g(r["timing"]["total_s"], 3) << " s; relative KKT residual "
+      << g(r["relative_kkt_residual"], 2) << ")\n";
+  const auto& c = r["contact"];
+  if (c["faces"].get<int>() > 0)
+    out << "  contact force       F = [" << g(c["force"][0], 6) << ", " << g(c["force"][1], 6)
+        << ", " << g(c["force"][2], 6) << "], peak pressure " << g(c["max_pressure"], 4)
+        << ", area in contact " << g(c["area"], 4) << " (" << c["faces_in_contact"].get<int>()
+        << " faces)\n";
+  out << "  error estimator     J^1/2 = " << g(r["functional"]["estimator"], 3)
+      << " (scaled units)\n";
+  print_review(out, r);
+}
 
 void print_result_summary(std::ostream& out, const json& r) {
   const bool converged = r.value("converged", false);
@@ -166,9 +190,7 @@ void print_result_summary(std::ostream& out, const json& r) {
   if (r.contains("accuracy")) print_accuracy(out, r["accuracy"]);
   if (r.contains("sweep")) print_sweep(out, r["sweep"]);
   if (r.contains("load_steps")) print_load_steps(out, r["load_steps"]);
-  if (converged && r.value("review_required", false))
-    out << "REVIEW: converged, but the warnings above say the answer may be physically empty or "
-           "wrong (exit code 4)\n";
+  print_review(out, r);
 }
 
 int result_exit_code(const json& r) {

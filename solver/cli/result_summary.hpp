@@ -10,6 +10,8 @@ namespace fosls {
 
 /// Prints the summary of `result` (docs/result-format.md) to `out`.
 void print_result_summary(std::ostream& out, const nlohmann::json& result);
+/// The same for a 3D result (docs/result-format.md, "3D results").
+void print_result_summary_3d(std::ostream& out, const nlohmann::json& result);
 
 /// The exit code for a written result: kExitNotConverged when it did not converge, else
 /// kExitReviewRequired when a warning says the answer needs review, else kExitOk.

@@ -13,7 +13,9 @@ struct ShippedExample {
   std::string_view text;
 };
 
-/// All shipped examples, sorted by name.
+/// All shipped 2D examples, sorted by name.
 std::span<const ShippedExample> shipped_examples();
+/// The shipped 3D examples (solver/examples/3d), sorted by name.
+std::span<const ShippedExample> shipped_3d_examples();
 
 }  // namespace fosls

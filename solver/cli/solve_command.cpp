@@ -9,9 +9,12 @@
 #include <fstream>
 #include <iostream>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
+#include "case/case3d_reader.hpp"
+#include "case/case3d_runner.hpp"
 #include "case/case_admission.hpp"
 #include "case/case_error.hpp"
 #include "case/case_reader.hpp"
@@ -120,6 +123,45 @@ void use_msh_file(nlohmann::json& case_json, const std::string& path) {
   mesh["msh_file"] = std::filesystem::absolute(path, ec).lexically_normal().string();
 }
 
+/// Writes the result JSON (to --out or stdout) and the .vtu (with --vtu); an exit code when
+/// something could not be written.
+std::optional<int> write_outputs(const nlohmann::json& result, const std::string& vtu,
+                                 const SolveOptions& o) {
+  const std::string result_text = result.dump(2) + "\n";
+  if (o.out_path.empty()) {
+    std::cout << result_text << std::flush;
+    if (!std::cout) {
+      std::cerr << "error: cannot write the result to standard output\n";
+      return kExitInternal;
+    }
+  } else if (!write_file(o.out_path, result_text)) {
+    return kExitInternal;
+  }
+  if (!o.vtu_path.empty() && !write_file(o.vtu_path, vtu)) return kExitInternal;
+  return std::nullopt;
+}
+
+/// A 3D case (case/case3d_reader.hpp): read, solve, write; its summary in three lines.
+int run_solve_3d(const nlohmann::json& case_json, const SolveOptions& o,
+                 const CaseReadOptions& read_options, ProgressLine& progress) {
+  const auto read = read_case_3d(case_json, read_options);
+  if (!read.errors.empty()) {
+    print_errors(read.errors);
+    return kExitBadInput;
+  }
+  Run3dControl control;
+  control.want_vtu = !o.vtu_path.empty();
+  control.vtu_ascii = o.vtu_format == "ascii";
+  control.on_iteration = [&progress](const IterationRecord& r) { progress.update(r); };
+  const Run3dOutput output = run_case_3d(*read.spec, control, read_options.limits);
+  progress.finish();
+  const nlohmann::json& r = output.result;
+  if (const auto failed = write_outputs(r, output.vtu, o)) return *failed;
+  for (const auto& w : r["warnings"]) std::cerr << "warning: " << w.get<std::string>() << '\n';
+  if (!o.quiet) print_result_summary_3d(std::cerr, r);
+  return result_exit_code(r);
+}
+
 int run_solve(const SolveOptions& o) {
   const CaseReadOptions read_options = command_line_read_options(o.max_memory);
 
@@ -133,6 +175,7 @@ int run_solve(const SolveOptions& o) {
   if (!o.msh_path.empty()) use_msh_file(file.json, o.msh_path);
   ProgressLine progress(!o.quiet && isatty(STDERR_FILENO));
   try {
+    if (is_3d_case(file.json)) return run_solve_3d(file.json, o, read_options, progress);
     // The admission rule of estimate, bench and the service, without gmsh; what needs the
     // coarse mesh (mesh errors, the exact size) is checked again by run_case once it is built,
     // which throws it as a CaseException (below).
@@ -150,18 +193,7 @@ int run_solve(const SolveOptions& o) {
       control.on_step = [&progress](int step, long long dofs) { progress.start_step(step, dofs); };
     RunOutput output = run_case(*read.spec, control, read_options.limits);
     progress.finish();
-
-    const std::string result_text = output.result.dump(2) + "\n";
-    if (o.out_path.empty()) {
-      std::cout << result_text << std::flush;
-      if (!std::cout) {
-        std::cerr << "error: cannot write the result to standard output\n";
-        return kExitInternal;
-      }
-    } else if (!write_file(o.out_path, result_text)) {
-      return kExitInternal;
-    }
-    if (!o.vtu_path.empty() && !write_file(o.vtu_path, output.vtu)) return kExitInternal;
+    if (const auto failed = write_outputs(output.result, output.vtu, o)) return *failed;
     return report(output.result, o);
   } catch (const CaseException& e) {
     progress.finish();

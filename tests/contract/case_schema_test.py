@@ -199,10 +199,23 @@ def main():
         errors = [e.message for e in validator.iter_errors(json.loads(path.read_text()))]
         if errors:
             failures.append(f"shipped example {path.name} fails the schema: {errors[:3]}")
+    # 3D cases ("dimension": 3) have their own schema (`fosls-contact schema case3d`).
+    schema3d = json.loads(subprocess.run([args.bin, "schema", "case3d"], capture_output=True,
+                                         text=True, check=True).stdout)
+    jsonschema.Draft202012Validator.check_schema(schema3d)
+    validator3d = jsonschema.Draft202012Validator(schema3d)
+    for path in sorted((source / "solver" / "examples" / "3d").glob("*.json")):
+        errors = [e.message for e in validator3d.iter_errors(json.loads(path.read_text()))]
+        if errors:
+            failures.append(f"shipped 3D example {path.name} fails the 3D schema: {errors[:3]}")
+    if validator3d.is_valid(base_case()):
+        failures.append("the 3D schema accepts a 2D case")
     documented = list(documented_cases(source))
     for case in documented:
-        if not validator.is_valid(case):
-            failures.append(f"documented case {case.get('name')} fails the schema")
+        three_d = case.get("dimension") == 3
+        if not (validator3d if three_d else validator).is_valid(case):
+            failures.append(f"documented case {case.get('name')} fails the "
+                            f"{'3D ' if three_d else ''}schema")
 
     with tempfile.TemporaryDirectory() as tmp:
         work = pathlib.Path(tmp)

@@ -4,6 +4,7 @@
 #include "case/case_reader.hpp"
 #include "../case_errors.hpp"
 #include "../shipped_example.hpp"
+#include "case/case3d_reader.hpp"
 
 #include <gtest/gtest.h>
 #include <unistd.h>
@@ -79,6 +80,11 @@ TEST(ReadCase, CasesInTheDocumentationRead) {
     // Cases that name local files run in tests/contract/msh_workflow_test.py, beside them.
     if (j["mesh"].contains("msh_file") || j["mesh"].contains("geo_file")) continue;
     ++cases;
+    if (is_3d_case(j)) {  // docs/case-format.md, "3D cases"
+      const auto r3 = read_case_3d(j);
+      EXPECT_TRUE(r3.spec) << j["name"] << "\n" << dump_errors(r3.errors);
+      continue;
+    }
     const auto r = read_case(j);
     EXPECT_TRUE(r.spec) << j["name"] << "\n" << dump_errors(r.errors);
   }

@@ -10,6 +10,7 @@
 #include <filesystem>
 #include <fstream>
 #include <functional>
+#include <map>
 #include <nlohmann/json.hpp>
 #include <sstream>
 #include <string>
@@ -350,16 +351,18 @@ TEST(CliExamples, ListAndPrintTheShippedFiles) {
   std::vector<std::string> names;
   std::istringstream lines(list.out);
   for (std::string line; std::getline(lines, line);) names.push_back(line);
-  int files = 0;
-  for (const auto& entry :
-       fs::directory_iterator(std::string(FOSLS_SOURCE_DIR) + "/solver/examples"))
-    if (entry.path().extension() == ".json") ++files;
-  EXPECT_EQ(names.size(), static_cast<std::size_t>(files));
+  // The 2D examples, then the 3D ones (solver/examples/3d), each name once.
+  std::map<std::string, std::string> paths;
+  for (const char* folder : {"/solver/examples", "/solver/examples/3d"})
+    for (const auto& entry : fs::directory_iterator(std::string(FOSLS_SOURCE_DIR) + folder))
+      if (entry.path().extension() == ".json")
+        paths[entry.path().stem().string()] = entry.path().string();
+  EXPECT_EQ(names.size(), paths.size());
   for (const auto& name : names) {
     const ProcessResult r = run_program({"example", name}, work);
     ASSERT_EQ(r.exit_code, 0) << name << ": " << r.err;
-    std::string file =
-        read_file(std::string(FOSLS_SOURCE_DIR) + "/solver/examples/" + name + ".json");
+    ASSERT_TRUE(paths.count(name)) << name;
+    std::string file = read_file(paths[name]);
     if (!file.empty() && file.back() != '\n') file += '\n';
     EXPECT_EQ(r.out, file) << name;
   }

@@ -1,0 +1,200 @@
+// A 3D case, step by step: the coarse mesh from its source, the hierarchy of uniform
+// refinements, the boundary groups checked against the mesh, the problem data, the solve, the
+// result.
+
+#include "case/case3d_runner.hpp"
+
+#include <chrono>
+#include <cmath>
+#include <fstream>
+#include <sstream>
+
+#include "assembly/tet_hierarchy.hpp"
+#include "case/case3d_result.hpp"
+#include "case/case_error.hpp"
+#include "mesh/gmsh_mesh.hpp"
+#include "mesh/mesh_error.hpp"
+#include "mesh/tet_msh_reader.hpp"
+#include "mesh/tet_refinement.hpp"
+#include "post/tet_vtu_writer.hpp"
+#include "solvers/solve_loop.hpp"
+
+namespace fosls {
+
+namespace {
+
+using nlohmann::json;
+using Clock = std::chrono::steady_clock;
+
+double seconds_since(Clock::time_point t0) {
+  return std::chrono::duration<double>(Clock::now() - t0).count();
+}
+
+std::string mesh_pointer(const Mesh3dSpec& m) {
+  switch (m.kind) {
+    case Mesh3dSpec::Kind::kMshFile:
+      return "/mesh/msh_file";
+    case Mesh3dSpec::Kind::kGeoFile:
+      return "/mesh/geo_file";
+    default:
+      return "/mesh/builtin";
+  }
+}
+
+/// Step 1: the coarse mesh from the case's source; its problems at the source's pointer.
+TetMesh coarse_mesh(const Mesh3dSpec& m) {
+  try {
+    switch (m.kind) {
+      case Mesh3dSpec::Kind::kBox:
+        return make_box(m.cells, m.lengths);
+      case Mesh3dSpec::Kind::kHalfBall:
+        return make_half_ball(m.ball);
+      case Mesh3dSpec::Kind::kMshFile: {
+        std::ifstream in(m.path, std::ios::binary);
+        std::stringstream text;
+        text << in.rdbuf();
+        return tet_mesh_from_msh(text.str());
+      }
+      case Mesh3dSpec::Kind::kGeoFile:
+        return tet_mesh_from_geo_file(m.path, m.size);
+    }
+  } catch (const MeshError& e) {
+    std::vector<CaseError> errors;
+    for (const auto& p : e.problems())
+      errors.push_back(
+          {p.field == "/size" ? std::string("/mesh/size") : mesh_pointer(m), p.detail});
+    throw CaseException(std::move(errors));
+  } catch (const std::invalid_argument& e) {  // the half ball's grading folds a tetrahedron
+    throw CaseException(mesh_pointer(m), std::string("these parameters give no valid mesh (") +
+                                             e.what() + "); use a smaller grading or fewer cells");
+  }
+  throw CaseException(mesh_pointer(m), "unknown mesh source");
+}
+
+/// Refuses refinements whose finest level would exceed the unknowns' limit: `coarse_unknowns`
+/// grow about eightfold per refinement (vertices and faces each do).
+void check_unknowns(double coarse_unknowns, int refinements, const CaseLimits& limits) {
+  const double estimate = coarse_unknowns * std::pow(8.0, refinements);
+  if (estimate <= static_cast<double>(limits.max_dofs)) return;
+  std::ostringstream s;
+  s << "this mesh and these refinements would give about " << std::llround(estimate)
+    << " unknowns, more than the limit of " << limits.max_dofs
+    << "; use fewer refinements or a coarser mesh";
+  throw CaseException("/mesh/refinements", s.str());
+}
+
+/// A builtin's coarse unknowns before it is built: Kuhn meshes have about T/6 vertices and 2T
+/// faces for T tetrahedra, three unknowns each.
+double builtin_unknowns(const Mesh3dSpec& m) {
+  const double cubes = m.kind == Mesh3dSpec::Kind::kBox
+                           ? double(m.cells[0]) * m.cells[1] * m.cells[2]
+                           : 4.0 * m.ball.cells * m.ball.cells * m.ball.cells;
+  return 3.0 * (1.0 / 6.0 + 2.0) * 6.0 * cubes;
+}
+
+int group_index(const TetMesh& mesh, const std::string& name) {
+  const auto& names = mesh.group_names();
+  for (std::size_t g = 0; g < names.size(); ++g)
+    if (names[g] == name) return static_cast<int>(g);
+  return -1;
+}
+
+/// Step 3: every named group is one of the mesh's, and every face of a contact group faces its
+/// plane (the gap along the body normal is then finite everywhere).
+void check_groups(const Case3dSpec& spec, const TetMesh& mesh) {
+  std::vector<CaseError> errors;
+  for (const auto& [name, bc] : spec.boundary) {
+    const int g = group_index(mesh, name);
+    if (g < 0) {
+      std::string known;
+      for (const auto& n : mesh.group_names()) known += (known.empty() ? "" : ", ") + n;
+      errors.push_back({"/boundary/" + name, "the mesh has no boundary group \"" + name +
+                                                 "\"; its groups are " + known});
+      continue;
+    }
+    if (bc.type != Condition3d::Type::kContact) continue;
+    for (int f = 0; f < mesh.num_faces(); ++f) {
+      if (mesh.face_group(f) != g || mesh.face_normal(f).dot(bc.plane_normal) < 0) continue;
+      const Point3 c = mesh.face_centroid(f);
+      std::ostringstream s;
+      s << "the face of group " << name << " at (" << c.x() << ", " << c.y() << ", " << c.z()
+        << ") does not face the plane (its outward normal is not against the plane's normal): "
+           "the gap is measured along the body normal, so every face of a contact group must "
+           "face the plane; check the normal's sign (from the plane into the body) or make the "
+           "contact group smaller";
+      errors.push_back({"/boundary/" + name + "/normal", s.str()});
+      break;
+    }
+  }
+  if (!errors.empty()) throw CaseException(std::move(errors));
+}
+
+/// Step 4: the problem data on the mesh's groups.
+TetProblemData problem_data(const Case3dSpec& spec, const TetMesh& mesh) {
+  TetProblemData d;
+  d.material = {.mu = spec.material.mu, .lambda = spec.material.lambda};
+  for (int i = 0; i < 3; ++i)
+    if (spec.body_force[i] != 0.0)
+      d.body_force[i] = [v = spec.body_force[i]](const Point3&) { return v; };
+  d.groups.resize(mesh.group_names().size());
+  for (const auto& [name, bc] : spec.boundary) {
+    TetProblemData::Group& group = d.groups[group_index(mesh, name)];
+    if (bc.type == Condition3d::Type::kContact) {
+      group.role = GroupRole::kContact;
+      group.gap_along_normal = [p = bc.plane_point, m = bc.plane_normal](const Point3& x,
+                                                                         const Point3& n) {
+        return (x - p).dot(m) / -n.dot(m);
+      };
+      continue;
+    }
+    group.role =
+        bc.type == Condition3d::Type::kDirichlet ? GroupRole::kDirichlet : GroupRole::kNeumann;
+    for (int i = 0; i < 3; ++i) group.values[i] = [v = bc.values[i]](const Point3&) { return v; };
+  }
+  return d;
+}
+
+}  // namespace
+
+Run3dOutput run_case_3d(const Case3dSpec& spec, const Run3dControl& control,
+                        const CaseLimits& limits) {
+  const auto t0 = Clock::now();
+  const bool builtin =
+      spec.mesh.kind == Mesh3dSpec::Kind::kBox || spec.mesh.kind == Mesh3dSpec::Kind::kHalfBall;
+  if (builtin) check_unknowns(builtin_unknowns(spec.mesh), spec.mesh.refinements, limits);
+  TetMesh coarse = coarse_mesh(spec.mesh);
+  check_unknowns(3.0 * (coarse.num_vertices() + coarse.num_faces()), spec.mesh.refinements, limits);
+  TetHierarchy meshes = build_tet_hierarchy(std::move(coarse), spec.mesh.refinements);
+  check_groups(spec, meshes.finest());
+  const double mesh_s = seconds_since(t0);
+
+  const auto t1 = Clock::now();
+  TetProblemData data = problem_data(spec, meshes.finest());
+  const TetDiscretization disc(std::move(meshes), std::move(data));
+  const double assembly_s = seconds_since(t1);
+
+  const auto t2 = Clock::now();
+  const BoxQp& qp = disc.problem().qp;
+  Vector x = Vector::Zero(qp.size());
+  SolverObserver observer;
+  observer.on_iteration = control.on_iteration;
+  const bool multilevel = spec.solver.method == SolverMethod::kMmg;
+  const SolverReport report = solve_box_qp(
+      qp, multilevel ? disc.build_level_hierarchy() : LevelHierarchy{}, spec.solver, observer, x);
+  const double solve_s = seconds_since(t2);
+
+  Run3dOutput out;
+  out.result = case3d_result(spec, disc, x, report);
+  out.result["timing"] = {{"mesh_s", mesh_s},
+                          {"assembly_s", assembly_s},
+                          {"solve_s", solve_s},
+                          {"total_s", seconds_since(t0)}};
+  if (control.want_vtu) {
+    const TetAssembler& a = disc.assembler();
+    out.vtu = write_tet_vtu(a, disc.problem(), a.full_vector(disc.problem(), x),
+                            control.vtu_ascii ? VtuEncoding::kAscii : VtuEncoding::kBinary);
+  }
+  return out;
+}
+
+}  // namespace fosls

@@ -1,0 +1,44 @@
+#pragma once
+// A 3D case ("dimension": 3) as the library sees it after its JSON has been validated
+// (case3d_reader.hpp; docs/case-format.md, "3D cases"). Its own small format: the 2D case's
+// material and solver sections, 3-vectors of numbers, a rigid plane as the obstacle.
+
+#include <array>
+#include <map>
+#include <string>
+
+#include "case/case_spec.hpp"
+#include "mesh/tet_half_ball.hpp"
+
+namespace fosls {
+
+struct Mesh3dSpec {
+  enum class Kind { kBox, kHalfBall, kMshFile, kGeoFile };
+  Kind kind = Kind::kBox;
+  std::array<int, 3> cells = {2, 2, 2};  ///< box: cubes (six tetrahedra each) per direction
+  Point3 lengths = Point3(1, 1, 1);      ///< box: [0, lx] × [0, ly] × [0, lz]
+  HalfBallSpec ball;                     ///< half_ball
+  std::string path;                      ///< msh_file, geo_file
+  double size = 0.25;                    ///< geo_file: coarse edge length
+  int refinements = 0;                   ///< levels = refinements + 1
+};
+
+struct Condition3d {
+  enum class Type { kDirichlet, kNeumann, kContact };
+  Type type = Type::kNeumann;
+  std::array<double, 3> values = {0, 0, 0};  ///< displacement (Dirichlet) or traction (Neumann)
+  Point3 plane_point = Point3::Zero();       ///< contact: a point of the rigid plane
+  Point3 plane_normal = Point3::UnitZ();     ///< contact: unit normal from the plane into the body
+};
+
+struct Case3dSpec {
+  std::string name = "case";
+  Mesh3dSpec mesh;
+  Material material;
+  std::array<double, 3> body_force = {0, 0, 0};
+  /// Condition per boundary group; groups not named are traction free.
+  std::map<std::string, Condition3d> boundary;
+  SolverOptions solver;
+};
+
+}  // namespace fosls

@@ -1,0 +1,163 @@
+// 3D cases through the case layer (case/case3d_reader.hpp, case/case3d_runner.hpp): the shipped
+// hertz_3d example read and solved by mmg and pdas to the same force, against 3D Hertz; every
+// problem of a bad case named by its field; the warnings a 2D result gives for the same finding.
+
+#include <gtest/gtest.h>
+
+#include <nlohmann/json.hpp>
+
+#include "../shipped_example.hpp"
+#include "../tet_problems.hpp"
+#include "case/case3d_reader.hpp"
+#include "case/case3d_runner.hpp"
+#include "case/case_error.hpp"
+#include "case/case_reader.hpp"
+
+namespace fosls {
+namespace {
+
+using nlohmann::json;
+
+json hertz_3d(int refinements) {
+  json j = testing::load_shipped_example("3d/hertz_3d");
+  j["mesh"]["refinements"] = refinements;
+  return j;
+}
+
+json run(const json& j) {
+  const auto read = read_case_3d(j);
+  EXPECT_TRUE(read.errors.empty()) << (read.errors.empty() ? "" : read.errors[0].detail);
+  return run_case_3d(*read.spec).result;
+}
+
+/// The pointers of the problems read_case_3d reports for `j`.
+std::vector<std::string> problems(const json& j) {
+  std::vector<std::string> pointers;
+  for (const auto& e : read_case_3d(j).errors) pointers.push_back(e.pointer);
+  return pointers;
+}
+
+/// The pointer of the CaseException the run throws (after a clean read).
+std::string run_problem(const json& j) {
+  try {
+    run(j);
+  } catch (const CaseException& e) {
+    return e.errors().front().pointer;
+  }
+  return "";
+}
+
+TEST(Case3d, ShippedHertzIsAThreeDCaseTheTwoDReaderRefusesByItsField) {
+  const json j = hertz_3d(1);
+  EXPECT_TRUE(is_3d_case(j));
+  const auto read2d = read_case(j);
+  ASSERT_EQ(read2d.errors.size(), 1u);
+  EXPECT_EQ(read2d.errors[0].pointer, "/dimension");
+  json two_d = testing::load_shipped_example("hertz");
+  two_d["dimension"] = 2;
+  EXPECT_TRUE(read_case(two_d).errors.empty());
+}
+
+TEST(Case3d, HertzForceIsAThreeVectorAndMmgAgreesWithPdas) {
+  json j = hertz_3d(1);
+  j["solver"]["tolerance"] = 1e-10;
+  const json mmg = run(j);
+  j["solver"]["method"] = "pdas";
+  const json pdas = run(j);
+  ASSERT_TRUE(mmg["converged"].get<bool>());
+  ASSERT_TRUE(pdas["converged"].get<bool>());
+  const auto& f = mmg["contact"]["force"];
+  ASSERT_EQ(f.size(), 3u);
+  const double fz = f[2].get<double>();
+  EXPECT_NEAR(fz, pdas["contact"]["force"][2].get<double>(), 1e-6 * fz);
+  // The load is along the axis; the Kuhn mesh is not symmetric about it, so the lateral force
+  // is a discretisation error that refinement shrinks (1.4 % of F_z here, 0.45 % one level up).
+  EXPECT_LT(std::abs(f[0].get<double>()), 0.03 * fz);
+  EXPECT_LT(std::abs(f[1].get<double>()), 0.03 * fz);
+  // Within the 10 % that the half ball's depth and the mesh leave (docs/validation.md §16).
+  EXPECT_NEAR(fz, testing::hertz_force_3d(1.0), 0.10 * testing::hertz_force_3d(1.0));
+  EXPECT_LE(mmg["iterations"].get<int>(), 40);
+  EXPECT_GT(mmg["contact"]["faces_in_contact"].get<int>(), 0);
+  EXPECT_TRUE(mmg["warnings"].empty());
+  EXPECT_FALSE(mmg["review_required"].get<bool>());
+}
+
+TEST(Case3d, EveryProblemOfABadCaseIsNamedByItsField) {
+  json j = hertz_3d(1);
+  j["boundary"]["top"]["displacement"] = {0, -0.01};
+  j["boundary"]["contact"]["normal"] = {0, 0, 0};
+  j["mesh"]["refinements"] = 9;
+  j["material"]["colour"] = "red";
+  j["solver"]["method"] = "tnnmg";
+  const auto p = problems(j);
+  for (const char* pointer : {"/boundary/top/displacement", "/boundary/contact/normal",
+                              "/mesh/refinements", "/material/colour"})
+    EXPECT_NE(std::find(p.begin(), p.end(), pointer), p.end()) << pointer;
+  json method = hertz_3d(0);
+  method["solver"]["method"] = "tnnmg";
+  EXPECT_EQ(problems(method), std::vector<std::string>{"/solver/method"});
+  json no_source = hertz_3d(0);
+  no_source["mesh"].erase("builtin");
+  EXPECT_EQ(problems(no_source), std::vector<std::string>{"/mesh"});
+}
+
+TEST(Case3d, WhatOnlyTheMeshShowsIsNamedByItsField) {
+  json unknown_group = hertz_3d(0);
+  unknown_group["boundary"]["bottom"] = {{"type", "neumann"}, {"traction", {0, 0, 0}}};
+  EXPECT_EQ(run_problem(unknown_group), "/boundary/bottom");
+  json facing_away = hertz_3d(0);
+  facing_away["boundary"]["contact"]["normal"] = {0, 0, -1};  // from the body into the plane
+  EXPECT_EQ(run_problem(facing_away), "/boundary/contact/normal");
+  json too_fine = hertz_3d(0);
+  too_fine["mesh"]["builtin"] = {{"name", "box"}, {"cells", {40, 40, 40}}};
+  too_fine["mesh"]["refinements"] = 3;  // refused before the coarse mesh is built
+  EXPECT_EQ(run_problem(too_fine), "/mesh/refinements");
+  json folded = hertz_3d(0);
+  folded["mesh"]["builtin"]["cells"] = 16;  // grading 3 folds a tetrahedron at 16 cells
+  EXPECT_EQ(run_problem(folded), "/mesh/builtin");
+}
+
+TEST(Case3d, ABodyPulledAwayIsNoContactAndAnOverlapIsInitialPenetration) {
+  json pulled = hertz_3d(0);
+  pulled["boundary"]["top"]["displacement"] = {0, 0, 0.01};
+  const json away = run(pulled);
+  EXPECT_TRUE(away["converged"].get<bool>());
+  EXPECT_TRUE(away["review_required"].get<bool>());
+  ASSERT_EQ(away["warning_details"].size(), 1u);
+  EXPECT_EQ(away["warning_details"][0]["code"], "no_contact");
+  EXPECT_EQ(away["contact"]["force"][2].get<double>(), 0.0);
+
+  json overlap = hertz_3d(0);
+  overlap["boundary"]["top"]["displacement"] = {0, 0, 0};
+  overlap["boundary"]["contact"]["point"] = {0, 0, -0.99};
+  const json inside = run(overlap);
+  ASSERT_GE(inside["warning_details"].size(), 1u);
+  EXPECT_EQ(inside["warning_details"][0]["code"], "initial_penetration");
+  EXPECT_GT(inside["contact"]["force"][2].get<double>(), 0.0);
+}
+
+TEST(Case3d, ABoxCompressedOntoAPlaneIsExactlyUniaxial) {
+  // The unit box, ν = 0, its top moved down by 0.01 onto the plane z = 0 that its bottom
+  // touches: u = (0, 0, −0.01 z) and σ_zz = −0.01 E are in the discrete space, so the pressure
+  // is 0.01 on every bottom face and F = (0, 0, 0.01) to the solver's tolerance.
+  const json j = {
+      {"dimension", 3},
+      {"mesh", {{"builtin", "box"}, {"refinements", 1}}},
+      {"material", {{"E", 1}, {"nu", 0}}},
+      {"boundary",
+       {{"top", {{"type", "dirichlet"}, {"displacement", {0, 0, -0.01}}}},
+        {"bottom", {{"type", "contact"}, {"point", {0, 0, 0}}, {"normal", {0, 0, 1}}}}}},
+      {"solver", {{"tolerance", 1e-12}}}};
+  const json r = run(j);
+  ASSERT_TRUE(r["converged"].get<bool>());
+  const auto& c = r["contact"];
+  EXPECT_NEAR(c["force"][2].get<double>(), 0.01, 1e-8);
+  EXPECT_NEAR(c["force"][0].get<double>(), 0.0, 1e-8);
+  EXPECT_NEAR(c["max_pressure"].get<double>(), 0.01, 1e-8);
+  EXPECT_EQ(c["faces_in_contact"].get<int>(), c["faces"].get<int>());
+  EXPECT_NEAR(c["area"].get<double>(), 1.0, 1e-12);
+  EXPECT_EQ(r["tetrahedra"].get<int>(), 6 * 8 * 8);
+}
+
+}  // namespace
+}  // namespace fosls

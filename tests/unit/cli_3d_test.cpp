@@ -1,0 +1,111 @@
+// 3D cases through `fosls-contact` as a user runs them (docs/case-format.md, "3D cases"): the
+// shipped hertz_3d example listed and solved, a .geo file next to the case meshed in 3D, the
+// exit codes of a bad case (2) and of an answer without contact (4), and the .vtu of
+// tetrahedra. Runs build/bin/fosls-contact.
+
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+#include <nlohmann/json.hpp>
+#include <string>
+
+#include "process/child_process.hpp"
+
+namespace fosls {
+namespace {
+
+using nlohmann::json;
+namespace fs = std::filesystem;
+
+struct CliRun {
+  int exit_code = -1;
+  std::string out, err;
+};
+
+CliRun fosls_contact(std::vector<std::string> args, const std::string& input = "") {
+  ChildOptions o;
+  o.argv = {std::string(FOSLS_BIN_DIR) + "/fosls-contact"};
+  o.argv.insert(o.argv.end(), args.begin(), args.end());
+  o.input = input;
+  const ChildResult r = run_child(o);
+  EXPECT_EQ(r.end, ChildResult::End::kExited) << r.describe();
+  return {r.exit_code, r.output, r.errors};
+}
+
+/// A folder for one test's files, removed when the test ends.
+struct Folder {
+  fs::path path;
+  explicit Folder(const std::string& label)
+      : path(fs::temp_directory_path() / ("fosls_cli_3d_" + label)) {
+    fs::remove_all(path);
+    fs::create_directories(path);
+  }
+  ~Folder() { fs::remove_all(path); }
+};
+
+TEST(Cli3d, TheShippedHertzExampleIsListedAndSolvesToAThreeVectorForce) {
+  const CliRun list = fosls_contact({"example"});
+  EXPECT_NE(list.out.find("hertz_3d\n"), std::string::npos);
+  const CliRun example = fosls_contact({"example", "hertz_3d"});
+  ASSERT_EQ(example.exit_code, 0);
+  json j = json::parse(example.out);
+  j["mesh"]["refinements"] = 1;  // the shipped 2 takes seconds; the path is the same
+  Folder folder("hertz");
+  const fs::path vtu = folder.path / "hertz_3d.vtu";
+  const CliRun solve = fosls_contact({"solve", "-", "--vtu", vtu.string()}, j.dump());
+  ASSERT_EQ(solve.exit_code, 0) << solve.err;
+  const json r = json::parse(solve.out);
+  EXPECT_EQ(r["dimension"], 3);
+  ASSERT_EQ(r["contact"]["force"].size(), 3u);
+  EXPECT_GT(r["contact"]["force"][2].get<double>(), 0.0);
+  EXPECT_NE(solve.err.find("contact force       F = ["), std::string::npos) << solve.err;
+  std::ifstream in(vtu);
+  const std::string text((std::istreambuf_iterator<char>(in)), {});
+  EXPECT_NE(text.find("NumberOfCells=\"" + std::to_string(r["tetrahedra"].get<int>()) + "\""),
+            std::string::npos);
+}
+
+TEST(Cli3d, AGeoFileNextToTheCaseIsMeshedInThreeDimensions) {
+  Folder folder("geo");
+  std::ofstream(folder.path / "block.geo") << R"(SetFactory("OpenCASCADE");
+Box(1) = {0, 0, 0, 1, 1, 1};
+Physical Surface("bottom") = {5};
+Physical Surface("top") = {6};
+Physical Surface("sides") = {1, 2, 3, 4};
+)";
+  // ν = 0 and the top moved down by 0.01 onto the plane under the bottom: uniaxial, F_z = 0.01 E.
+  const json j = {
+      {"dimension", 3},
+      {"mesh", {{"geo_file", "block.geo"}, {"size", 0.5}, {"refinements", 1}}},
+      {"material", {{"E", 2}, {"nu", 0}}},
+      {"boundary",
+       {{"top", {{"type", "dirichlet"}, {"displacement", {0, 0, -0.01}}}},
+        {"bottom", {{"type", "contact"}, {"point", {0, 0, 0}}, {"normal", {0, 0, 1}}}}}},
+      {"solver", {{"tolerance", 1e-10}}}};
+  std::ofstream(folder.path / "block.json") << j.dump();
+  const CliRun solve = fosls_contact({"solve", (folder.path / "block.json").string(), "-q"});
+  ASSERT_EQ(solve.exit_code, 0) << solve.err;
+  const json r = json::parse(solve.out);
+  EXPECT_NEAR(r["contact"]["force"][2].get<double>(), 0.02, 1e-7);
+  EXPECT_NEAR(r["contact"]["area"].get<double>(), 1.0, 1e-9);
+}
+
+TEST(Cli3d, ABadCaseExitsTwoNamingTheFieldAndNoContactExitsFourWithReview) {
+  json j = json::parse(fosls_contact({"example", "hertz_3d"}).out);
+  j["mesh"]["refinements"] = 0;
+  json bad = j;
+  bad["boundary"]["top"]["displacement"] = {0, -0.01};
+  const CliRun refused = fosls_contact({"solve", "-"}, bad.dump());
+  EXPECT_EQ(refused.exit_code, 2);
+  EXPECT_NE(refused.err.find("/boundary/top/displacement"), std::string::npos) << refused.err;
+  json away = j;
+  away["boundary"]["top"]["displacement"] = {0, 0, 0.01};
+  const CliRun empty = fosls_contact({"solve", "-"}, away.dump());
+  EXPECT_EQ(empty.exit_code, 4);
+  EXPECT_NE(empty.err.find("warning: nothing touches the plane"), std::string::npos) << empty.err;
+  EXPECT_NE(empty.err.find("REVIEW"), std::string::npos) << empty.err;
+}
+
+}  // namespace
+}  // namespace fosls
