@@ -12,6 +12,7 @@
 #include "assembly/tet_hierarchy.hpp"
 #include "case/case3d_result.hpp"
 #include "case/case_error.hpp"
+#include "case/memory_size.hpp"
 #include "mesh/gmsh_mesh.hpp"
 #include "mesh/mesh_error.hpp"
 #include "mesh/tet_msh_reader.hpp"
@@ -71,15 +72,35 @@ TetMesh coarse_mesh(const Mesh3dSpec& m) {
   throw CaseException(mesh_pointer(m), "unknown mesh source");
 }
 
-/// Refuses refinements whose finest level would exceed the unknowns' limit: `coarse_unknowns`
-/// grow about eightfold per refinement (vertices and faces each do).
-void check_unknowns(double coarse_unknowns, int refinements, const CaseLimits& limits) {
-  const double estimate = coarse_unknowns * std::pow(8.0, refinements);
-  if (estimate <= static_cast<double>(limits.max_dofs)) return;
+/// Memory of a 3D solve per unknown of the finest level and the program's own, measured on the
+/// half ball and the block (docs/performance.md, "3D"): pdas's direct solver
+/// fills in, so its figure is the largest measured and grows with the mesh.
+double estimated_3d_bytes(double unknowns, SolverMethod method) {
+  const double per_unknown = method == SolverMethod::kPdas ? 8000.0 : 2200.0;
+  return 40.0 * (1 << 20) + per_unknown * unknowns;
+}
+
+/// Refuses refinements whose finest level would exceed the unknowns' limit or the memory
+/// budget: `coarse_unknowns` grow about eightfold per refinement (vertices and faces each do).
+void check_size(double coarse_unknowns, const Case3dSpec& spec, const CaseLimits& limits) {
+  const double unknowns = coarse_unknowns * std::pow(8.0, spec.mesh.refinements);
   std::ostringstream s;
-  s << "this mesh and these refinements would give about " << std::llround(estimate)
-    << " unknowns, more than the limit of " << limits.max_dofs
+  if (unknowns > static_cast<double>(limits.max_dofs)) {
+    s << "this mesh and these refinements would give about " << std::llround(unknowns)
+      << " unknowns, more than the limit of " << limits.max_dofs
+      << "; use fewer refinements or a coarser mesh";
+    throw CaseException("/mesh/refinements", s.str());
+  }
+  const bool pdas = spec.solver.method == SolverMethod::kPdas;
+  const double bytes = estimated_3d_bytes(unknowns, spec.solver.method);
+  if (limits.max_memory_bytes <= 0 || bytes <= limits.max_memory_bytes) return;
+  s << "the solve needs about " << format_bytes(bytes) << " (about " << std::llround(unknowns)
+    << " unknowns with " << (pdas ? "pdas" : "mmg") << "), more than the "
+    << format_bytes(limits.max_memory_bytes) << " " << limits.memory_budget_name
     << "; use fewer refinements or a coarser mesh";
+  if (pdas)
+    s << ", or solver.method mmg (about "
+      << format_bytes(estimated_3d_bytes(unknowns, SolverMethod::kMmg)) << ")";
   throw CaseException("/mesh/refinements", s.str());
 }
 
@@ -161,9 +182,9 @@ Run3dOutput run_case_3d(const Case3dSpec& spec, const Run3dControl& control,
   const auto t0 = Clock::now();
   const bool builtin =
       spec.mesh.kind == Mesh3dSpec::Kind::kBox || spec.mesh.kind == Mesh3dSpec::Kind::kHalfBall;
-  if (builtin) check_unknowns(builtin_unknowns(spec.mesh), spec.mesh.refinements, limits);
+  if (builtin) check_size(builtin_unknowns(spec.mesh), spec, limits);
   TetMesh coarse = coarse_mesh(spec.mesh);
-  check_unknowns(3.0 * (coarse.num_vertices() + coarse.num_faces()), spec.mesh.refinements, limits);
+  check_size(3.0 * (coarse.num_vertices() + coarse.num_faces()), spec, limits);
   TetHierarchy meshes = build_tet_hierarchy(std::move(coarse), spec.mesh.refinements);
   check_groups(spec, meshes.finest());
   const double mesh_s = seconds_since(t0);

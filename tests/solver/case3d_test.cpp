@@ -112,6 +112,22 @@ TEST(Case3d, WhatOnlyTheMeshShowsIsNamedByItsField) {
   too_fine["mesh"]["builtin"] = {{"name", "box"}, {"cells", {40, 40, 40}}};
   too_fine["mesh"]["refinements"] = 3;  // refused before the coarse mesh is built
   EXPECT_EQ(run_problem(too_fine), "/mesh/refinements");
+  const auto refused_for_memory = [](const json& j, double bytes) {
+    CaseLimits limits;
+    limits.max_memory_bytes = bytes;
+    try {
+      run_case_3d(*read_case_3d(j).spec, {}, limits);
+    } catch (const CaseException& e) {
+      return e.errors().front().pointer + ": " + e.errors().front().detail;
+    }
+    return std::string();
+  };
+  json pdas = hertz_3d(2);  // 79 384 unknowns: about 208 MiB with mmg, 649 MiB with pdas
+  pdas["solver"]["method"] = "pdas";
+  const std::string memory = refused_for_memory(pdas, 300.0 * (1 << 20));
+  EXPECT_TRUE(memory.starts_with("/mesh/refinements: the solve needs about")) << memory;
+  EXPECT_NE(memory.find("or solver.method mmg"), std::string::npos) << memory;
+  EXPECT_EQ(refused_for_memory(hertz_3d(0), 300.0 * (1 << 20)), "");  // and it then runs
   json folded = hertz_3d(0);
   folded["mesh"]["builtin"]["cells"] = 16;  // grading 3 folds a tetrahedron at 16 cells
   EXPECT_EQ(run_problem(folded), "/mesh/builtin");
