@@ -3,7 +3,11 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
-#include <sstream>
+#include <string>
+#include <vector>
+
+#include "case/result_json.hpp"
+#include "case/result_warnings.hpp"
 
 namespace fosls {
 
@@ -44,48 +48,50 @@ std::pair<double, Point3> smallest_gap(const Case3dSpec& spec, const TetMesh& me
     if (mesh.face_group(f) < 0) continue;  // an interior face
     const auto it = spec.boundary.find(mesh.group_names()[mesh.face_group(f)]);
     if (it == spec.boundary.end() || it->second.type != Condition3d::Type::kContact) continue;
-    const Condition3d& c = it->second;
     for (int v : mesh.face(f)) {
-      const double g = (mesh.vertex(v) - c.plane_point).dot(c.plane_normal) /
-                       -mesh.face_normal(f).dot(c.plane_normal);
+      const double g = it->second.gap_along(mesh.vertex(v), mesh.face_normal(f));
       if (g < out.first) out = {g, mesh.vertex(v)};
     }
   }
   return out;
 }
 
-std::string where(const Point3& x) {
-  std::ostringstream s;
-  s << "(" << x.x() << ", " << x.y() << ", " << x.z() << ")";
-  return s.str();
+/// The length of the mesh's bounding box's diagonal: the body's size.
+double body_size(const TetMesh& mesh) {
+  Point3 lo = mesh.vertex(0), hi = mesh.vertex(0);
+  for (int v = 1; v < mesh.num_vertices(); ++v)
+    lo = lo.cwiseMin(mesh.vertex(v)), hi = hi.cwiseMax(mesh.vertex(v));
+  return (hi - lo).norm();
 }
 
-json warnings(const Case3dSpec& spec, const TetMesh& mesh, const ContactSummary& c,
-              const SolverReport& report) {
-  json details = json::array();
-  auto add = [&details](const char* code, const std::string& message, bool review) {
-    details.push_back({{"code", code}, {"message", message}, {"review", review}});
-  };
+std::string where(const Point3& x) {
+  return "(" + sentence_number(x.x()) + ", " + sentence_number(x.y()) + ", " +
+         sentence_number(x.z()) + ")";
+}
+
+/// The contact warnings 2D gives for the same findings, with the same codes; overlaps below
+/// kTouchingOverlap of the body's size are touching, as in 2D.
+std::vector<ResultWarning> contact_warnings(const Case3dSpec& spec, const TetMesh& mesh,
+                                            const ContactSummary& c) {
+  std::vector<ResultWarning> warnings;
+  if (c.faces == 0) return warnings;
   const auto [gap, at] = smallest_gap(spec, mesh);
-  const double size = (mesh.vertex(0) - at).norm() + 1.0;  // a scale for "touching"
-  if (c.faces > 0 && gap < -1e-6 * size)
-    add("initial_penetration",
-        "the body starts inside the plane: the gap along the body normal is down to " +
-            std::to_string(gap) + " at " + where(at) +
-            "; the solution pushes it out. Move the plane's point if this is not meant",
-        true);
-  if (c.faces > 0 && c.faces_in_contact == 0)
-    add("no_contact",
-        "nothing touches the plane: no contact face carries pressure and the force is 0; the "
-        "smallest gap is " +
-            std::to_string(gap) + " at " + where(at) + ". Press the body towards the plane",
-        true);
-  if (!report.converged)
-    add("not_converged",
-        "the iteration stopped before the tolerance (" + report.message +
-            "); the result is the last iterate",
-        false);
-  return details;
+  if (gap < -kTouchingOverlap * body_size(mesh))
+    warnings.push_back({"initial_penetration",
+                        "the body starts inside the plane: the gap along the body normal is "
+                        "down to " +
+                            sentence_number(gap) + " at " + where(at) +
+                            "; the solution pushes it out. Move the plane's point if this is "
+                            "not meant",
+                        true});
+  if (c.faces_in_contact == 0)
+    warnings.push_back({"no_contact",
+                        "nothing touches the plane: no contact face carries pressure and the "
+                        "force is 0; the smallest gap is " +
+                            sentence_number(gap) + " at " + where(at) +
+                            ". Press the body towards the plane",
+                        true});
+  return warnings;
 }
 
 }  // namespace
@@ -104,8 +110,7 @@ json case3d_result(const Case3dSpec& spec, const TetDiscretization& disc, const 
   r["iterations"] = report.iterations;
   r["method"] = spec.solver.method == SolverMethod::kPdas ? "pdas" : "mmg";
   r["tolerance"] = spec.solver.tolerance;
-  r["relative_kkt_residual"] =
-      report.initial_kkt > 0 ? report.final_kkt / report.initial_kkt : report.final_kkt;
+  r["relative_kkt_residual"] = relative_kkt(report);
   r["levels"] = disc.meshes().num_levels();
   r["dofs"] = disc.problem().qp.size();
   r["tetrahedra"] = mesh.num_tets();
@@ -119,15 +124,12 @@ json case3d_result(const Case3dSpec& spec, const TetDiscretization& disc, const 
                   {"area", c.area},
                   {"faces", c.faces},
                   {"faces_in_contact", c.faces_in_contact}};
-  const json details = warnings(spec, mesh, c, report);
-  r["warning_details"] = details;
   r["warnings"] = json::array();
-  bool review = false;
-  for (const auto& w : details) {
-    r["warnings"].push_back(w["message"]);
-    review = review || w["review"].get<bool>();
-  }
-  r["review_required"] = review;
+  r["warning_details"] = json::array();
+  r["review_required"] = false;
+  add_warnings(r, contact_warnings(spec, mesh, c));
+  if (!report.converged)  // 2D's sentence: the residual reached, the rate, what to change
+    add_warnings(r, {{"not_converged", convergence_message(report, spec.solver), false}});
   return r;
 }
 

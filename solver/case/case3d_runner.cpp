@@ -162,9 +162,8 @@ TetProblemData problem_data(const Case3dSpec& spec, const TetMesh& mesh) {
     TetProblemData::Group& group = d.groups[group_index(mesh, name)];
     if (bc.type == Condition3d::Type::kContact) {
       group.role = GroupRole::kContact;
-      group.gap_along_normal = [p = bc.plane_point, m = bc.plane_normal](const Point3& x,
-                                                                         const Point3& n) {
-        return (x - p).dot(m) / -n.dot(m);
+      group.gap_along_normal = [plane = bc](const Point3& x, const Point3& n) {
+        return plane.gap_along(x, n);
       };
       continue;
     }

@@ -29,6 +29,10 @@ struct Condition3d {
   std::array<double, 3> values = {0, 0, 0};  ///< displacement (Dirichlet) or traction (Neumann)
   Point3 plane_point = Point3::Zero();       ///< contact: a point of the rigid plane
   Point3 plane_normal = Point3::UnitZ();     ///< contact: unit normal from the plane into the body
+  /// Contact: the distance from x to the plane along the body's unit outward normal n there.
+  double gap_along(const Point3& x, const Point3& n) const {
+    return (x - plane_point).dot(plane_normal) / -n.dot(plane_normal);
+  }
 };
 
 struct Case3dSpec {

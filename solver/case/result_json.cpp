@@ -14,10 +14,6 @@ using nlohmann::json;
 
 std::string short_number(double v) { return sentence_number(v, 3); }
 
-double relative_kkt(const SolverReport& report) {
-  return report.initial_kkt > 0 ? report.final_kkt / report.initial_kkt : 0.0;
-}
-
 json history_json(const std::vector<IterationRecord>& history) {
   json h = json::array();
   for (const auto& r : history)
@@ -148,6 +144,10 @@ StopReason stop_reason(const SolverReport& report) {
   if (report.converged) return StopReason::kConverged;
   if (report.cancelled) return StopReason::kCancelled;
   return report.time_limited ? StopReason::kTimeLimit : StopReason::kMaxIterations;
+}
+
+double relative_kkt(const SolverReport& report) {
+  return report.initial_kkt > 0 ? report.final_kkt / report.initial_kkt : 0.0;
 }
 
 std::string convergence_message(const SolverReport& report, const SolverOptions& options) {

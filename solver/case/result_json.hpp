@@ -37,6 +37,9 @@ struct RunMemory {
 
 StopReason stop_reason(const SolverReport& report);
 
+/// The KKT residual at the end over the initial one (0 when the start was already exact).
+double relative_kkt(const SolverReport& report);
+
 /// Why a solve stopped without converging, with the numbers and what to change; empty when it
 /// converged.
 std::string convergence_message(const SolverReport& report, const SolverOptions& options);
