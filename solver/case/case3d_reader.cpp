@@ -3,7 +3,10 @@
 
 #include "case/case3d_reader.hpp"
 
+#include <algorithm>
+
 #include "case/case_sections.hpp"
+#include "case/early_group_check.hpp"
 #include "case/rule_checker.hpp"
 
 namespace fosls {
@@ -224,6 +227,9 @@ Case3dReadResult read_case_3d(const json& j, const CaseReadOptions& options) {
   for (const auto& [name, condition] : j["boundary"].items())
     spec.boundary[name] = read_condition3d(condition);
   if (j.contains("solver")) spec.solver = read_solver_section(j["solver"]);
+  if (std::none_of(spec.boundary.begin(), spec.boundary.end(),
+                   [](const auto& b) { return b.second.type == Condition3d::Type::kDirichlet; }))
+    result.errors.push_back(no_dirichlet_problem());
   if (spec.solver.method != SolverMethod::kMmg && spec.solver.method != SolverMethod::kPdas)
     result.errors.push_back({"/solver/method", "a 3D case is solved by mmg (the default) or pdas"});
   if (result.errors.empty()) result.spec = std::move(spec);

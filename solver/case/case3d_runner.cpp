@@ -12,6 +12,7 @@
 #include "assembly/tet_hierarchy.hpp"
 #include "case/case3d_result.hpp"
 #include "case/case_error.hpp"
+#include "case/early_group_check.hpp"
 #include "case/memory_size.hpp"
 #include "mesh/gmsh_mesh.hpp"
 #include "mesh/mesh_error.hpp"
@@ -127,10 +128,7 @@ void check_groups(const Case3dSpec& spec, const TetMesh& mesh) {
   for (const auto& [name, bc] : spec.boundary) {
     const int g = group_index(mesh, name);
     if (g < 0) {
-      std::string known;
-      for (const auto& n : mesh.group_names()) known += (known.empty() ? "" : ", ") + n;
-      errors.push_back({"/boundary/" + name, "the mesh has no boundary group \"" + name +
-                                                 "\"; its groups are " + known});
+      errors.push_back(unknown_group_problem(name, mesh.group_names()));
       continue;
     }
     if (bc.type != Condition3d::Type::kContact) continue;
@@ -143,7 +141,7 @@ void check_groups(const Case3dSpec& spec, const TetMesh& mesh) {
            "the gap is measured along the body normal, so every face of a contact group must "
            "face the plane; check the normal's sign (from the plane into the body) or make the "
            "contact group smaller";
-      errors.push_back({"/boundary/" + name + "/normal", s.str()});
+      errors.push_back({child_pointer(child_pointer("/boundary", name), "normal"), s.str()});
       break;
     }
   }

@@ -42,11 +42,7 @@ std::vector<CaseError> group_problems(const CaseSpec& spec,
     for (int c = 0; c < 2; ++c)
       held[c] |= bc.type == BoundaryCondition::Type::kDirichlet && bc.prescribed[c];
   }
-  if (!dirichlet)
-    errors.push_back({"/boundary",
-                      "no group has a dirichlet condition: without one the body can move "
-                      "freely (rigid body motions) and the problem has no unique solution; "
-                      "fix the displacement on at least one group"});
+  if (!dirichlet) errors.push_back(no_dirichlet_problem());
   for (int c = 0; dirichlet && c < 2; ++c)
     if (!held[c])
       errors.push_back({"/boundary", std::string("no dirichlet group prescribes u_") + "xy"[c] +

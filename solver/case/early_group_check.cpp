@@ -38,6 +38,13 @@ CaseError unknown_group_problem(const std::string& name, const std::vector<std::
           "the mesh has no boundary group '" + name + "'; its groups are " + list};
 }
 
+CaseError no_dirichlet_problem() {
+  return {"/boundary",
+          "no group has a dirichlet condition: without one the body can move freely (rigid body "
+          "motions) and the problem has no unique solution; fix the displacement on at least "
+          "one group"};
+}
+
 void add_unknown_group_problems(const nlohmann::json& j, const CaseReadOptions& options,
                                 std::vector<CaseError>& errors) {
   if (!j.is_object() || !j.contains("mesh") || !j["mesh"].is_object() || !j.contains("boundary") ||

@@ -15,6 +15,10 @@ namespace fosls {
 /// The problem of a group name the mesh lacks (the same words wherever it is found).
 CaseError unknown_group_problem(const std::string& name, const std::vector<std::string>& groups);
 
+/// The problem of a case no group of which is dirichlet, so that the body can move freely (the
+/// same words in 2D and 3D).
+CaseError no_dirichlet_problem();
+
 /// Appends to `errors` the groups named in j["boundary"] that the mesh lacks, when the mesh
 /// section passed its checks and its groups are known without gmsh (a geometry's or the hertz
 /// outline's, or a square or msh mesh, which are made without gmsh); nothing otherwise.

@@ -96,6 +96,9 @@ TEST(Case3d, EveryProblemOfABadCaseIsNamedByItsField) {
   json method = hertz_3d(0);
   method["solver"]["method"] = "tnnmg";
   EXPECT_EQ(problems(method), std::vector<std::string>{"/solver/method"});
+  json unheld = hertz_3d(0);  // only the contact holds it: it can slide and turn
+  unheld["boundary"].erase("top");
+  EXPECT_EQ(problems(unheld), std::vector<std::string>{"/boundary"});
   json no_source = hertz_3d(0);
   no_source["mesh"].erase("builtin");
   EXPECT_EQ(problems(no_source), std::vector<std::string>{"/mesh"});
