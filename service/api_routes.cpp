@@ -13,6 +13,12 @@ using namespace openapi;
 
 const json kJob = json_body(ref("Job"), "the job");
 
+/// A case of either format: 2D, or 3D with "dimension": 3.
+json any_case() {
+  return {{"description", "a 2D case, or a 3D case (\"dimension\": 3)"},
+          {"anyOf", {{{"$ref", kCaseSchema}}, {{"$ref", kCase3dSchema}}}}};
+}
+
 json submit_job() {
   json op = operation(
       "submitJob", "Queue a case",
@@ -26,7 +32,7 @@ json submit_job() {
                  {507, "the store's disk is full"}}),
       false);
   op["requestBody"] = {{"required", true},
-                       {"content", {{"application/json", {{"schema", {{"$ref", kCaseSchema}}}}}}}};
+                       {"content", {{"application/json", {{"schema", any_case()}}}}}};
   op["parameters"] = {{{"name", "Idempotency-Key"},
                        {"in", "header"},
                        {"required", false},
@@ -130,10 +136,9 @@ std::span<const ApiRoute> api_routes() {
        }},
       {"GET", "/v1/jobs/{id}/case", &HttpApi::get_case,
        [] {
-         return operation("getCase", "The case as submitted (canonical JSON: keys sorted)",
-                          responses({{"200", json_body({{"$ref", kCaseSchema}}, "the case")}},
-                                    {{404, "no such job"}}),
-                          true);
+         return operation(
+             "getCase", "The case as submitted (canonical JSON: keys sorted)",
+             responses({{"200", json_body(any_case(), "the case")}}, {{404, "no such job"}}), true);
        }},
       {"POST", "/v1/jobs/{id}/cancel", &HttpApi::cancel_job,
        [] {
@@ -152,6 +157,11 @@ std::span<const ApiRoute> api_routes() {
        [] {
          return schema_document("caseSchema",
                                 "JSON Schema of a case (docs/schemas/case.schema.json)");
+       }},
+      {"GET", "/v1/schemas/case3d.json", &HttpApi::get_contract,
+       [] {
+         return schema_document("case3dSchema",
+                                "JSON Schema of a 3D case (docs/schemas/case3d.schema.json)");
        }},
       {"GET", "/v1/schemas/result.json", &HttpApi::get_contract,
        [] {

@@ -1,5 +1,8 @@
 #include "case_job_runner.hpp"
 
+#include "case/case3d_admission.hpp"
+#include "case/case3d_reader.hpp"
+#include "case/case3d_runner.hpp"
 #include "case/case_admission.hpp"
 #include "case/case_reader.hpp"
 #include "case/case_runner.hpp"
@@ -40,7 +43,8 @@ std::function<std::vector<CaseError>(const nlohmann::json&)> submitted_case_vali
       options.limits.max_memory_bytes = static_cast<double>(now.bytes);
       options.limits.memory_budget_name = now.name;
     }
-    return admit_case(case_json, options).errors;
+    return is_3d_case(case_json) ? admit_case_3d(case_json, options).errors
+                                 : admit_case(case_json, options).errors;
   };
 }
 
@@ -49,10 +53,16 @@ JobTimeLimit job_time_limit(const nlohmann::json& case_json, double max_job_seco
   limit.cap_seconds = max_job_seconds;
   if (max_job_seconds <= 0) return limit;
   // The estimate admission made (the same rule and count; no gmsh): cheap next to a solve.
-  const CaseAdmission admission = admit_case(case_json, service_read_options(0));
-  if (admission.time) limit.estimate_seconds = admission.time->seconds;
-  limit.seconds = admission.time ? job_time_limit_seconds(admission.time->seconds, max_job_seconds)
-                                 : max_job_seconds;
+  std::optional<double> estimate;
+  if (is_3d_case(case_json)) {
+    const Case3dAdmission admission = admit_case_3d(case_json, service_read_options(0));
+    if (admission.estimate) estimate = admission.estimate->seconds;
+  } else if (const CaseAdmission admission = admit_case(case_json, service_read_options(0));
+             admission.time) {
+    estimate = admission.time->seconds;
+  }
+  if (estimate) limit.estimate_seconds = *estimate;
+  limit.seconds = estimate ? job_time_limit_seconds(*estimate, max_job_seconds) : max_job_seconds;
   return limit;
 }
 
@@ -71,17 +81,64 @@ std::string JobTimeLimit::describe() const {
   return text;
 }
 
+namespace {
+
+JobRunOutcome failed(const std::string& error) {
+  JobRunOutcome outcome;
+  outcome.kind = JobRunOutcome::Kind::kFailed;
+  outcome.error = error;
+  return outcome;
+}
+
+/// A finished run: its result and VTU, or nothing when it was cancelled.
+JobRunOutcome finished(bool cancelled, const nlohmann::json& result, std::string vtu) {
+  JobRunOutcome outcome;
+  outcome.kind = cancelled ? JobRunOutcome::Kind::kCancelled : JobRunOutcome::Kind::kSucceeded;
+  if (cancelled) return outcome;
+  outcome.result_json = result.dump(-1, ' ', false, nlohmann::json::error_handler_t::replace);
+  outcome.vtu = std::move(vtu);
+  return outcome;
+}
+
+/// Reports every iteration as the job's progress (`progress` keeps the solve's step).
+std::function<void(const IterationRecord&)> progress_reporter(JobProgress& progress,
+                                                              const JobRunContext& context) {
+  return [&progress, &context](const IterationRecord& r) {
+    progress.iteration = r.iteration;
+    progress.kkt_residual = r.kkt_residual;
+    progress.energy = r.energy;
+    context.report_progress(progress);
+  };
+}
+
+/// A 3D case (case3d_runner.hpp): one solve, its iterations reported as the 2D case's are.
+JobRunOutcome run_3d_case_job(const nlohmann::json& case_json, const JobRunContext& context,
+                              std::size_t job_memory_bytes) {
+  const CaseReadOptions options = service_read_options(job_memory_bytes);
+  Case3dReadResult read = read_case_3d(case_json, options);
+  if (!read.spec) return failed("invalid case: " + describe(read.errors));
+  JobProgress progress;
+  Run3dControl control;
+  control.cancel = &context.cancel;
+  control.want_vtu = true;
+  control.on_iteration = progress_reporter(progress, context);
+  try {
+    Run3dOutput output = run_case_3d(*read.spec, control, options.limits);
+    return finished(output.cancelled, output.result, std::move(output.vtu));
+  } catch (const CaseException& e) {
+    return failed("invalid case: " + describe(e.errors()));
+  }
+}
+
+}  // namespace
+
 JobRunOutcome run_case_job(const nlohmann::json& case_json, const JobRunContext& context,
                            std::size_t job_memory_bytes) {
-  JobRunOutcome outcome;
+  if (is_3d_case(case_json)) return run_3d_case_job(case_json, context, job_memory_bytes);
   const CaseReadOptions options = service_read_options(job_memory_bytes);
   CaseReadResult read = read_case(case_json, options);
-  if (!read.spec) {
-    // Only reachable if validation rules changed between submit and run (e.g. an upgrade).
-    outcome.kind = JobRunOutcome::Kind::kFailed;
-    outcome.error = "invalid case: " + describe(read.errors);
-    return outcome;
-  }
+  // Only reachable if validation rules changed between submit and run (e.g. an upgrade).
+  if (!read.spec) return failed("invalid case: " + describe(read.errors));
   RunControl control;
   control.cancel = &context.cancel;
   control.want_vtu = true;
@@ -91,30 +148,15 @@ JobRunOutcome run_case_job(const nlohmann::json& case_json, const JobRunContext&
     progress.step = solve;
     progress.steps = solves;
   };
-  control.on_iteration = [&](const IterationRecord& r) {
-    progress.iteration = r.iteration;
-    progress.kkt_residual = r.kkt_residual;
-    progress.energy = r.energy;
-    context.report_progress(progress);
-  };
+  control.on_iteration = progress_reporter(progress, context);
   try {
     RunOutput output = run_case(*read.spec, control, options.limits);
-    if (output.cancelled) {
-      outcome.kind = JobRunOutcome::Kind::kCancelled;
-      return outcome;
-    }
-    outcome.kind = JobRunOutcome::Kind::kSucceeded;
-    outcome.result_json =
-        output.result.dump(-1, ' ', false, nlohmann::json::error_handler_t::replace);
-    outcome.vtu = std::move(output.vtu);
+    return finished(output.cancelled, output.result, std::move(output.vtu));
   } catch (const CaseException& e) {
-    outcome.kind = JobRunOutcome::Kind::kFailed;
-    outcome.error = "invalid case: " + describe(e.errors());
+    return failed("invalid case: " + describe(e.errors()));
   } catch (const TimeLimitReached& e) {
-    outcome.kind = JobRunOutcome::Kind::kFailed;
-    outcome.error = e.what();
+    return failed(e.what());
   }
-  return outcome;
 }
 
 }  // namespace fosls::service

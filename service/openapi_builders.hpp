@@ -11,6 +11,7 @@ namespace fosls::service::openapi {
 
 /// Where the case and result JSON Schemas are served (and $ref'd from).
 inline const std::string kCaseSchema = "/v1/schemas/case.json";
+inline const std::string kCase3dSchema = "/v1/schemas/case3d.json";
 inline const std::string kResultSchema = "/v1/schemas/result.json";
 
 /// {"$ref": "#/components/schemas/NAME"}.

@@ -76,6 +76,8 @@ ObjectRulePtr mesh3d_rule(const CaseReadOptions& options) {
                    "or an object {\"name\": ..., parameters}");
   r->fields = {
       optional_field("builtin", builtin, nullptr, "a shipped 3D geometry, box or half_ball"),
+      optional_field("msh", msh_text_value(options.limits), nullptr,
+                     "the text of a gmsh mesh file (ASCII 4.1) of tetrahedra"),
       optional_field("msh_file", msh_file_value(options.limits, "msh text with tetrahedra"),
                      nullptr, "the path of a gmsh mesh file (ASCII 4.1) of tetrahedra"),
       optional_field("geo_file", geo_file_value(options.limits), nullptr,
@@ -87,8 +89,8 @@ ObjectRulePtr mesh3d_rule(const CaseReadOptions& options) {
                      "uniform refinements (each tetrahedron into 8); the multilevel hierarchy "
                      "has refinements + 1 levels"),
   };
-  r->exclusive = {{{{"builtin"}, {"msh_file"}, {"geo_file"}},
-                   "no mesh source: give exactly one of builtin, msh_file or geo_file",
+  r->exclusive = {{{{"builtin"}, {"msh"}, {"msh_file"}, {"geo_file"}},
+                   "no mesh source: give exactly one of builtin, msh, msh_file or geo_file",
                    "give exactly one mesh source, not {given}"}};
   return r;
 }
@@ -155,9 +157,13 @@ Mesh3dSpec read_mesh3d_section(const json& j) {
       m.ball.grading = given.value("grading", m.ball.grading);
       m.ball.contact_fraction = given.value("contact_fraction", m.ball.contact_fraction);
     }
+  } else if (const auto it = j.find("msh"); it != j.end()) {
+    m.kind = Mesh3dSpec::Kind::kMsh;
+    m.msh_text = it->get<std::string>();
   } else if (const auto it = j.find("msh_file"); it != j.end()) {
-    m.kind = Mesh3dSpec::Kind::kMshFile;
+    m.kind = Mesh3dSpec::Kind::kMsh;  // checked readable by its rule; the text is the mesh
     m.path = it->get<std::string>();
+    m.msh_text = read_msh_file(m.path);
   } else {
     m.kind = Mesh3dSpec::Kind::kGeoFile;
     m.path = j["geo_file"].get<std::string>();

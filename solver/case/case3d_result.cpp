@@ -110,6 +110,9 @@ json case3d_result(const Case3dSpec& spec, const TetDiscretization& disc, const 
   r["iterations"] = report.iterations;
   r["method"] = spec.solver.method == SolverMethod::kPdas ? "pdas" : "mmg";
   r["tolerance"] = spec.solver.tolerance;
+  r["stop_reason"] = stop_reason_name(stop_reason(report));
+  r["cancelled"] = report.cancelled;
+  r["final_kkt_residual"] = report.final_kkt;
   r["relative_kkt_residual"] = relative_kkt(report);
   r["levels"] = disc.meshes().num_levels();
   r["dofs"] = disc.problem().qp.size();
@@ -128,8 +131,8 @@ json case3d_result(const Case3dSpec& spec, const TetDiscretization& disc, const 
   r["warning_details"] = json::array();
   r["review_required"] = false;
   add_warnings(r, contact_warnings(spec, mesh, c));
-  if (!report.converged)  // 2D's sentence: the residual reached, the rate, what to change
-    add_warnings(r, {{"not_converged", convergence_message(report, spec.solver), false}});
+  add_warnings(r, result_warnings(report, spec.solver));  // 2D's: not_converged, rounding, …
+  r["history"] = history_json(report.history);
   return r;
 }
 

@@ -5,15 +5,13 @@
 #include "case/case3d_runner.hpp"
 
 #include <chrono>
-#include <cmath>
-#include <fstream>
 #include <sstream>
 
 #include "assembly/tet_hierarchy.hpp"
+#include "case/case3d_admission.hpp"
 #include "case/case3d_result.hpp"
 #include "case/case_error.hpp"
 #include "case/early_group_check.hpp"
-#include "case/memory_size.hpp"
 #include "mesh/gmsh_mesh.hpp"
 #include "mesh/mesh_error.hpp"
 #include "mesh/tet_msh_reader.hpp"
@@ -34,8 +32,8 @@ double seconds_since(Clock::time_point t0) {
 
 std::string mesh_pointer(const Mesh3dSpec& m) {
   switch (m.kind) {
-    case Mesh3dSpec::Kind::kMshFile:
-      return "/mesh/msh_file";
+    case Mesh3dSpec::Kind::kMsh:
+      return m.path.empty() ? "/mesh/msh" : "/mesh/msh_file";
     case Mesh3dSpec::Kind::kGeoFile:
       return "/mesh/geo_file";
     default:
@@ -51,12 +49,8 @@ TetMesh coarse_mesh(const Mesh3dSpec& m) {
         return make_box(m.cells, m.lengths);
       case Mesh3dSpec::Kind::kHalfBall:
         return make_half_ball(m.ball);
-      case Mesh3dSpec::Kind::kMshFile: {
-        std::ifstream in(m.path, std::ios::binary);
-        std::stringstream text;
-        text << in.rdbuf();
-        return tet_mesh_from_msh(text.str());
-      }
+      case Mesh3dSpec::Kind::kMsh:
+        return tet_mesh_from_msh(m.msh_text);
       case Mesh3dSpec::Kind::kGeoFile:
         return tet_mesh_from_geo_file(m.path, m.size);
     }
@@ -73,45 +67,11 @@ TetMesh coarse_mesh(const Mesh3dSpec& m) {
   throw CaseException(mesh_pointer(m), "unknown mesh source");
 }
 
-/// Memory of a 3D solve per unknown of the finest level and the program's own, measured on the
-/// half ball and the block (docs/performance.md, "3D"): pdas's direct solver
-/// fills in, so its figure is the largest measured and grows with the mesh.
-double estimated_3d_bytes(double unknowns, SolverMethod method) {
-  const double per_unknown = method == SolverMethod::kPdas ? 8000.0 : 2200.0;
-  return 40.0 * (1 << 20) + per_unknown * unknowns;
-}
-
-/// Refuses refinements whose finest level would exceed the unknowns' limit or the memory
-/// budget: `coarse_unknowns` grow about eightfold per refinement (vertices and faces each do).
+/// Refuses refinements whose finest level would exceed the limits (case3d_admission.hpp).
 void check_size(double coarse_unknowns, const Case3dSpec& spec, const CaseLimits& limits) {
-  const double unknowns = coarse_unknowns * std::pow(8.0, spec.mesh.refinements);
-  std::ostringstream s;
-  if (unknowns > static_cast<double>(limits.max_dofs)) {
-    s << "this mesh and these refinements would give about " << std::llround(unknowns)
-      << " unknowns, more than the limit of " << limits.max_dofs
-      << "; use fewer refinements or a coarser mesh";
-    throw CaseException("/mesh/refinements", s.str());
-  }
-  const bool pdas = spec.solver.method == SolverMethod::kPdas;
-  const double bytes = estimated_3d_bytes(unknowns, spec.solver.method);
-  if (limits.max_memory_bytes <= 0 || bytes <= limits.max_memory_bytes) return;
-  s << "the solve needs about " << format_bytes(bytes) << " (about " << std::llround(unknowns)
-    << " unknowns with " << (pdas ? "pdas" : "mmg") << "), more than the "
-    << format_bytes(limits.max_memory_bytes) << " " << limits.memory_budget_name
-    << "; use fewer refinements or a coarser mesh";
-  if (pdas)
-    s << ", or solver.method mmg (about "
-      << format_bytes(estimated_3d_bytes(unknowns, SolverMethod::kMmg)) << ")";
-  throw CaseException("/mesh/refinements", s.str());
-}
-
-/// A builtin's coarse unknowns before it is built: Kuhn meshes have about T/6 vertices and 2T
-/// faces for T tetrahedra, three unknowns each.
-double builtin_unknowns(const Mesh3dSpec& m) {
-  const double cubes = m.kind == Mesh3dSpec::Kind::kBox
-                           ? double(m.cells[0]) * m.cells[1] * m.cells[2]
-                           : 4.0 * m.ball.cells * m.ball.cells * m.ball.cells;
-  return 3.0 * (1.0 / 6.0 + 2.0) * 6.0 * cubes;
+  std::vector<CaseError> errors =
+      check_3d_size(finest_3d_unknowns(coarse_unknowns, spec.mesh), spec, limits);
+  if (!errors.empty()) throw CaseException(std::move(errors));
 }
 
 int group_index(const TetMesh& mesh, const std::string& name) {
@@ -177,9 +137,8 @@ TetProblemData problem_data(const Case3dSpec& spec, const TetMesh& mesh) {
 Run3dOutput run_case_3d(const Case3dSpec& spec, const Run3dControl& control,
                         const CaseLimits& limits) {
   const auto t0 = Clock::now();
-  const bool builtin =
-      spec.mesh.kind == Mesh3dSpec::Kind::kBox || spec.mesh.kind == Mesh3dSpec::Kind::kHalfBall;
-  if (builtin) check_size(builtin_unknowns(spec.mesh), spec, limits);
+  // Before anything is built: a builtin of many cells or a large msh is refused at once.
+  if (const auto unknowns = coarse_3d_unknowns(spec.mesh)) check_size(*unknowns, spec, limits);
   TetMesh coarse = coarse_mesh(spec.mesh);
   check_size(3.0 * (coarse.num_vertices() + coarse.num_faces()), spec, limits);
   TetHierarchy meshes = build_tet_hierarchy(std::move(coarse), spec.mesh.refinements);
@@ -196,12 +155,18 @@ Run3dOutput run_case_3d(const Case3dSpec& spec, const Run3dControl& control,
   Vector x = Vector::Zero(qp.size());
   SolverObserver observer;
   observer.on_iteration = control.on_iteration;
+  if (control.cancel)
+    observer.cancelled = [&control] { return control.cancel->load(std::memory_order_relaxed); };
   const bool multilevel = spec.solver.method == SolverMethod::kMmg;
   const SolverReport report = solve_box_qp(
       qp, multilevel ? disc.build_level_hierarchy() : LevelHierarchy{}, spec.solver, observer, x);
   const double solve_s = seconds_since(t2);
 
   Run3dOutput out;
+  if (report.cancelled) {
+    out.cancelled = true;
+    return out;
+  }
   out.result = case3d_result(spec, disc, x, report);
   out.result["timing"] = {{"mesh_s", mesh_s},
                           {"assembly_s", assembly_s},

@@ -3,6 +3,7 @@
 // P1³ × RT0³ discretisation, the solve by mmg or pdas, and the result JSON
 // (docs/result-format.md, "3D results").
 
+#include <atomic>
 #include <functional>
 #include <nlohmann/json.hpp>
 #include <string>
@@ -17,9 +18,12 @@ struct Run3dControl {
   bool want_vtu = false;
   bool vtu_ascii = false;
   std::function<void(const IterationRecord&)> on_iteration;
+  /// When set and true, the solve stops at its next iteration and the output says cancelled.
+  const std::atomic<bool>* cancel = nullptr;
 };
 
 struct Run3dOutput {
+  bool cancelled = false;  ///< stopped by Run3dControl::cancel: no result, no VTU
   nlohmann::json result;
   std::string vtu;  ///< with want_vtu
 };

@@ -13,12 +13,13 @@
 namespace fosls {
 
 struct Mesh3dSpec {
-  enum class Kind { kBox, kHalfBall, kMshFile, kGeoFile };
+  enum class Kind { kBox, kHalfBall, kMsh, kGeoFile };
   Kind kind = Kind::kBox;
   std::array<int, 3> cells = {2, 2, 2};  ///< box: cubes (six tetrahedra each) per direction
   Point3 lengths = Point3(1, 1, 1);      ///< box: [0, lx] × [0, ly] × [0, lz]
   HalfBallSpec ball;                     ///< half_ball
   std::string path;                      ///< msh_file, geo_file
+  std::string msh_text;                  ///< msh (the text given, or msh_file's, read once)
   double size = 0.25;                    ///< geo_file: coarse edge length
   int refinements = 0;                   ///< levels = refinements + 1
 };

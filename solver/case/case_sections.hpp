@@ -25,6 +25,11 @@ ObjectRulePtr mesh_rule(const CaseReadOptions& options);
 /// 3D case's mesh (case3d_reader.hpp).
 ValueRule geo_file_value(const CaseLimits& limits);
 ValueRule msh_file_value(const CaseLimits& limits, const std::string& contents);
+/// The rule of mesh.msh, gmsh ASCII 4.1 text given in the case (2D and 3D).
+ValueRule msh_text_value(const CaseLimits& limits);
+/// The text of an msh_file its rule accepted, read once more within the rule's limit (empty when
+/// it cannot be read now: the mesh reader then names the problem).
+std::string read_msh_file(const std::string& path);
 MeshSpec read_mesh_section(const nlohmann::json& j);
 
 ObjectRulePtr geometry_rule(const CaseReadOptions& options);

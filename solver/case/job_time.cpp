@@ -43,7 +43,8 @@ double point_seconds(const CaseSpec& point, long long unknowns, bool& bounded) {
   return bounded ? limit : seconds;
 }
 
-/// "1 h", "20 min", "2 s", "1.5 s": a budget as it was given.
+}  // namespace
+
 std::string budget_text(double seconds) {
   char text[48];
   if (seconds >= 3600 && std::fmod(seconds, 3600) == 0)
@@ -54,6 +55,8 @@ std::string budget_text(double seconds) {
     std::snprintf(text, sizeof text, "%g s", seconds);
   return text;
 }
+
+namespace {
 
 /// "about 55 h: 100 sweep points, each up to 100000 pgs iterations of about 0.02 s on about
 /// 131200 unknowns".

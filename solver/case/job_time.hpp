@@ -37,6 +37,9 @@ std::optional<CaseError> check_time_budget(const CaseTimeEstimate& estimate, con
                                            long long unknowns, double budget_seconds,
                                            const std::string& budget_name);
 
+/// "1 h", "20 min", "2 s", "1.5 s": a time budget as it was given.
+std::string budget_text(double seconds);
+
 /// A job's limit is this many times its estimate (load, harder cases than the fitted ones) …
 inline constexpr double kJobTimeMargin = 10.0;
 /// … and never less than this (process start, meshing, a small case on a busy machine).

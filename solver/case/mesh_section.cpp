@@ -115,8 +115,8 @@ bool check_local_file(const json& j, const std::string& pointer, RuleChecker& ch
     checker.error(pointer, std::string("a ") + what +
                                " path is accepted only by the command line program "
                                "(fosls-contact solve): the service reads no files named by a "
-                               "case, and gmsh scripts can run shell commands; use mesh.geometry "
-                               "or mesh.msh instead");
+                               "case, and gmsh scripts can run shell commands; give the mesh "
+                               "as text in mesh.msh (or, in 2D, as mesh.geometry) instead");
     return false;
   }
   const auto& path = j.get_ref<const std::string&>();
@@ -203,6 +203,17 @@ ValueRule geo_file_value(const CaseLimits& limits) {
   return r;
 }
 
+ValueRule msh_text_value(const CaseLimits& limits) {
+  ValueRule r = string_value(limits.max_text_bytes, "the msh text");
+  r.hook = check_msh_text;
+  r.notes = "must start with $MeshFormat (gmsh ASCII format 4.1)";
+  return r;
+}
+
+std::string read_msh_file(const std::string& path) {
+  return read_text_file(path, CaseLimits{}.max_text_bytes).value_or("");
+}
+
 ValueRule msh_file_value(const CaseLimits& limits, const std::string& contents) {
   ValueRule r = string_value(limits.max_path_length, "the path");
   r.hook = check_msh_file;
@@ -222,16 +233,14 @@ ObjectRulePtr mesh_rule(const CaseReadOptions& options) {
        object_value(std::make_shared<const ObjectRule>(builtin_rule()))},
       "the name of a builtin geometry (\"square\" or \"hertz\") or an object {\"name\": ..., "
       "parameters}");
-  ValueRule msh = string_value(limits.max_text_bytes, "the msh text");
-  msh.hook = check_msh_text;
-  msh.notes = "must start with $MeshFormat (gmsh ASCII format 4.1)";
   ValueRule refinements = integer_value(Range::closed(0, limits.max_refinements));
 
   r->fields = {
       optional_field("builtin", builtin, nullptr, "a shipped geometry, square or hertz"),
       optional_field("geometry", object_value(geometry_rule(options)), nullptr,
                      "points, lines and arcs, meshed with gmsh"),
-      optional_field("msh", msh, nullptr, "the text of a gmsh mesh file (ASCII 4.1)"),
+      optional_field("msh", msh_text_value(limits), nullptr,
+                     "the text of a gmsh mesh file (ASCII 4.1)"),
       optional_field("msh_file", msh_file_value(limits, "msh text"), nullptr,
                      "the path of a gmsh mesh file (ASCII 4.1), read like msh"),
       optional_field("geo_file", geo_file_value(limits), nullptr, "the path of a gmsh .geo script"),
@@ -275,7 +284,7 @@ MeshSpec read_mesh_section(const json& j) {
     // Checked readable by its rule; read once more here, the text is the mesh.
     m.kind = MeshSpec::Kind::kMsh;
     m.msh_path = it->get<std::string>();
-    m.msh_text = read_text_file(m.msh_path, CaseLimits{}.max_text_bytes).value_or("");
+    m.msh_text = read_msh_file(m.msh_path);
   } else if (const auto it = j.find("geo_file"); it != j.end()) {
     m.kind = MeshSpec::Kind::kGeoFile;
     m.geo_path = it->get<std::string>();

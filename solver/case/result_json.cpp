@@ -14,19 +14,6 @@ using nlohmann::json;
 
 std::string short_number(double v) { return sentence_number(v, 3); }
 
-json history_json(const std::vector<IterationRecord>& history) {
-  json h = json::array();
-  for (const auto& r : history)
-    h.push_back({{"iteration", r.iteration},
-                 {"energy", r.energy},
-                 {"correction", r.correction},
-                 {"kkt_residual", r.kkt_residual},
-                 {"active", r.active},
-                 {"changed", r.changed},
-                 {"time_s", r.time_s}});
-  return h;
-}
-
 json statistics_json(const SolverReport& report) {
   const CycleStatistics& c = report.cycle;
   return {{"nested_iterations", report.nested_iterations},
@@ -173,6 +160,19 @@ std::string convergence_message(const SolverReport& report, const SolverOptions&
          "it by a factor " + short_number(report.asymptotic_rate) +
          " each. The result is the last iterate: raise solver.max_iterations, or check the "
          "case (a too fine mesh for the method, or a contact zone the mesh does not resolve)";
+}
+
+json history_json(const std::vector<IterationRecord>& history) {
+  json h = json::array();
+  for (const auto& r : history)
+    h.push_back({{"iteration", r.iteration},
+                 {"energy", r.energy},
+                 {"correction", r.correction},
+                 {"kkt_residual", r.kkt_residual},
+                 {"active", r.active},
+                 {"changed", r.changed},
+                 {"time_s", r.time_s}});
+  return h;
 }
 
 std::vector<ResultWarning> result_warnings(const SolverReport& report,

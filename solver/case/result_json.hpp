@@ -44,6 +44,9 @@ double relative_kkt(const SolverReport& report);
 /// converged.
 std::string convergence_message(const SolverReport& report, const SolverOptions& options);
 
+/// The result's `history`: iteration 0 and every iteration after it.
+nlohmann::json history_json(const std::vector<IterationRecord>& history);
+
 /// The solver's warnings of a result, each saying what happened and what it means.
 std::vector<ResultWarning> result_warnings(const SolverReport& report,
                                            const SolverOptions& options);
