@@ -118,6 +118,7 @@ JobRunOutcome run_3d_case_job(const nlohmann::json& case_json, const JobRunConte
   Case3dReadResult read = read_case_3d(case_json, options);
   if (!read.spec) return failed("invalid case: " + describe(read.errors));
   JobProgress progress;
+  progress.steps = 1;  // one solve: no "step 1 of …" in the job's progress
   Run3dControl control;
   control.cancel = &context.cancel;
   control.want_vtu = true;

@@ -114,6 +114,7 @@ json case3d_result(const Case3dSpec& spec, const TetDiscretization& disc, const 
   r["cancelled"] = report.cancelled;
   r["final_kkt_residual"] = report.final_kkt;
   r["relative_kkt_residual"] = relative_kkt(report);
+  r["asymptotic_rate"] = report.asymptotic_rate;
   r["levels"] = disc.meshes().num_levels();
   r["dofs"] = disc.problem().qp.size();
   r["tetrahedra"] = mesh.num_tets();

@@ -56,6 +56,7 @@ TEST(Service3d, HertzRoundTripsWithAThreeVectorForceAndATetrahedralVtu) {
   EXPECT_EQ(job["stop_reason"], "converged");
   EXPECT_EQ(job["name"], "hertz_3d");
   EXPECT_GT(job["progress"]["iteration"].get<int>(), 0);  // reported while it ran
+  EXPECT_EQ(job["progress"]["steps"], 1);                  // one solve
 
   const json r = json::parse(cli.Get(path(id, "result"))->body);
   EXPECT_EQ(r["dimension"], 3);
@@ -96,7 +97,7 @@ TEST(Service3d, ACaseTooLargeOrNamingALocalFileIsRefusedByItsFieldBeforeItRuns) 
   std::string why;
   EXPECT_EQ(refused_at(svc, file, &why), std::vector<std::string>{"/mesh/msh_file"});
   EXPECT_NE(why.find("mesh.msh"), std::string::npos) << why;
-  // Refinement 3: about 639 000 unknowns, estimated above 20 s (120 µs per unknown).
+  // Refinement 3: about 639 000 unknowns, estimated above 20 s (200 µs per unknown).
   EXPECT_EQ(refused_at(svc, hertz_3d(3), &why), std::vector<std::string>{"/mesh/refinements"});
   EXPECT_NE(why.find("--max-job-seconds"), std::string::npos) << why;
   // Refinement 3 with pdas: about 5 GB, above the 2 GiB a job may use (and the time).

@@ -198,7 +198,7 @@ TEST(Case3d, AdmissionEstimatesABuiltinsSizeBeforeItIsBuilt) {
   const double dofs = r["dofs"].get<double>();
   EXPECT_NEAR(admitted.estimate->unknowns, dofs, 0.03 * dofs);  // Kuhn counts: ~V/T and F/T
   CaseReadOptions tight;
-  tight.limits.max_seconds = 10;  // refinement 3: about 639 000 unknowns, estimated at 78 s
+  tight.limits.max_seconds = 10;  // refinement 3: about 639 000 unknowns, estimated at 129 s
   tight.limits.time_budget_name = "a job may run";
   const Case3dAdmission slow = admit_case_3d(hertz_3d(3), tight);
   ASSERT_EQ(slow.errors.size(), 1u);
