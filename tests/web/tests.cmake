@@ -1,6 +1,7 @@
 # Web page tests (included by tests/CMakeLists.txt), label "web":
 #  - web_build:   web/build.sh (npm ci from the lock file, web/dist) — a fixture for the others.
-#  - web_modules: node's test runner on the page's pure modules (pointer locations, Hertz, VTU).
+#  - web_modules: node's test runner on the page's pure modules (pointer locations, Hertz, VTU;
+#                 modules3d.test.mjs: the 3D VTU, surface, pressure line and 3D Hertz).
 #  - web_page:    end to end: a real fosls-serve on a free loopback port with a temporary
 #                 database, Debian's Chromium (/usr/bin/chromium) driven by playwright-core;
 #                 writes its screenshots to build/screenshots (to refresh the ones in docs/:
@@ -17,6 +18,7 @@ set_tests_properties(web_build PROPERTIES LABELS web FIXTURES_SETUP web_deps TIM
                      RESOURCE_LOCK web_node_modules)
 
 add_test(NAME web_modules COMMAND ${FOSLS_NODE} --test ${WEB_TEST_DIR}/modules.test.mjs
+         ${WEB_TEST_DIR}/modules3d.test.mjs
          WORKING_DIRECTORY ${PROJECT_SOURCE_DIR})
 set_tests_properties(web_modules PROPERTIES LABELS web TIMEOUT 60)
 
