@@ -1,7 +1,8 @@
 // Unit tests of the page's 3D modules (no browser, no binaries): the 3D VTU reader on the
 // committed box fixture (ASCII and binary, written by fosls-contact from fixtures/box_3d.json),
 // the boundary surface of a tetrahedral mesh and its contact faces, the pressure line in the
-// contact plane, 3D Hertz, and the 3D key numbers.
+// contact plane, 3D Hertz, the camera and painter's order, the surface's fields and the
+// line's CSV.
 //   node --test tests/web/modules3d.test.mjs
 import { test } from 'node:test';
 import assert from 'node:assert/strict';
@@ -192,4 +193,70 @@ test('3D Hertz for hertz_3d: E* = 8/3, a = 0.1 and p0 = 3F/(2πa²) at F = 0.003
   assert.equal(hertzForResult3d(result, { ...caseDoc, mesh: { builtin: 'box' } }), null, 'not a ball: no Hertz');
   assert.equal(hertzForResult3d({ ...result, material: { mu: 1, lambda: 'inf' } }, caseDoc).Estar, 4);
   assert.equal(hertzForResult3d({ ...result, contact: { force: [0, 0, 0] } }, caseDoc), null, 'no force: no Hertz');
+});
+
+test('the default camera looks at the contact face from the plane, and a turn keeps the frame and the size', async () => {
+  const { defaultCamera, pitch, project, paintOrder, yaw, boundingBall } = await import('../../web/app/surface_camera.js');
+  const frame = planeFrame([0, 0, 1]);
+  const camera = defaultCamera(frame);
+  // From the plane's side (below the body): the viewer looks up, obliquely.
+  assert.ok(camera.towards[2] < -0.7 && camera.towards[2] > -0.95, `towards ${camera.towards}`);
+  const dot = (a, b) => a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
+  const turned = pitch(yaw(camera, 0.7), -0.3);
+  for (const c of [camera, turned]) {
+    assert.ok(Math.abs(dot(c.right, c.up)) < 1e-12 && Math.abs(dot(c.up, c.towards)) < 1e-12 && Math.abs(dot(c.right, c.towards)) < 1e-12);
+    const r = c.right, u = c.up;
+    const cross = [r[1] * u[2] - r[2] * u[1], r[2] * u[0] - r[0] * u[2], r[0] * u[1] - r[1] * u[0]];
+    assert.ok(cross.every((x, k) => Math.abs(x - c.towards[k]) < 1e-12), 'right × up = towards');
+  }
+  // The bottom of the box faces the default camera, its top does not; a turn keeps the size.
+  const mesh = kuhnBox([2, 2, 2], [1, 1, 1]);
+  const surface = boundarySurface(mesh);
+  const ball = boundingBall(mesh.points3);
+  const screen = project(mesh.points3, camera, ball, 400, 300);
+  const visible = [...paintOrder(surface.triangles, screen)];
+  const t = surface.triangles;
+  const zOf = (f) => [0, 1, 2].map((k) => mesh.points3[3 * t[3 * f + k] + 2]);
+  assert.ok(visible.some((f) => zOf(f).every((z) => z === 0)), 'the bottom is seen');
+  assert.ok(!visible.some((f) => zOf(f).every((z) => z === 1)), 'the top is hidden');
+  assert.ok(visible.length < t.length / 3 && visible.length > 0);
+  // The distance of two vertices in screen coordinates (with depth): an orthographic turn keeps it.
+  const extent = (s) => Math.hypot(s[0] - s[3 * 7], s[1] - s[3 * 7 + 1], s[2] - s[3 * 7 + 2]);
+  assert.ok(extent(screen) > 10 && Math.abs(extent(screen) - extent(project(mesh.points3, turned, ball, 400, 300))) < 1e-9, 'lengths are kept by a turn');
+  // Painter's order: each drawn triangle is no nearer than the next.
+  const depth = (f) => [0, 1, 2].reduce((sum, k) => sum + screen[3 * t[3 * f + k] + 2], 0);
+  assert.ok(visible.every((f, i) => i === 0 || depth(visible[i - 1]) <= depth(f)));
+});
+
+test('the 3D fields: pressure on the contact faces only, u·n along the plane normal, the magnification rule', async () => {
+  const { SURFACE_FIELDS } = await import('../../web/app/surface_fields.js');
+  const { autoMagnification, maxDisplacement } = await import('../../web/app/mesh_view.js');
+  const mesh = parseVtu(boxAscii);
+  const surface = boundarySurface(mesh);
+  const contact = contactFaces(mesh, surface);
+  const pressure = SURFACE_FIELDS.contact_pressure.compute(mesh, surface, { contact, normal: [0, 0, 1] });
+  const p = mesh.pointData.contact_pressure.values[0];
+  pressure.forEach((v, f) => assert.ok(contact[f] ? Math.abs(v - p) < 1e-15 : Number.isNaN(v), `face ${f}: ${v}`));
+  const un = SURFACE_FIELDS.u_normal.compute(mesh, surface, { contact, normal: [0, 0, 1] });
+  // The top (z = 1) moved by −0.01 along z, the bottom stays on the plane.
+  surface.triangles.forEach((v, i) => {
+    if (i % 3) return;
+    const f = i / 3;
+    const z = [0, 1, 2].map((k) => mesh.points3[3 * surface.triangles[i + k] + 2]);
+    if (z.every((x) => x === 1)) assert.ok(Math.abs(un[f] + 0.01) < 1e-12);
+    if (z.every((x) => x === 0)) assert.ok(Math.abs(un[f]) < 1e-12);
+  });
+  assert.equal(SURFACE_FIELDS.u_normal.compute(mesh, surface, { contact, normal: undefined }), null, 'no plane, no u·n');
+  const vm = SURFACE_FIELDS.von_mises.compute(mesh, surface, { contact });
+  assert.ok(vm.every((v, f) => v === mesh.cellData.von_mises.values[surface.cells[f]]));
+  // |u|max = 0.01 (the top), diagonal √3: 0.08·√3/0.01 = 13.9 → 10.
+  assert.ok(Math.abs(maxDisplacement(mesh) - 0.01) < 1e-15);
+  assert.equal(autoMagnification(mesh), 10);
+});
+
+test("the line's CSV: one row per sample, the pressure empty off the contact, Hertz at |s|", async () => {
+  const { lineCsv } = await import('../../web/app/csv_export.js');
+  const samples = [{ s: -0.5, value: null, point: [-0.5, 0, -1] }, { s: 0, value: 2, point: [0, 0, -1] }];
+  assert.equal(lineCsv(samples), 's,x,y,z,pressure\n-0.5,-0.5,0,-1,\n0,0,0,-1,2\n');
+  assert.equal(lineCsv(samples, { a: 1, p0: 3 }), 's,x,y,z,pressure,hertz_pressure\n-0.5,-0.5,0,-1,,' + `${3 * Math.sqrt(0.75)}\n0,0,0,-1,2,3\n`);
 });
