@@ -234,10 +234,10 @@ test('the 3D fields: pressure on the contact faces only, u·n along the plane no
   const mesh = parseVtu(boxAscii);
   const surface = boundarySurface(mesh);
   const contact = contactFaces(mesh, surface);
-  const pressure = SURFACE_FIELDS.contact_pressure.compute(mesh, surface, { contact, normal: [0, 0, 1] });
+  const pressure = SURFACE_FIELDS.contact_pressure.compute(mesh, surface, { contact, normal: [0, 0, 1] }).values;
   const p = mesh.pointData.contact_pressure.values[0];
   pressure.forEach((v, f) => assert.ok(contact[f] ? Math.abs(v - p) < 1e-15 : Number.isNaN(v), `face ${f}: ${v}`));
-  const un = SURFACE_FIELDS.u_normal.compute(mesh, surface, { contact, normal: [0, 0, 1] });
+  const un = SURFACE_FIELDS.u_normal.compute(mesh, surface, { contact, normal: [0, 0, 1] }).values;
   // The top (z = 1) moved by −0.01 along z, the bottom stays on the plane.
   surface.triangles.forEach((v, i) => {
     if (i % 3) return;
@@ -247,7 +247,7 @@ test('the 3D fields: pressure on the contact faces only, u·n along the plane no
     if (z.every((x) => x === 0)) assert.ok(Math.abs(un[f]) < 1e-12);
   });
   assert.equal(SURFACE_FIELDS.u_normal.compute(mesh, surface, { contact, normal: undefined }), null, 'no plane, no u·n');
-  const vm = SURFACE_FIELDS.von_mises.compute(mesh, surface, { contact });
+  const vm = SURFACE_FIELDS.von_mises.compute(mesh, surface, { contact }).values;
   assert.ok(vm.every((v, f) => v === mesh.cellData.von_mises.values[surface.cells[f]]));
   // |u|max = 0.01 (the top), diagonal √3: 0.08·√3/0.01 = 13.9 → 10.
   assert.ok(Math.abs(maxDisplacement(mesh) - 0.01) < 1e-15);

@@ -9,9 +9,8 @@ import {
 import { planeFrame, pressureCentre, sampleLine } from './contact_line.js';
 import { contactFaces, boundarySurface } from './tet_surface.js';
 import { contactPlanes } from './hertz.js';
-import { SURFACE_FIELDS } from './surface_fields.js';
+import { SURFACE_FIELDS, shownRange } from './surface_fields.js';
 import { colourScale } from './mesh_view.js';
-import { valueRange } from './mesh_drawing.js';
 import { lineCsv } from './csv_export.js';
 import { fmt, seconds } from './format.js';
 
@@ -139,17 +138,17 @@ export function drawSurfaceView(view, viewer, { resetMagnification = false } = {
   const id = $('surface-field').value;
   const field = SURFACE_FIELDS[id];
   const { surface, contact, frame, nContact } = view.solid;
-  const values = field.compute(view.mesh, surface, { contact, normal: frame?.n });
-  if (!values) {
+  const coloured = field.compute(view.mesh, surface, { contact, normal: frame?.n });
+  if (!coloured) {
     caption.textContent = `The solution file has no ${field.label}${frame ? '' : ' (or the case no contact plane)'}.`;
     return;
   }
-  const found = valueRange(values);
+  const found = shownRange(surface, coloured);
   const range = field.fromZero ? { min: 0, max: Math.max(0, found.max) } : found;
   const scale = colourScale(range, field.signed);
   const units = unitText(field.unit, view.result);
   viewer.setMagnification(magnification);
-  viewer.setField({ values, scale });
+  viewer.setField({ ...coloured, scale });
   writeColourBar('surface-legend', field.label, units, scale, range);
   const nTriangles = surface.triangles.length / 3;
   Object.assign(canvas.dataset, {
@@ -159,7 +158,7 @@ export function drawSurfaceView(view, viewer, { resetMagnification = false } = {
   const what = `${nTriangles} boundary triangles (${nContact} contact faces) of ${view.mesh.tetrahedra.length / 4} tetrahedra`;
   canvas.setAttribute('aria-label', `Deformed surface, ${what}, coloured by ${field.label} from ${fmt(range.min, 3)} to ${fmt(range.max, 3)}, ` +
     `displacement magnified ${magnification} times, seen from the contact plane's side`);
-  caption.textContent = `${what}, coloured by ${field.label} (per triangle${id === 'von_mises' ? '' : ': the mean of its vertices'}` +
+  caption.textContent = `${what}, coloured by ${field.label} (${coloured.vertexValues ? 'interpolated from the vertex values' : 'per triangle'}` +
     `${id === 'contact_pressure' ? '; grey: off the contact' : ''}). Displacement magnified ×${magnification}; ` +
     'the black line is the pressure line, in the contact plane. Drag or the arrow keys turn, wheel or + / − zooms, 0 resets.';
 }

@@ -375,7 +375,10 @@ async function showResult3d(job, view, vtuResponse) {
   }
   renderSummary3d(job, view);
   $('job-result').hidden = false;  // charts measure their container: show it first
-  if (view.solid) surfaceViewer.setSurface({ mesh: view.mesh, surface: view.solid.surface, frame: view.solid.frame });
+  if (view.solid) {
+    const { surface, frame, contact } = view.solid;
+    surfaceViewer.setSurface({ mesh: view.mesh, surface, frame, contact });
+  }
   drawSurfaceView(view, surfaceViewer, { resetMagnification: true });
   drawCharts3d(view, plots, surfaceViewer);
 }

@@ -1,32 +1,35 @@
 // The interactive 3D view of a tetrahedral result's deformed boundary surface on a 2D canvas:
-// flat-shaded triangles painted far to near (surface_camera.js), coloured per triangle by a
-// field (surface_fields.js; NaN in a neutral grey), with the pressure line drawn over them.
-// Orbit by drag or the arrow keys, zoom by wheel or + / −, 0 or resetView() for the default
-// camera. A canvas 2D rather than WebGL: headless Chromium without a GPU draws it the same,
-// and a few thousand triangles take milliseconds.
-import { boundingBall, defaultCamera, paintOrder, pitch, project, shade, yaw } from './surface_camera.js';
-import { colourAt } from './mesh_view.js';
-import { normalOf } from './tet_surface.js';
+// shaded triangles painted far to near (surface_painting.js), coloured by a field
+// (surface_fields.js; NaN in a neutral grey), with the pressure line drawn over them. The
+// default view looks at the contact faces from the plane's side and frames them with the body
+// around; orbit (about their centre) by drag or the arrow keys, zoom by wheel or + / −, 0 or
+// resetView() for the default view. A canvas 2D rather than WebGL: headless Chromium without a
+// GPU draws it the same, and a few thousand triangles take milliseconds.
+import { boundingBall, defaultCamera, pitch, project, yaw } from './surface_camera.js';
+import { paintPolyline, paintSurface } from './surface_painting.js';
 import { CanvasView } from './canvas_view.js';
 
 const ZOOM_MIN = 0.3;
 const ZOOM_MAX = 50;
 const TURN_PER_PIXEL = 0.008;      // radians of orbit per pixel dragged
 const KEY_TURN = Math.PI / 18;     // 10° per arrow key
-const NEUTRAL = [200, 200, 200];   // NaN values: off the contact for the pressure
+const FOCUS_MAX = 3;               // the default framing enlarges the contact faces at most this much
 
 export class SurfaceViewer extends CanvasView {
   constructor({ canvas }) {
     super(canvas);
-    this.surface_ = null;  // {mesh, surface, frame}
-    this.field_ = null;    // {values (per triangle), scale {map, min, max}}
+    this.surface_ = null;  // {mesh, surface, frame, contact}
+    this.field_ = null;    // {values (per triangle), vertexValues (or none), scale {map, min, max}}
     this.line_ = null;     // Float64Array of x, y, z triples, NaN between runs
     this.zoom_ = 1;
     this.camera_ = defaultCamera(null);
     this.listen_();
   }
 
-  /** A new surface ({mesh, surface, frame}: the plane's frame orients the default camera). */
+  /**
+   * A new surface: {mesh, surface, frame, contact}: the plane's frame orients the default
+   * camera, the contact faces (contact[f] = 1) are what it frames.
+   */
   setSurface(surface) {
     this.surface_ = surface;
     this.deformed_ = null;
@@ -45,7 +48,6 @@ export class SurfaceViewer extends CanvasView {
     this.redraw();
   }
 
-
   resetView() {
     this.camera_ = defaultCamera(this.surface_?.frame);
     this.zoom_ = 1;
@@ -63,15 +65,27 @@ export class SurfaceViewer extends CanvasView {
     this.redraw();
   }
 
-
-  /** The deformed points x + m·u and the ball that holds them, kept until m or the mesh change. */
+  /**
+   * The deformed points x + m·u, the ball that holds them, and the framing: the view's centre
+   * (that of the contact faces, or of the body without them) and how much the contact faces
+   * are enlarged over the fit of the whole body (1 to FOCUS_MAX): so that they fill the view,
+   * the body round them showing at its edges. Kept until m or the mesh change.
+   */
   geometry_() {
     if (this.deformed_) return;
-    const { points3, pointData } = this.surface_.mesh;
-    const u = pointData.u;
+    const { mesh, surface, contact } = this.surface_;
+    const u = mesh.pointData.u;
     const m = this.magnification_;
-    this.deformed_ = Float64Array.from(points3, (x, i) => (u ? x + m * u.values[Math.floor(i / 3) * u.components + (i % 3)] : x));
+    this.deformed_ = Float64Array.from(mesh.points3, (x, i) => (u ? x + m * u.values[Math.floor(i / 3) * u.components + (i % 3)] : x));
     this.ball_ = boundingBall(this.deformed_);
+    const onContact = [];
+    for (let f = 0; f < (contact?.length ?? 0); f++) {
+      if (!contact[f]) continue;
+      for (let k = 0; k < 3; k++) onContact.push(...this.deformed_.subarray(3 * surface.triangles[3 * f + k], 3 * surface.triangles[3 * f + k] + 3));
+    }
+    const focus = onContact.length ? boundingBall(onContact) : this.ball_;
+    const enlarge = Math.min(FOCUS_MAX, Math.max(1, this.ball_.radius / (focus.radius || this.ball_.radius)));
+    this.framing_ = { centre: focus.centre, radius: this.ball_.radius / enlarge };
   }
 
   draw_() {
@@ -87,65 +101,16 @@ export class SurfaceViewer extends CanvasView {
     const ctx = canvas.getContext('2d');
     ctx.setTransform(ratio, 0, 0, ratio, 0, 0);
     ctx.clearRect(0, 0, width, height);
-    const screen = project(this.deformed_, this.camera_, this.ball_, width, height, this.zoom_);
-    const order = this.paintTriangles_(ctx, screen);
-    this.paintLine_(ctx, width, height);
+    const screen = project(this.deformed_, this.camera_, this.framing_, width, height, this.zoom_);
+    const { triangles } = this.surface_.surface;
+    const order = paintSurface(ctx, { triangles, screen, deformed: this.deformed_, camera: this.camera_, field: this.field_ });
+    if (this.line_?.length) paintPolyline(ctx, project(this.line_, this.camera_, this.framing_, width, height, this.zoom_));
     const towards = this.camera_.towards.map((c) => c.toFixed(3)).join(',');
     this.draws_ = (this.draws_ ?? 0) + 1;
     Object.assign(canvas.dataset, {
       draws: String(this.draws_), drawn: String(order.length), zoom: String(Number(this.zoom_.toPrecision(4))), view: towards,
       drawMs: (performance.now() - started).toFixed(1),
     });
-  }
-
-  /** The visible triangles, far to near, each in its field colour times its flat shade. */
-  paintTriangles_(ctx, screen) {
-    const t = this.surface_.surface.triangles;
-    const { values, scale } = this.field_;
-    const span = scale.max - scale.min;
-    const order = paintOrder(t, screen);
-    ctx.lineWidth = 0.6;  // each triangle's own colour over its edges hides the seams between them
-    ctx.lineJoin = 'round';
-    for (const f of order) {
-      const v = values[f];
-      const base = Number.isFinite(v) ? colourAt(span > 0 ? (v - scale.min) / span : 0.5, scale.map) : NEUTRAL;
-      const light = shade(normalOf(this.deformed_, t[3 * f], t[3 * f + 1], t[3 * f + 2]), this.camera_);
-      const colour = `rgb(${base.map((c) => Math.round(c * light)).join(',')})`;
-      ctx.fillStyle = colour;
-      ctx.strokeStyle = colour;
-      ctx.beginPath();
-      for (let k = 0; k < 3; k++) {
-        const a = t[3 * f + k];
-        if (k === 0) ctx.moveTo(screen[3 * a], screen[3 * a + 1]);
-        else ctx.lineTo(screen[3 * a], screen[3 * a + 1]);
-      }
-      ctx.closePath();
-      ctx.fill();
-      ctx.stroke();
-    }
-    return order;
-  }
-
-  /** The pressure line, in the plane, over everything (white under black, visible on any colour). */
-  paintLine_(ctx, width, height) {
-    if (!this.line_?.length) return;
-    const screen = project(this.line_, this.camera_, this.ball_, width, height, this.zoom_);
-    for (const [colour, lineWidth] of [['#ffffff', 4], ['#111111', 2]]) {
-      ctx.strokeStyle = colour;
-      ctx.lineWidth = lineWidth;
-      ctx.beginPath();
-      let pen = false;
-      for (let i = 0; i < screen.length; i += 3) {
-        if (!Number.isFinite(screen[i])) {
-          pen = false;
-          continue;
-        }
-        if (pen) ctx.lineTo(screen[i], screen[i + 1]);
-        else ctx.moveTo(screen[i], screen[i + 1]);
-        pen = true;
-      }
-      ctx.stroke();
-    }
   }
 
   listen_() {
