@@ -233,6 +233,24 @@ test('the surface turns by drag and keys, zooms, resets, and is coloured by othe
   await page.locator('#surface-caption', { hasText: 'magnified ×20;' }).waitFor();
 });
 
+test('a 3D case that is not the half ball: no Hertz curve, a flat pressure under a pressed box', async () => {
+  const box = readFileSync(join(repo, 'tests', 'web', 'fixtures', 'box_3d.json'), 'utf8');
+  await page.locator('#case-text').fill(box);
+  const row = await submitAndWaitForRow(page, 'box_3d');
+  await row.locator('.state-succeeded').waitFor();
+  await page.waitForFunction(() => document.querySelector('#surface-canvas')?.dataset.triangles === '12' &&
+    Number(document.querySelector('#line-plot')?.dataset.points) > 0);
+  const result = await getJson(`/v1/jobs/${await row.getAttribute('data-job-id')}/result`);
+  const numbers = await page.locator('#key-numbers').innerText();
+  assert.ok(!numbers.includes('Hertz'), numbers);
+  assert.equal(await page.locator('#line-plot').getAttribute('data-series'), 'pressure');
+  assert.doesNotMatch(await page.locator('#line-note').innerText(), /Hertz/);
+  // The whole bottom is pressed evenly: the line crosses the unit square with one pressure.
+  const peak = Number(await page.locator('#line-plot').getAttribute('data-peak'));
+  assert.ok(Math.abs(peak - result.contact.max_pressure) < 1e-9 * peak, `${peak} against ${result.contact.max_pressure}`);
+  assert.equal(await page.locator('#surface-canvas').getAttribute('data-contact-triangles'), '2');
+});
+
 test('a 2D job after the 3D one shows the 2D view, and comes back the same after the 3D one again', async () => {
   const variant = JSON.parse(hertzText);
   variant.mesh.refinements = 1;
