@@ -3,7 +3,8 @@
 # package-lock.json and fills web/dist/ (gitignored) with what the browser loads besides
 # our own files:
 #   dist/uPlot.esm.js, dist/uPlot.min.css   the plotting library, copied from node_modules
-#   dist/examples.json                      the shipped cases (solver/examples/*.json)
+#   dist/examples.json                      the shipped cases (solver/examples/*.json, then
+#                                           solver/examples/3d/*.json)
 # Idempotent: npm ci runs only when the lock file changed since the last install.
 #
 #   web/build.sh            # everything, including playwright-core for the browser test

@@ -3,83 +3,27 @@
 //
 //   FOSLS_SERVE=build/bin/fosls-serve node --test tests/web/page.test.mjs
 //
-// Environment: FOSLS_SERVE (required), FOSLS_WEB_ROOT (default web/), FOSLS_SCREENSHOTS
-// (default a new temporary folder), CHROMIUM (default /usr/bin/chromium).
-// FOSLS_REFRESH_SCREENSHOTS=1 writes the screenshots to docs/screenshots instead, to refresh
-// the docs; an ordinary run leaves the working tree clean.
+// Environment and start-up: tests/web/page_session.mjs (FOSLS_SERVE required; FOSLS_WEB_ROOT,
+// FOSLS_SCREENSHOTS, CHROMIUM, FOSLS_REFRESH_SCREENSHOTS=1 to refresh docs/screenshots).
 // Needs web/build.sh to have run (npm packages, web/dist).
 import { test, before, after } from 'node:test';
 import assert from 'node:assert/strict';
-import { spawn } from 'node:child_process';
-import { existsSync, mkdirSync, mkdtempSync, readFileSync, rmSync } from 'node:fs';
-import { createRequire } from 'node:module';
-import { tmpdir } from 'node:os';
-import { dirname, join, resolve } from 'node:path';
-import { fileURLToPath } from 'node:url';
+import { readFileSync } from 'node:fs';
+import { join } from 'node:path';
 import { expectPixelsOn } from './page_pixels.mjs';
 import { checkFrictionAndLoadSteps } from './page_friction.mjs';
+import { openSession, repo, submitAndWaitForRow as submitOnPage } from './page_session.mjs';
 
-const repo = resolve(dirname(fileURLToPath(import.meta.url)), '..', '..');
-const webRoot = resolve(process.env.FOSLS_WEB_ROOT ?? join(repo, 'web'));
-const screenshots = resolve(
-  process.env.FOSLS_REFRESH_SCREENSHOTS === '1'
-    ? join(repo, 'docs', 'screenshots')
-    : (process.env.FOSLS_SCREENSHOTS ?? mkdtempSync(join(tmpdir(), 'fosls-screenshots-'))),
-);
-const serveBinary = process.env.FOSLS_SERVE;
-const chromiumPath = process.env.CHROMIUM ?? '/usr/bin/chromium';
 const hertzText = readFileSync(join(repo, 'solver', 'examples', 'hertz.json'), 'utf8');
 const { parseVtu } = await import(join(repo, 'web', 'app', 'vtu.js'));
 const { MESH_FIELDS } = await import(join(repo, 'web', 'app', 'mesh_fields.js'));
 const { fmt, seconds } = await import(join(repo, 'web', 'app', 'format.js'));
 
-// playwright-core lives in web/node_modules (installed by web/build.sh), not beside this file.
-const requireFromWeb = createRequire(join(webRoot, 'package.json'));
-
-let server;       // {process, url, log}
-let context;      // playwright persistent context (fresh profile folder)
+let session;      // server, browser and page (tests/web/page_session.mjs)
+let server;       // {url, log}
 let page;
-let scratch;      // temporary folder: database and browser profile
-const consoleProblems = [];
-
-function startServer() {
-  return new Promise((resolvePromise, reject) => {
-    const child = spawn(
-      serveBinary,
-      ['--host', '127.0.0.1', '--port', '0', '--db', join(scratch, 'jobs.db'), '--workers', '1',
-        '--web-root', webRoot],
-      { stdio: ['ignore', 'pipe', 'pipe'] },
-    );
-    const log = [];
-    let stdout = '';
-    const timer = setTimeout(() => reject(new Error(`fosls-serve did not start:\n${log.join('')}`)), 15000);
-    child.stderr.on('data', (d) => log.push(d.toString()));  // keep draining: a full pipe blocks the server
-    child.stdout.on('data', (d) => {
-      stdout += d.toString();
-      const m = /listening on (http:\/\/\S+)/.exec(stdout);
-      if (m) {
-        clearTimeout(timer);
-        resolvePromise({ process: child, url: m[1], log });
-      }
-    });
-    child.on('exit', (code) => {
-      clearTimeout(timer);
-      reject(new Error(`fosls-serve exited with ${code}:\n${log.join('')}`));
-    });
-  });
-}
-
-function stopServer() {
-  if (!server || server.process.exitCode !== null) return Promise.resolve();
-  return new Promise((resolvePromise) => {
-    const kill = setTimeout(() => server.process.kill('SIGKILL'), 10000);
-    server.process.once('exit', () => {
-      clearTimeout(kill);
-      resolvePromise();
-    });
-    server.process.kill('SIGTERM');
-  });
-}
+let screenshots;  // folder for the screenshots
+let consoleProblems;
 
 // The page's canvases read back in the browser (tests/web/page_pixels.mjs), on this test's page.
 const expectPixels = (...args) => expectPixelsOn(page, ...args);
@@ -99,48 +43,14 @@ async function submitHertzVariant(name, refinements, change) {
   return submitAndWaitForRow(name);
 }
 
-async function submitAndWaitForRow(name) {
-  const before = await page.locator('#job-table tbody tr').count();
-  await page.getByRole('button', { name: 'Submit case' }).click();
-  await page.waitForFunction((n) => document.querySelectorAll('#job-table tbody tr').length > n, before);
-  const row = page.locator('#job-table tbody tr').first();
-  assert.equal(await row.locator('td').nth(1).innerText(), name);
-  return row;
-}
+const submitAndWaitForRow = (name) => submitOnPage(page, name);
 
 before(async () => {
-  assert.ok(serveBinary && existsSync(serveBinary), `FOSLS_SERVE must name the fosls-serve program (got ${serveBinary})`);
-  assert.ok(existsSync(chromiumPath), `${chromiumPath} is missing: apt-get install chromium`);
-  assert.ok(existsSync(join(webRoot, 'dist', 'uPlot.esm.js')) && existsSync(join(webRoot, 'dist', 'examples.json')),
-    `${webRoot}/dist is incomplete: run web/build.sh`);
-  mkdirSync(screenshots, { recursive: true });
-  scratch = mkdtempSync(join(tmpdir(), 'fosls-web-test-'));
-  server = await startServer();
-
-  const { chromium } = requireFromWeb('playwright-core');
-  context = await chromium.launchPersistentContext(join(scratch, 'profile'), {
-    executablePath: chromiumPath,
-    headless: true,
-    args: ['--headless', '--no-sandbox', '--disable-gpu', '--disable-quic', '--no-first-run',
-      '--disable-background-networking', '--disable-component-update', '--disable-sync'],
-    viewport: { width: 1440, height: 900 },
-    deviceScaleFactor: 1,
-  });
-  page = context.pages()[0] ?? (await context.newPage());
-  page.setDefaultTimeout(30000);
-  page.on('console', (msg) => {
-    if (msg.type() === 'error' || msg.type() === 'warning') consoleProblems.push(`${msg.type()}: ${msg.text()} (${msg.location().url})`);
-  });
-  page.on('pageerror', (error) => consoleProblems.push(`uncaught: ${error.message}`));
-  page.on('requestfailed', (request) => consoleProblems.push(`request failed: ${request.url()} ${request.failure()?.errorText}`));
-  await page.goto(server.url + '/');
+  session = await openSession();
+  ({ server, page, screenshots, consoleProblems } = session);
 });
 
-after(async () => {
-  await context?.close();  // before the server stops, so no poll meets a closed port
-  await stopServer();
-  if (scratch) rmSync(scratch, { recursive: true, force: true });
-});
+after(() => session?.close());
 
 test('the page loads the shipped examples into the editor', async () => {
   await page.locator('#example-select option[value="hertz"]').waitFor({ state: 'attached' });

@@ -4,7 +4,8 @@
 import assert from 'node:assert/strict';
 
 /** Counts pixels of `canvasSelector` (first match, or the largest canvas inside it) within
- *  `tolerance` of the colour `hex`, or (hex = null) pixels that are not transparent/white. */
+ *  `tolerance` of the colour `hex`, or (hex = null) pixels that are not transparent/white, or
+ *  (hex = 'saturated') pixels of a colour rather than a grey (channels more than 60 apart). */
 export async function countPixels(page, selector, hex, tolerance = 40) {
   return page.evaluate(
     ({ selector, hex, tolerance }) => {
@@ -18,11 +19,13 @@ export async function countPixels(page, selector, hex, tolerance = 40) {
       const ctx = copy.getContext('2d', { willReadFrequently: true });
       ctx.drawImage(canvas, 0, 0);
       const { data } = ctx.getImageData(0, 0, copy.width, copy.height);
-      const want = hex && [1, 3, 5].map((k) => parseInt(hex.slice(k, k + 2), 16));
+      const want = hex?.startsWith('#') && [1, 3, 5].map((k) => parseInt(hex.slice(k, k + 2), 16));
       let n = 0;
       for (let i = 0; i < data.length; i += 4) {
         if (data[i + 3] < 128) continue;
-        if (want) {
+        if (hex === 'saturated') {
+          if (Math.max(data[i], data[i + 1], data[i + 2]) - Math.min(data[i], data[i + 1], data[i + 2]) > 60) n++;
+        } else if (want) {
           if (Math.abs(data[i] - want[0]) + Math.abs(data[i + 1] - want[1]) + Math.abs(data[i + 2] - want[2]) <= tolerance) n++;
         } else if (data[i] + data[i + 1] + data[i + 2] < 3 * 235) {
           n++;

@@ -1,5 +1,7 @@
 // The job's tables as CSV for a spreadsheet: the contact boundary (one row per contact edge,
-// the result's contact arrays) and a sweep's points. Column names follow docs/result-format.md.
+// the result's contact arrays), a sweep's points and a 3D result's pressure line. Column names follow docs/result-format.md.
+
+import { hertzPressure } from './hertz.js';
 
 function csv(header, rows) {
   const cell = (v) => (v === null || v === undefined ? '' : typeof v === 'number' ? String(v) : JSON.stringify(String(v)));
@@ -21,4 +23,13 @@ export function sweepCsv(sweep) {
     p.value, p.force?.[0], p.force?.[1], p.peak_pressure, p.contact_width, p.contact_length, p.converged ? 1 : 0, p.stop_reason, p.iterations,
   ]);
   return csv([sweep?.pointer ?? 'value', 'force_x', 'force_y', 'peak_pressure', 'contact_width', 'contact_length', 'converged', 'stop_reason', 'iterations'], rows);
+}
+
+/**
+ * The samples of a 3D result's pressure line (contact_line.js): s, the point x, y, z, the
+ * pressure (empty off the contact faces) and, with `hertz` ({a, p0}), 3D Hertz at r = |s|.
+ */
+export function lineCsv(samples, hertz = null) {
+  const rows = samples.map((x) => [x.s, ...x.point, x.value, ...(hertz ? [hertzPressure(x.s, hertz)] : [])]);
+  return csv(['s', 'x', 'y', 'z', 'pressure', ...(hertz ? ['hertz_pressure'] : [])], rows);
 }

@@ -69,3 +69,53 @@ export function hertzForResult(result) {
   if (!lame || !(F > 0) || !(R > 0)) return null;
   return { F, R, ...hertzContact(F, R, lame) };
 }
+
+// 3D: a sphere of radius R pressed on a rigid plane by a force F (Johnson §4.2, one body rigid):
+//   E = μ(3λ+2μ)/(λ+μ), ν = λ/(2(λ+μ)) (λ = ∞: E = 3μ, ν = 1/2), E* = E/(1−ν²),
+//   a = (3FR/(4E*))^(1/3),   p0 = 3F/(2πa²),   p(r) = p0 sqrt(1 − r²/a²) for r < a.
+// E/(1−ν²) written out in μ and λ is 4μ(λ+μ)/(λ+2μ): the plane-strain modulus above, so
+// contactModulus serves both.
+
+/** {a, p0, Estar} of 3D Hertz for force F (> 0), sphere radius R and material {mu, lambda}. */
+export function hertzSphereContact(F, R, lame) {
+  const Estar = contactModulus(lame);
+  const a = Math.cbrt((3 * F * R) / (4 * Estar));
+  const p0 = (3 * F) / (2 * Math.PI * a * a);
+  return { a, p0, Estar };
+}
+
+/** The contact conditions of a 3D case: [{group, point, normal}] of its "contact" groups. */
+export function contactPlanes(caseDoc) {
+  const boundary = caseDoc?.boundary;
+  if (!boundary || typeof boundary !== 'object') return [];
+  return Object.entries(boundary)
+    .filter(([, c]) => c?.type === 'contact' && Array.isArray(c.point) && Array.isArray(c.normal))
+    .map(([group, c]) => ({ group, point: c.point, normal: c.normal }));
+}
+
+/** The builtin half ball's radius (default 1), or null when the case's mesh is something else. */
+export function halfBallRadius(caseDoc) {
+  const builtin = caseDoc?.mesh?.builtin;
+  const name = typeof builtin === 'string' ? builtin : builtin?.name;
+  if (name !== 'half_ball') return null;
+  const R = typeof builtin === 'object' && 'radius' in builtin ? builtin.radius : 1;
+  return typeof R === 'number' && R > 0 ? R : null;
+}
+
+/**
+ * 3D Hertz for a result and its case, or null when it does not apply: the mesh is the builtin
+ * half ball (a sphere of radius R at its pole) against one contact plane (the case's), loaded
+ * by the normal force F = |F·n| of the result (n the plane's unit normal).
+ */
+export function hertzForResult3d(result, caseDoc) {
+  const R = halfBallRadius(caseDoc);
+  const planes = contactPlanes(caseDoc);
+  const force = result?.contact?.force;
+  const lame = resultLame(result?.material);
+  if (R === null || planes.length !== 1 || !Array.isArray(force) || force.length !== 3 || !lame) return null;
+  const n = planes[0].normal;
+  const length = Math.hypot(...n);
+  const F = Math.abs((force[0] * n[0] + force[1] * n[1] + force[2] * n[2]) / length);
+  if (!(F > 0) || !(length > 0)) return null;
+  return { F, R, ...hertzSphereContact(F, R, lame) };
+}

@@ -19,7 +19,7 @@ const $ = (id) => document.getElementById(id);
 /** " mm" after a number when the case declared its units, else "". */
 const unitSuffix = (units, id) => (units.declared ? ` ${units[id]}` : '');
 
-function addNumber(dl, term, value, title) {
+export function addNumber(dl, term, value, title) {
   const dt = document.createElement('dt');
   dt.textContent = term;
   const dd = document.createElement('dd');
@@ -30,10 +30,8 @@ function addNumber(dl, term, value, title) {
   dl.append(group);
 }
 
-/** Summary line, key numbers, warnings and download links of a result. */
-export function renderSummary(job, view) {
-  const r = view.result;
-  const contact = r.contact ?? { x: [], s: [], pressure: [], active: [], force: [0, 0] };
+/** The summary line of a result (2D or 3D): converged, needs review, or not converged. */
+export function renderHeadline(r) {
   const summary = $('job-summary');
   const review = r.converged && r.review_required;
   summary.className = review ? 'review' : r.converged ? 'ok' : 'error';
@@ -42,6 +40,13 @@ export function renderSummary(job, view) {
     : r.converged
       ? `Converged in ${r.iterations} iterations (${r.method ?? 'solver'}).`
       : `Did not converge: ${(r.message ?? `stopped after ${r.iterations} iterations`).replace(/\.$/, '')}.`;
+}
+
+/** Summary line, key numbers, warnings and download links of a result. */
+export function renderSummary(job, view) {
+  const r = view.result;
+  const contact = r.contact ?? { x: [], s: [], pressure: [], active: [], force: [0, 0] };
+  renderHeadline(r);
 
   const units = resultUnits(r);
   const dl = $('key-numbers');
@@ -80,6 +85,15 @@ export function renderSummary(job, view) {
   addNumber(dl, 'Time', `${seconds(r.timing?.total_s)} (solve ${seconds(r.timing?.solve_s)})`,
     `mesh ${seconds(r.timing?.mesh_s)}, assembly ${seconds(r.timing?.assembly_s)}`);
 
+  renderWarnings(r);
+  setDownloads(job);
+  setCsvLink($('download-contact-csv'), contactCsv(r.contact), `job-${job.id}-contact.csv`);
+  $('sweep-csv-item').hidden = !r.sweep;
+  if (r.sweep) setCsvLink($('download-sweep-csv'), sweepCsv(r.sweep), `job-${job.id}-sweep.csv`);
+}
+
+/** The result's warnings, a review warning marked "Check this answer". */
+export function renderWarnings(r) {
   const warnings = $('job-warnings');
   warnings.innerHTML = '';
   // warning_details carries each warning's code and whether it questions the answer.
@@ -96,18 +110,18 @@ export function renderSummary(job, view) {
     li.append(w.message);
     warnings.append(li);
   }
+}
 
+/** The links to the result JSON and the VTU of the job. */
+export function setDownloads(job) {
   $('download-result').href = api.resultUrl(job.id);
   $('download-result').download = `job-${job.id}-result.json`;
   $('download-vtu').href = api.solutionUrl(job.id);
   $('download-vtu').download = `job-${job.id}.vtu`;
-  setCsvLink($('download-contact-csv'), contactCsv(r.contact), `job-${job.id}-contact.csv`);
-  $('sweep-csv-item').hidden = !r.sweep;
-  if (r.sweep) setCsvLink($('download-sweep-csv'), sweepCsv(r.sweep), `job-${job.id}-sweep.csv`);
 }
 
 /** Points `link` at a CSV made in the browser (the previous one's memory is released). */
-function setCsvLink(link, text, filename) {
+export function setCsvLink(link, text, filename) {
   if (link.href.startsWith('blob:')) URL.revokeObjectURL(link.href);
   link.href = URL.createObjectURL(new Blob([text], { type: 'text/csv' }));
   link.download = filename;
@@ -145,6 +159,13 @@ export function drawCharts(view, plots) {
   drawAdaptivity(view, plots);
   drawFriction(view, plots);
   drawLoadSteps(view, plots);
+  drawResiduals(view, plots);
+}
+
+/** The residual history of the result, or the words saying there is none. */
+export function drawResiduals(view, plots) {
+  const residualBox = $('residual-plot');
+  residualBox.innerHTML = '';
   const history = view.result.history ?? [];
   if (history.length) view.charts.push(plots.residualPlot(residualBox, history));
   else {
@@ -189,26 +210,47 @@ function drawAdaptivity(view, plots) {
 }
 
 /** The colour bar's words for a unit id (the declared unit when the case has one), with the case's μ when the unit is a stress. */
-function unitText(unit, result) {
+export function unitText(unit, result) {
   const units = resultUnits(result);
   const name = unit in units ? units[unit] : UNITS[unit];
   const mu = result.material?.mu;
   return unit === 'S' && typeof mu === 'number' ? `${name}; here μ = ${fmt(mu)}` : name;
 }
 
+/**
+ * The colour bar under a view: its ends, its gradient and what it shows, in the elements
+ * `${prefix}-min`, `${prefix}-max`, `${prefix}-bar` and `${prefix}-label`.
+ */
+export function writeColourBar(prefix, label, units, scale, range) {
+  $(`${prefix}-min`).textContent = fmt(scale.min, 3);
+  $(`${prefix}-max`).textContent = fmt(scale.max, 3);
+  $(`${prefix}-bar`).style.background = colourGradientCss(scale.map);
+  $(`${prefix}-label`).textContent = `${label}, in ${units}` +
+    (scale.map === 'coolwarm' ? `; blue < 0 < red, symmetric about 0 (values from ${fmt(range.min, 3)} to ${fmt(range.max, 3)})` : '');
+}
+
+/**
+ * The start of drawing a mesh figure (2D or 3D): without a mesh its canvas is hidden, its
+ * caption says why, and the answer is null; otherwise the magnification to draw with (the
+ * automatic one when `resetMagnification`, written into the input).
+ */
+export function figureMagnification(view, { canvas, caption, input }, resetMagnification) {
+  if (!view.mesh) {
+    canvas.hidden = true;
+    caption.textContent = view.meshError ?? 'No solution file.';
+    return null;
+  }
+  canvas.hidden = false;
+  if (resetMagnification) input.value = String(autoMagnification(view.mesh));
+  return Math.max(0, Number(input.value) || 0);
+}
+
 /** Colours the mesh viewer by the chosen field and writes the colour bar and caption. */
 export function drawMeshView(view, viewer, { resetMagnification = false } = {}) {
   const canvas = $('mesh-canvas');
   const caption = $('mesh-caption');
-  const input = $('mesh-magnification');
-  if (!view.mesh) {
-    canvas.hidden = true;
-    caption.textContent = view.meshError ?? 'No solution file.';
-    return;
-  }
-  canvas.hidden = false;
-  if (resetMagnification) input.value = String(autoMagnification(view.mesh));
-  const magnification = Math.max(0, Number(input.value) || 0);
+  const magnification = figureMagnification(view, { canvas, caption, input: $('mesh-magnification') }, resetMagnification);
+  if (magnification === null) return;
   const field = MESH_FIELDS[$('mesh-field').value];
   const values = field.compute(view.mesh);
   if (!values) {
@@ -220,11 +262,7 @@ export function drawMeshView(view, viewer, { resetMagnification = false } = {}) 
   const units = unitText(field.unit, view.result);
   viewer.setMagnification(magnification);
   viewer.setField({ label: field.label, unitText: units, values, scale });
-  $('legend-min').textContent = fmt(scale.min, 3);
-  $('legend-max').textContent = fmt(scale.max, 3);
-  $('legend-bar').style.background = colourGradientCss(scale.map);
-  $('legend-label').textContent = `${field.label}, in ${units}` +
-    (scale.map === 'coolwarm' ? `; blue < 0 < red, symmetric about 0 (values from ${fmt(range.min, 3)} to ${fmt(range.max, 3)})` : '');
+  writeColourBar('legend', field.label, units, scale, range);
   const nTriangles = view.mesh.triangles.length / 3;
   canvas.dataset.triangles = String(nTriangles);
   Object.assign(canvas.dataset, { field: $('mesh-field').value, min: String(range.min), max: String(range.max), colourMap: scale.map });

@@ -1,7 +1,7 @@
 // The page: wires the case editor, the job list and the job view to the service's API.
 import * as api from './api.js';
 import { CaseEditor } from './case_editor.js';
-import { hertzForResult } from './hertz.js';
+import { hertzForResult, hertzForResult3d } from './hertz.js';
 import { hasTresca } from './friction.js';
 import { parseVtu } from './vtu.js';
 import { fmt, setStatus, stepPrefix } from './format.js';
@@ -9,6 +9,9 @@ import { MESH_FIELDS } from './mesh_fields.js';
 import { MeshViewer } from './mesh_viewer.js';
 import { drawCharts, drawMeshView, renderSummary } from './job_result.js';
 import { CompareSelect } from './compare_select.js';
+import { SurfaceViewer } from './surface_viewer.js';
+import { SURFACE_FIELDS } from './surface_fields.js';
+import { drawCharts3d, drawLine, drawSurfaceView, prepare3d, renderSummary3d } from './job_view3d.js';
 import { isActive, renderJobTable } from './job_table.js';
 
 const $ = (id) => document.getElementById(id);
@@ -59,12 +62,16 @@ async function loadExamples() {
     setStatus($('submit-status'), 'The shipped examples are missing (run web/build.sh).', 'error');
     return;
   }
+  // The 3D cases (web/scripts/make_examples.mjs marks them) in a group of their own after the 2D ones.
+  const solidGroup = document.createElement('optgroup');
+  solidGroup.label = '3D';
   for (const ex of examples) {
     const option = document.createElement('option');
     option.value = ex.name;
     option.textContent = ex.name;
-    select.append(option);
+    (ex.dimension === 3 ? solidGroup : select).append(option);
   }
+  if (solidGroup.children.length) select.append(solidGroup);
   const byName = new Map(examples.map((ex) => [ex.name, ex.text]));
   const load = () => {
     editor.text = byName.get(select.value) ?? '';
@@ -311,6 +318,12 @@ async function loadResult(job) {
       return;
     }
     view.result = resultResponse.body;
+    const solid = view.result?.dimension === 3;
+    $('job-result').dataset.dimension = solid ? '3' : '2';
+    if (solid) {
+      await showResult3d(job, view, vtuResponse);
+      return;
+    }
     // Offered by the contact boundary's shape: an arc against a plane (docs/web.md).
     view.hertz = hertzForResult(view.result);
     view.mesh = null;
@@ -324,7 +337,9 @@ async function loadResult(job) {
     if (vtuResponse.ok) {
       try {
         view.mesh = parseVtu(vtuResponse.body);
+        if (view.mesh.dimension === 3) throw new Error('it holds tetrahedra, and the result is 2D');
       } catch (e) {
+        view.mesh = null;
         view.meshError = `The solution file cannot be read: ${e.message}`;
       }
     } else {
@@ -340,10 +355,38 @@ async function loadResult(job) {
   }
 }
 
-// A second job's result over the shown one's curves (docs/web.md, "Compare with").
+// A 3D result (docs/web.md, "3D jobs"): its case gives the contact plane and the half ball's
+// radius; the VTU the surface. Problems with either end in the figure's caption, never a throw.
+async function showResult3d(job, view, vtuResponse) {
+  const caseResponse = await api.getCase(job.id);
+  if (state.view !== view) return;
+  view.caseDoc = caseResponse.ok ? caseResponse.body : null;
+  view.hertz = hertzForResult3d(view.result, view.caseDoc);
+  Object.assign(view, { mesh: null, meshError: null, solid: null });
+  if (vtuResponse.ok) {
+    try {
+      view.mesh = parseVtu(vtuResponse.body);
+      prepare3d(view);
+    } catch (e) {
+      Object.assign(view, { mesh: null, solid: null, meshError: `The solution file cannot be read: ${e.message}` });
+    }
+  } else {
+    view.meshError = `No solution file: ${api.problemMessage(vtuResponse)}`;
+  }
+  renderSummary3d(job, view);
+  $('job-result').hidden = false;  // charts measure their container: show it first
+  if (view.solid) {
+    const { surface, frame, contact } = view.solid;
+    surfaceViewer.setSurface({ mesh: view.mesh, surface, frame, contact });
+  }
+  drawSurfaceView(view, surfaceViewer, { resetMagnification: true });
+  drawCharts3d(view, plots, surfaceViewer);
+}
+
+// A second job's result over the shown one's curves (docs/web.md, "Compare with"; 2D only).
 async function compareWith(job) {
   const view = state.view;
-  if (!view?.result) return;
+  if (!view?.result || view.result.dimension === 3) return;
   view.compare = null;
   if (job) {
     const response = await api.getResult(job.id);
@@ -373,6 +416,19 @@ async function openCase() {
 
 const viewer = new MeshViewer({ canvas: $('mesh-canvas'), probe: $('mesh-probe'), format: (v) => fmt(v, 5) });
 const compareSelect = new CompareSelect($('compare-job'), compareWith);
+const surfaceViewer = new SurfaceViewer({ canvas: $('surface-canvas') });
+
+/** The 3D view's controls: colour, magnification, reset, and the line's angle. */
+function listen3d() {
+  for (const [id, field] of Object.entries(SURFACE_FIELDS)) $('surface-field').append(new Option(field.label, id));
+  const redraw = (options) => state.view?.solid && drawSurfaceView(state.view, surfaceViewer, options);
+  $('surface-field').addEventListener('change', () => redraw());
+  $('surface-magnification').addEventListener('input', () => redraw());
+  $('surface-auto').addEventListener('click', () => redraw({ resetMagnification: true }));
+  $('surface-reset').addEventListener('click', () => surfaceViewer.resetView());
+  $('line-angle').addEventListener('input', () => state.view?.solid && drawLine(state.view, plots, surfaceViewer));
+  new ResizeObserver(() => surfaceViewer.redraw()).observe($('surface-canvas'));
+}
 
 function init() {
   for (const [id, field] of Object.entries(MESH_FIELDS)) $('mesh-field').append(new Option(field.label, id));
@@ -398,6 +454,7 @@ function init() {
   $('mesh-edges').addEventListener('change', (e) => viewer.setEdges(e.target.checked));
   $('mesh-reset').addEventListener('click', () => viewer.resetView());
   new ResizeObserver(() => viewer.redraw()).observe($('mesh-canvas'));
+  listen3d();
 
   const fromHash = /^#job-(\d+)$/.exec(location.hash);
   if (fromHash) state.selectedId = Number(fromHash[1]);

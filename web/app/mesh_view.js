@@ -44,35 +44,44 @@ export function colourScale(range, signed) {
   return { map: 'viridis', min: range.min, max: range.max };
 }
 
-/** Largest displacement length of the mesh (0 without a u field). */
+/** Largest displacement length of the mesh, 2D or 3D (0 without a u field). */
 export function maxDisplacement(mesh) {
   const u = mesh.pointData.u;
   if (!u) return 0;
+  const solid = mesh.dimension === 3;
   let m = 0;
-  for (let v = 0; v < mesh.points.length / 2; v++) {
-    m = Math.max(m, Math.hypot(u.values[v * u.components], u.values[v * u.components + 1]));
+  for (let v = 0; v < u.values.length / u.components; v++) {
+    const [x, y, z] = [0, 1, 2].map((d) => u.values[v * u.components + d]);
+    m = Math.max(m, solid ? Math.hypot(x, y, z) : Math.hypot(x, y));
   }
   return m;
 }
 
+/** The diagonal of the box around the mesh's points (x, y pairs in 2D, triples in 3D). */
+function diagonal(mesh) {
+  const [points, dims] = mesh.dimension === 3 ? [mesh.points3, 3] : [mesh.points, 2];
+  const lo = Array(dims).fill(Infinity);
+  const hi = Array(dims).fill(-Infinity);
+  for (let v = 0; v < points.length; v += dims) {
+    for (let d = 0; d < dims; d++) {
+      lo[d] = Math.min(lo[d], points[v + d]);
+      hi[d] = Math.max(hi[d], points[v + d]);
+    }
+  }
+  return Math.hypot(...hi.map((h, d) => h - lo[d]));
+}
+
 /**
  * A round magnification (1, 2, 5 × 10^k, never below 1) that makes the largest displacement
- * about 8 % of the mesh's diagonal, so that small elastic deformations become visible.
+ * about 8 % of the mesh's diagonal, so that small elastic deformations become visible. The
+ * same rule for 2D and 3D meshes.
  */
 export function autoMagnification(mesh) {
   const umax = maxDisplacement(mesh);
   if (!(umax > 0)) return 1;
-  let xmin = Infinity, xmax = -Infinity, ymin = Infinity, ymax = -Infinity;
-  for (let v = 0; v < mesh.points.length; v += 2) {
-    xmin = Math.min(xmin, mesh.points[v]);
-    xmax = Math.max(xmax, mesh.points[v]);
-    ymin = Math.min(ymin, mesh.points[v + 1]);
-    ymax = Math.max(ymax, mesh.points[v + 1]);
-  }
-  const target = (0.08 * Math.hypot(xmax - xmin, ymax - ymin)) / umax;
+  const target = (0.08 * diagonal(mesh)) / umax;
   if (target <= 1) return 1;
   const decade = 10 ** Math.floor(Math.log10(target));
   const mantissa = [5, 2, 1].find((m) => m * decade <= target);
   return mantissa * decade;
 }
-

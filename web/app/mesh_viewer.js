@@ -3,27 +3,26 @@
 // coordinates under the pointer (hover) or at a clicked point (pinned, marked with a cross).
 import { bounds, deformedPoints, drawMesh, fitTransform, locatePoint } from './mesh_drawing.js';
 import { probeSummary } from './mesh_fields.js';
+import { CanvasView } from './canvas_view.js';
 
 const ZOOM_MIN = 0.5;
 const ZOOM_MAX = 2000;
 const DRAG_PIXELS = 4;  // a press that moves less is a click (a probe), not a pan
 
-export class MeshViewer {
+export class MeshViewer extends CanvasView {
   /**
    * canvas: the <canvas>; probe: the element that shows the probe's text; format(v): number
    * formatting for the probe.
    */
   constructor({ canvas, probe, format }) {
-    this.canvas_ = canvas;
+    super(canvas);
     this.probe_ = probe;
     this.format_ = format;
     this.mesh_ = null;
     this.field_ = null;  // {label, unitText, values, scale}
-    this.magnification_ = 1;
     this.edges_ = false;
     this.camera_ = { zoom: 1, tx: 0, ty: 0 };  // screen-space zoom and shift over the fit
     this.pinned_ = null;  // probed point in undeformed coordinates {cell, weights}
-    this.frame_ = 0;
     this.drag_ = null;
     this.listen_();
   }
@@ -43,12 +42,6 @@ export class MeshViewer {
     this.redraw();
   }
 
-  setMagnification(m) {
-    if (m === this.magnification_ && this.deformed_) return;
-    this.magnification_ = m;
-    this.deformed_ = null;
-    this.redraw();
-  }
 
   setEdges(on) {
     this.edges_ = on;
@@ -64,14 +57,6 @@ export class MeshViewer {
     return this.camera_.zoom;
   }
 
-  /** Draws at the next animation frame (many events per frame cost one drawing). */
-  redraw() {
-    if (this.frame_) return;
-    this.frame_ = requestAnimationFrame(() => {
-      this.frame_ = 0;
-      this.draw_();
-    });
-  }
 
   /** Zooms by `factor` about the canvas point (px, py) in CSS pixels (default: the centre). */
   zoomBy(factor, px = this.canvas_.clientWidth / 2, py = this.canvas_.clientHeight / 2) {

@@ -66,6 +66,21 @@ export function sortedAlong(contact, abscissa, field) {
 }
 
 /**
+ * [x, p(x)] of the Hertz pressure ({a, p0}) over [−1.2a, 1.2a] clipped to [from, to], with the
+ * corners at ±a sampled exactly so that the edge of the contact zone is sharp.
+ */
+function hertzCurve(hertz, from, to) {
+  const lo = Math.max(from, -1.2 * hertz.a);
+  const hi = Math.min(to, 1.2 * hertz.a);
+  const hx = [];
+  const n = 241;
+  for (let k = 0; k < n; k++) hx.push(lo + ((hi - lo) * k) / (n - 1));
+  for (const edge of [-hertz.a, hertz.a]) if (edge > lo && edge < hi) hx.push(edge);
+  hx.sort((a, b) => a - b);
+  return [hx, hx.map((v) => hertzPressure(v, hertz))];
+}
+
+/**
  * Contact pressure (left axis) and remaining gap (right axis) against x (or arc length s) of
  * the contact edge midpoints. With `hertz` ({a, p0}) the analytic pressure is drawn over
  * [−1.2a, 1.2a] clipped to the data range; with `compare` ({label, contact}) a second job's
@@ -83,15 +98,7 @@ export function boundaryPlot(container, contact, { hertz = null, abscissa = 'x',
     { label: 'gap', scale: 'gap', stroke: COLOURS.gap, width: 1.5, value, points: { show: false } },
   ];
   if (hertz && abscissa === 'x' && x.length > 0) {
-    const lo = Math.max(x[0], -1.2 * hertz.a);
-    const hi = Math.min(x[x.length - 1], 1.2 * hertz.a);
-    const hx = [];
-    const n = 241;
-    for (let k = 0; k < n; k++) hx.push(lo + ((hi - lo) * k) / (n - 1));
-    // Sample the corners of the curve at ±a exactly so the edge of the contact zone is sharp.
-    for (const edge of [-hertz.a, hertz.a]) if (edge > lo && edge < hi) hx.push(edge);
-    hx.sort((a, b) => a - b);
-    tables.push([hx, hx.map((v) => hertzPressure(v, hertz))]);
+    tables.push(hertzCurve(hertz, x[0], x[x.length - 1]));
     series.push({ label: 'Hertz pressure (plane strain)', stroke: COLOURS.hertz, width: 1.5, dash: [6, 4], value, points: { show: false } });
   }
   if (compare) {
@@ -244,6 +251,44 @@ export function adaptivityPlot(container, rows) {
   Object.assign(container.dataset, {
     points: String(estimator.filter((v) => v !== null).length),
     series: opts.series.slice(1).map((s) => s.label).join('|'),
+  });
+  return chart;
+}
+
+/**
+ * A 3D result's contact pressure along a line in the contact plane (`samples` of
+ * contact_line.js's sampleLine: s and the value, null off the contact faces: a gap in the
+ * curve) against the signed distance s from the line's centre; with `hertz` ({a, p0}) the 3D
+ * Hertz pressure p0 √(1 − s²/a²) dashed, centred on the line's centre.
+ */
+export function linePlot(container, samples, { hertz = null } = {}) {
+  const value = (u, v) => sci(v);
+  const tables = [[samples.map((x) => x.s), samples.map((x) => x.value)]];
+  const series = [
+    { label: 's', value },
+    { label: 'pressure', stroke: COLOURS.pressure, width: 2, value, points: { show: false } },
+  ];
+  if (hertz && samples.length > 0) {
+    tables.push(hertzCurve(hertz, samples[0].s, samples[samples.length - 1].s));
+    series.push({ label: 'Hertz pressure (3D)', stroke: COLOURS.hertz, width: 1.5, dash: [6, 4], value, points: { show: false }, spanGaps: true });
+  }
+  const opts = {
+    width: fitWidth(container),
+    height: plotHeight,
+    scales: { x: { time: false } },
+    series,
+    axes: [
+      { label: 'distance s from the centre along the line', size: 46, values: (u, vals) => vals.map(sci) },
+      { label: 'contact pressure', size: 64, values: (u, vals) => vals.map(sci) },
+    ],
+    legend: { live: false },
+  };
+  const chart = responsive(new uPlot(opts, tables.length > 1 ? uPlot.join(tables) : tables[0], container), container);
+  const drawn = samples.filter((x) => x.value !== null);
+  Object.assign(container.dataset, {
+    points: String(drawn.length),
+    peak: String(drawn.length ? Math.max(...drawn.map((x) => x.value)) : 0),
+    series: series.slice(1).map((x) => x.label).join('|'),
   });
   return chart;
 }

@@ -1,5 +1,5 @@
 // Reads the VTK XML UnstructuredGrid that fosls-serve writes (solution.vtu): points,
-// triangles, point data (u, ...) and cell data (sigma, von_mises, functional). Arrays may be
+// triangles (2D) or tetrahedra (3D), point data (u, ...) and cell data (sigma, von_mises, functional). Arrays may be
 // ASCII or inline binary (format="binary": base64 of a UInt32 or UInt64 byte count and the
 // little-endian values, as one stream). Plain string scanning rather than DOMParser, so the
 // same code runs in the browser and under node.
@@ -68,9 +68,48 @@ function arrayList(xml, headerType) {
   return out;
 }
 
+/** Cell shapes the reader knows: VTK type → nodes per cell and the name used in messages. */
+const CELL_SHAPES = { 5: { nodes: 3, name: 'triangle' }, 10: { nodes: 4, name: 'tetrahedron' } };
+
 /**
- * Parses the VTU text. Returns {points: Float64Array (x,y pairs), triangles: Uint32Array
- * (3 per cell), pointData: {name: {components, values}}, cellData: {...}}. Throws an Error
+ * The cells as one flat Uint32Array of `nodes` vertices each, all of VTK type `type`. A file
+ * of one shape is required: a mixed file (or, without a types array, an offset step other than
+ * the shape's) is refused with the cell that breaks it.
+ */
+function uniformCells(cells, nCells, nPoints, type) {
+  const { connectivity, offsets, types } = cells;
+  const { nodes, name } = CELL_SHAPES[type];
+  const out = new Uint32Array(nodes * nCells);
+  let previous = 0;
+  for (let c = 0; c < nCells; c++) {
+    if (offsets[c] - previous !== nodes || (types && types[c] !== type)) {
+      throw new Error(type === 5 ? `cell ${c} is not a triangle`
+        : `cell ${c} is not a ${name} as cell 0 is (mixed cell shapes are not read)`);
+    }
+    for (let k = 0; k < nodes; k++) {
+      const v = connectivity[previous + k];
+      if (!(v >= 0 && v < nPoints)) throw new Error(`cell ${c} names point ${v}, beyond ${nPoints}`);
+      out[nodes * c + k] = v;
+    }
+    previous = offsets[c];
+  }
+  return out;
+}
+
+/** The point coordinates, the first `dimension` components of each point. */
+function pointCoordinates(pointArray, nPoints, dimension) {
+  const out = new Float64Array(dimension * nPoints);
+  for (let v = 0; v < nPoints; v++) {
+    for (let d = 0; d < dimension; d++) out[dimension * v + d] = pointArray.values[v * pointArray.components + d] ?? 0;
+  }
+  return out;
+}
+
+/**
+ * Parses the VTU text. A file of triangles (2D) returns {points: Float64Array (x,y pairs),
+ * triangles: Uint32Array (3 per cell), pointData: {name: {components, values}}, cellData:
+ * {...}}. A file of tetrahedra (3D, VTK type 10) returns {dimension: 3, points3: Float64Array
+ * (x,y,z triples), tetrahedra: Uint32Array (4 per cell), pointData, cellData}. Throws an Error
  * saying what is missing or inconsistent.
  */
 export function parseVtu(xml) {
@@ -88,32 +127,19 @@ export function parseVtu(xml) {
   if (!pointArray || pointArray.values.length !== nPoints * pointArray.components) {
     throw new Error(`Points: expected ${nPoints} points`);
   }
-  const points = new Float64Array(2 * nPoints);
-  for (let v = 0; v < nPoints; v++) {
-    points[2 * v] = pointArray.values[v * pointArray.components];
-    points[2 * v + 1] = pointArray.values[v * pointArray.components + 1];
-  }
 
-  const cells = Object.fromEntries(arrays(section(xml, 'Cells')).map((a) => [a.name, a]));
-  const connectivity = cells.connectivity?.values;
-  const offsets = cells.offsets?.values;
-  const types = cells.types?.values;
-  if (!connectivity || !offsets || offsets.length !== nCells) {
+  const cells = Object.fromEntries(arrays(section(xml, 'Cells')).map((a) => [a.name, a.values]));
+  if (!cells.connectivity || !cells.offsets || cells.offsets.length !== nCells) {
     throw new Error(`Cells: expected connectivity and ${nCells} offsets`);
   }
-  const triangles = new Uint32Array(3 * nCells);
-  let previous = 0;
-  for (let c = 0; c < nCells; c++) {
-    if (offsets[c] - previous !== 3 || (types && types[c] !== 5)) {
-      throw new Error(`cell ${c} is not a triangle`);
-    }
-    for (let k = 0; k < 3; k++) {
-      const v = connectivity[previous + k];
-      if (!(v >= 0 && v < nPoints)) throw new Error(`cell ${c} names point ${v}, beyond ${nPoints}`);
-      triangles[3 * c + k] = v;
-    }
-    previous = offsets[c];
+  // The shape is the first cell's (by its type, or by its node count without a types array);
+  // anything but triangles and tetrahedra is refused by name.
+  const firstType = cells.types ? cells.types[0] : cells.offsets[0] === 4 ? 10 : 5;
+  if (nCells > 0 && !CELL_SHAPES[firstType]) {
+    throw new Error(`cell 0 has VTK type ${firstType}: only triangles (5) and tetrahedra (10) are read`);
   }
+  const solid = nCells > 0 && firstType === 10;
+  if (solid && pointArray.components < 3) throw new Error('Points: tetrahedra need 3 coordinates per point');
 
   const collect = (xmlPart, count, where) => {
     const out = {};
@@ -125,10 +151,14 @@ export function parseVtu(xml) {
     }
     return out;
   };
-  return {
-    points,
-    triangles,
+  const data = () => ({
     pointData: collect(section(xml, 'PointData'), nPoints, 'PointData'),
     cellData: collect(section(xml, 'CellData'), nCells, 'CellData'),
-  };
+  });
+  if (solid) {
+    const tetrahedra = uniformCells(cells, nCells, nPoints, 10);
+    return { dimension: 3, points3: pointCoordinates(pointArray, nPoints, 3), tetrahedra, ...data() };
+  }
+  const triangles = uniformCells(cells, nCells, nPoints, 5);
+  return { points: pointCoordinates(pointArray, nPoints, 2), triangles, ...data() };
 }
