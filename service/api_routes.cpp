@@ -120,8 +120,12 @@ std::span<const ApiRoute> api_routes() {
        [] {
          return operation(
              "getResult", "The result JSON (docs/result-format.md)",
-             responses({{"200", json_body({{"$ref", kResultSchema}}, "the result")}},
-                       {{404, "no such job"}, {409, "not finished, failed or cancelled"}}),
+             responses(
+                 {{"200",
+                   json_body({{"description", "a 2D case's result, or a 3D case's"},
+                              {"anyOf", {{{"$ref", kResultSchema}}, {{"$ref", kResult3dSchema}}}}},
+                             "the result")}},
+                 {{404, "no such job"}, {409, "not finished, failed or cancelled"}}),
              true);
        }},
       {"GET", "/v1/jobs/{id}/solution.vtu", &HttpApi::get_solution,
@@ -162,6 +166,12 @@ std::span<const ApiRoute> api_routes() {
        [] {
          return schema_document("case3dSchema",
                                 "JSON Schema of a 3D case (docs/schemas/case3d.schema.json)");
+       }},
+      {"GET", "/v1/schemas/result3d.json", &HttpApi::get_contract,
+       [] {
+         return schema_document(
+             "result3dSchema",
+             "JSON Schema of a 3D case's result (docs/schemas/result3d.schema.json)");
        }},
       {"GET", "/v1/schemas/result.json", &HttpApi::get_contract,
        [] {

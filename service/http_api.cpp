@@ -122,7 +122,7 @@ void HttpApi::install(BoundedHttpServer& server) {
 
   // Built once: they depend only on the program (the rules tables), not on the request.
   contract_ = {{"/v1/openapi.json", dump(openapi_document())}};
-  for (const char* name : {"case.json", "case3d.json", "result.json"})
+  for (const char* name : {"case.json", "case3d.json", "result.json", "result3d.json"})
     contract_["/v1/schemas/" + std::string(name)] = dump(*published_schema(name));
   for (const ApiRoute& route : api_routes()) {
     const std::string pattern = route_pattern(route.path);

@@ -13,6 +13,7 @@ namespace fosls::service::openapi {
 inline const std::string kCaseSchema = "/v1/schemas/case.json";
 inline const std::string kCase3dSchema = "/v1/schemas/case3d.json";
 inline const std::string kResultSchema = "/v1/schemas/result.json";
+inline const std::string kResult3dSchema = "/v1/schemas/result3d.json";
 
 /// {"$ref": "#/components/schemas/NAME"}.
 nlohmann::json ref(const std::string& name);

@@ -15,6 +15,9 @@ namespace fosls {
 nlohmann::json case_json_schema();
 /// The JSON Schema of a 3D case (docs/case-format.md, "3D cases"): `fosls-contact schema case3d`.
 nlohmann::json case3d_json_schema();
+/// The JSON Schema of a 3D case's result (docs/result-format.md, "3D results"):
+/// `fosls-contact schema result3d`.
+nlohmann::json result3d_json_schema();
 
 /// The generated blocks of docs/case-format.md by name: "fields:<section>" for the field
 /// table of each section (case, mesh, builtin, geometry, curve, material, condition, obstacle,

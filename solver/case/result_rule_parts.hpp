@@ -17,10 +17,16 @@ ValueRule converged_by_value();
 /// A number, or null where there is none (JSON has no NaN).
 ValueRule number_or_null();
 ObjectRulePtr object_rule(std::string title, std::string anchor, std::vector<FieldRule> fields);
+/// One entry of `history`, of `warning_details`, and the `material` echo: the same in 2D and 3D.
+ObjectRulePtr history_rule();
+ObjectRulePtr warning_rule();
+ObjectRulePtr material_echo_rule();
 
 /// The `adaptivity` object of an adaptive run (result_refinement_rules.cpp).
 ObjectRulePtr adaptivity_result_rule();
 /// The `accuracy` object of a run to a requested force accuracy (result_refinement_rules.cpp).
 ObjectRulePtr accuracy_result_rule();
+/// The stop reasons' names, in the order of StopReason.
+std::vector<std::string> stop_reason_names();
 
 }  // namespace fosls::result_parts

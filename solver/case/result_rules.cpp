@@ -31,12 +31,6 @@ ObjectRulePtr object_rule(std::string title, std::string anchor, std::vector<Fie
   return r;
 }
 
-}  // namespace result_parts
-
-namespace {
-
-using namespace result_parts;
-
 ObjectRulePtr history_rule() {
   return object_rule(
       "an iteration", "iteration",
@@ -50,6 +44,29 @@ ObjectRulePtr history_rule() {
        output_field("changed", count(), "1", "unknowns that entered or left the active set"),
        output_field("time_s", number(), "s", "since the start of the iteration")});
 }
+
+ObjectRulePtr warning_rule() {
+  return object_rule(
+      "a warning", "warning",
+      {output_field("code", choice_value(warning_codes()), "",
+                    "what kind of warning, for programs (docs/result-format.md, \"Warnings\")"),
+       output_field("message", text(), "", "the sentence, as in warnings"),
+       output_field("review", boolean_value(), "",
+                    "the answer may be physically empty or wrong although it converged")});
+}
+
+ObjectRulePtr material_echo_rule() {
+  return object_rule(
+      "the material", "material_echo",
+      {output_field("mu", number(), "S", "shear modulus μ (from mu, or from E and nu)"),
+       output_field("lambda", one_of_value({number_value(), choice_value({"inf"})}, "λ"), "S",
+                    "Lamé parameter λ, \"inf\" when incompressible")});
+}
+}  // namespace result_parts
+
+namespace {
+
+using namespace result_parts;
 
 ObjectRulePtr statistics_rule() {
   return object_rule(
@@ -122,16 +139,6 @@ ObjectRulePtr units_echo_rule() {
        output_field("force_per_thickness", name, "",
                     "the unit of S·L, a force per unit thickness: \"N/mm\" for MPa and mm, "
                     "\"N/m\" for Pa and m; null when not declared")});
-}
-
-ObjectRulePtr warning_rule() {
-  return object_rule(
-      "a warning", "warning",
-      {output_field("code", choice_value(warning_codes()), "",
-                    "what kind of warning, for programs (docs/result-format.md, \"Warnings\")"),
-       output_field("message", text(), "", "the sentence, as in warnings"),
-       output_field("review", boolean_value(), "",
-                    "the answer may be physically empty or wrong although it converged")});
 }
 
 ObjectRulePtr sweep_point_rule(ValueRule reasons) {
@@ -317,14 +324,6 @@ ObjectRulePtr stopping_rule() {
                     "J^½ of the last iterate, the estimated discretisation error")});
 }
 
-ObjectRulePtr material_echo_rule() {
-  return object_rule(
-      "the material", "material_echo",
-      {output_field("mu", number(), "S", "shear modulus μ (from mu, or from E and nu)"),
-       output_field("lambda", one_of_value({number_value(), choice_value({"inf"})}, "λ"), "S",
-                    "Lamé parameter λ, \"inf\" when incompressible")});
-}
-
 ObjectRulePtr mesh_echo_rule() {
   ValueRule params = map_value(name_value(100, "the parameter"), number_value(), 100,
                                "object mapping parameter names to values", "parameters");
@@ -490,11 +489,16 @@ std::vector<FieldRule> solution_fields(const std::vector<std::string>& reasons) 
 
 }  // namespace
 
-ObjectRulePtr result_rule() {
+std::vector<std::string> result_parts::stop_reason_names() {
   std::vector<std::string> reasons;
   for (const auto reason : {StopReason::kConverged, StopReason::kMaxIterations,
                             StopReason::kTimeLimit, StopReason::kCancelled})
     reasons.push_back(stop_reason_name(reason));
+  return reasons;
+}
+
+ObjectRulePtr result_rule() {
+  const std::vector<std::string> reasons = result_parts::stop_reason_names();
   std::vector<FieldRule> fields = outcome_fields(reasons);
   for (FieldRule& f : solution_fields(reasons)) fields.push_back(std::move(f));
   fields.push_back(optional_field(

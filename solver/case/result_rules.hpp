@@ -13,5 +13,7 @@ const char* stop_reason_name(StopReason reason);
 
 /// The rules of the result JSON of one solve.
 ObjectRulePtr result_rule();
+/// The rules of a 3D case's result (result3d_rules.cpp; docs/result-format.md, "3D results").
+ObjectRulePtr result3d_rule();
 
 }  // namespace fosls

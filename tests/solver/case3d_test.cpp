@@ -17,6 +17,8 @@
 #include "case/case3d_runner.hpp"
 #include "case/case_error.hpp"
 #include "case/case_reader.hpp"
+#include "case/result_rules.hpp"
+#include "case/rule_checker.hpp"
 
 namespace fosls {
 namespace {
@@ -92,6 +94,19 @@ TEST(Case3d, HertzForceIsAThreeVectorAndMmgAgreesWithPdas) {
   EXPECT_FALSE(mmg["review_required"].get<bool>());
   EXPECT_EQ(mmg["stop_reason"], "converged");
   EXPECT_EQ(mmg["history"].size(), mmg["iterations"].get<std::size_t>() + 1);
+  // Every field is documented (result3d_rule: docs/result-format.md, "3D results"), as the runner
+  // adds timing; and a field the rules do not know is found.
+  json full = run_case_3d(*read_case_3d(hertz_3d(1)).spec).result;
+  const auto undocumented = [](const json& r) {
+    RuleChecker checker(CaseReadOptions{});
+    checker.check_object(r, *result3d_rule(), "");
+    std::string s;
+    for (const auto& e : checker.errors()) s += e.pointer + ": " + e.detail + "\n";
+    return s;
+  };
+  EXPECT_EQ(undocumented(full), "");
+  full["contact"]["zone"] = 1;
+  EXPECT_NE(undocumented(full).find("/contact/zone"), std::string::npos);
 }
 
 TEST(Case3d, EveryProblemOfABadCaseIsNamedByItsField) {
@@ -198,7 +213,7 @@ TEST(Case3d, AdmissionEstimatesABuiltinsSizeBeforeItIsBuilt) {
   const double dofs = r["dofs"].get<double>();
   EXPECT_NEAR(admitted.estimate->unknowns, dofs, 0.03 * dofs);  // Kuhn counts: ~V/T and F/T
   CaseReadOptions tight;
-  tight.limits.max_seconds = 10;  // refinement 3: about 639 000 unknowns, estimated at 129 s
+  tight.limits.max_seconds = 10;  // refinement 3: about 639 000 unknowns, estimated at 167 s
   tight.limits.time_budget_name = "a job may run";
   const Case3dAdmission slow = admit_case_3d(hertz_3d(3), tight);
   ASSERT_EQ(slow.errors.size(), 1u);

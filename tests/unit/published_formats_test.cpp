@@ -105,6 +105,10 @@ TEST(PublishedFormats, ResultSchemaMatchesTheRules) {
   check_schema("result.schema.json", result_json_schema());
 }
 
+TEST(PublishedFormats, Result3dSchemaMatchesTheRules) {
+  check_schema("result3d.schema.json", result3d_json_schema());
+}
+
 // Every section has a table, so no field can be added to the reader without showing up in the
 // docs.
 TEST(PublishedFormats, EveryCaseSectionIsInATable) {
