@@ -97,7 +97,7 @@ TEST(Service3d, ACaseTooLargeOrNamingALocalFileIsRefusedByItsFieldBeforeItRuns) 
   std::string why;
   EXPECT_EQ(refused_at(svc, file, &why), std::vector<std::string>{"/mesh/msh_file"});
   EXPECT_NE(why.find("mesh.msh"), std::string::npos) << why;
-  // Refinement 3: about 639 000 unknowns, estimated above 20 s (200 µs per unknown).
+  // Refinement 3: about 639 000 unknowns, estimated above 20 s (260 µs per unknown).
   EXPECT_EQ(refused_at(svc, hertz_3d(3), &why), std::vector<std::string>{"/mesh/refinements"});
   EXPECT_NE(why.find("--max-job-seconds"), std::string::npos) << why;
   // Refinement 3 with pdas: about 5 GB, above the 2 GiB a job may use (and the time).
