@@ -46,8 +46,8 @@ Case3dEstimate estimate_3d_solve(double unknowns, SolverMethod method) {
   const bool pdas = method == SolverMethod::kPdas;
   e.bytes = 40.0 * (1 << 20) + (pdas ? 8000.0 : 2200.0) * unknowns;
   // Time: mmg's largest measured time per unknown with contact (the incompressible rounded
-  // punch of the robustness cases, an unstructured mesh with a large contact zone); pdas's grows with its
-  // fill-in beyond the 1.6·10⁵ unknowns where it was measured.
+  // punch of the robustness cases, an unstructured mesh with a large contact zone); pdas's grows
+  // with its fill-in beyond the 1.6·10⁵ unknowns where it was measured.
   const double per_unknown = pdas ? 90e-6 * std::max(1.0, std::sqrt(unknowns / 1.6e5)) : 260e-6;
   e.seconds = 1.0 + per_unknown * unknowns;
   return e;

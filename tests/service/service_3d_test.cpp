@@ -56,7 +56,7 @@ TEST(Service3d, HertzRoundTripsWithAThreeVectorForceAndATetrahedralVtu) {
   EXPECT_EQ(job["stop_reason"], "converged");
   EXPECT_EQ(job["name"], "hertz_3d");
   EXPECT_GT(job["progress"]["iteration"].get<int>(), 0);  // reported while it ran
-  EXPECT_EQ(job["progress"]["steps"], 1);                  // one solve
+  EXPECT_EQ(job["progress"]["steps"], 1);                 // one solve
 
   const json r = json::parse(cli.Get(path(id, "result"))->body);
   EXPECT_EQ(r["dimension"], 3);
