@@ -2,8 +2,10 @@
 
 #include <cmath>
 #include <sstream>
+#include <variant>
 
 #include "case/case3d_reader.hpp"
+#include "case/early_group_check.hpp"
 #include "case/job_time.hpp"
 #include "case/memory_size.hpp"
 #include "mesh/mesh_error.hpp"
@@ -22,15 +24,27 @@ double builtin_coarse_unknowns(const Mesh3dSpec& m) {
   return 3.0 * (1.0 / 6.0 + 2.0) * 6.0 * cubes;
 }
 
-/// The coarse unknowns of a mesh given as msh text, counted on the mesh (its problems are the
-/// runner's to report, with the same reader: nothing is known here then).
-std::optional<double> msh_coarse_unknowns(const std::string& text) {
+double mesh_unknowns(const TetMesh& mesh) { return 3.0 * (mesh.num_vertices() + mesh.num_faces()); }
+
+std::string mesh_source_pointer(const Mesh3dSpec& m) {
+  return m.path.empty() ? "/mesh/msh" : "/mesh/msh_file";
+}
+
+/// The text's mesh, or its problems at the mesh source's pointer.
+std::variant<TetMesh, std::vector<CaseError>> msh_mesh(const Mesh3dSpec& m) {
   try {
-    const TetMesh mesh = tet_mesh_from_msh(text);
-    return 3.0 * (mesh.num_vertices() + mesh.num_faces());
-  } catch (const MeshError&) {
-    return std::nullopt;
+    return tet_mesh_from_msh(m.msh_text);
+  } catch (const MeshError& e) {
+    std::vector<CaseError> errors;
+    for (const auto& p : e.problems()) errors.push_back({mesh_source_pointer(m), p.detail});
+    return errors;
   }
+}
+
+/// A budget's problem names the other method when that one fits the same budget.
+std::string other_method_advice(SolverMethod method, bool fits_other) {
+  if (!fits_other) return "";
+  return method == SolverMethod::kPdas ? ", or solver.method mmg" : ", or solver.method pdas";
 }
 
 std::string method_name(SolverMethod method) {
@@ -45,25 +59,51 @@ Case3dEstimate estimate_3d_solve(double unknowns, SolverMethod method) {
   // Memory: pdas's direct solver fills in, so its figure is the largest measured.
   const bool pdas = method == SolverMethod::kPdas;
   e.bytes = 40.0 * (1 << 20) + (pdas ? 8000.0 : 2200.0) * unknowns;
-  // Time: mmg's largest measured time per unknown with contact (the incompressible rounded
-  // punch of the robustness cases, an unstructured mesh with a large contact zone); pdas's grows
-  // with its fill-in beyond the 1.6·10⁵ unknowns where it was measured.
-  const double per_unknown = pdas ? 90e-6 * std::max(1.0, std::sqrt(unknowns / 1.6e5)) : 260e-6;
+  // Time: the largest measured time per unknown with contact of each method (mmg: the
+  // incompressible rounded punch of the robustness cases, an unstructured mesh with a large
+  // contact zone; pdas: that punch and the incompressible block); pdas's grows with its
+  // fill-in beyond the 6.4·10⁵ unknowns where it was measured.
+  const double per_unknown = pdas ? 250e-6 * std::max(1.0, std::sqrt(unknowns / 6.4e5)) : 260e-6;
   e.seconds = 1.0 + per_unknown * unknowns;
   return e;
 }
 
-std::optional<double> coarse_3d_unknowns(const Mesh3dSpec& m) {
-  switch (m.kind) {
-    case Mesh3dSpec::Kind::kBox:
-    case Mesh3dSpec::Kind::kHalfBall:
-      return builtin_coarse_unknowns(m);
-    case Mesh3dSpec::Kind::kMsh:
-      return msh_coarse_unknowns(m.msh_text);
-    case Mesh3dSpec::Kind::kGeoFile:
-      break;
-  }
+std::optional<double> builtin_3d_unknowns(const Mesh3dSpec& m) {
+  if (m.kind == Mesh3dSpec::Kind::kBox || m.kind == Mesh3dSpec::Kind::kHalfBall)
+    return builtin_coarse_unknowns(m);
   return std::nullopt;
+}
+
+int tet_group_index(const TetMesh& mesh, const std::string& name) {
+  const auto& names = mesh.group_names();
+  for (std::size_t g = 0; g < names.size(); ++g)
+    if (names[g] == name) return static_cast<int>(g);
+  return -1;
+}
+
+std::vector<CaseError> check_3d_groups(const Case3dSpec& spec, const TetMesh& mesh) {
+  std::vector<CaseError> errors;
+  for (const auto& [name, bc] : spec.boundary) {
+    const int g = tet_group_index(mesh, name);
+    if (g < 0) {
+      errors.push_back(unknown_group_problem(name, mesh.group_names()));
+      continue;
+    }
+    if (bc.type != Condition3d::Type::kContact) continue;
+    for (int f = 0; f < mesh.num_faces(); ++f) {
+      if (mesh.face_group(f) != g || mesh.face_normal(f).dot(bc.plane_normal) < 0) continue;
+      const Point3 c = mesh.face_centroid(f);
+      std::ostringstream s;
+      s << "the face of group " << name << " at (" << c.x() << ", " << c.y() << ", " << c.z()
+        << ") does not face the plane (its outward normal is not against the plane's normal): "
+           "the gap is measured along the body normal, so every face of a contact group must "
+           "face the plane; check the normal's sign (from the plane into the body) or make the "
+           "contact group smaller";
+      errors.push_back({child_pointer(child_pointer("/boundary", name), "normal"), s.str()});
+      break;
+    }
+  }
+  return errors;
 }
 
 double finest_3d_unknowns(double coarse_unknowns, const Mesh3dSpec& mesh) {
@@ -75,7 +115,9 @@ std::vector<CaseError> check_3d_size(double unknowns, const Case3dSpec& spec,
   const SolverMethod method = spec.solver.method;
   const Case3dEstimate e = estimate_3d_solve(unknowns, method);
   const std::string fix = "; use fewer refinements or a coarser mesh";
-  const std::string mmg_too = method == SolverMethod::kPdas ? ", or solver.method mmg" : "";
+  const SolverMethod other =
+      method == SolverMethod::kPdas ? SolverMethod::kMmg : SolverMethod::kPdas;
+  const Case3dEstimate e_other = estimate_3d_solve(unknowns, other);
   std::ostringstream size;
   size << "about " << std::llround(unknowns) << " unknowns with " << method_name(method);
   std::vector<CaseError> errors;
@@ -90,17 +132,19 @@ std::vector<CaseError> check_3d_size(double unknowns, const Case3dSpec& spec,
     std::ostringstream s;
     s << "the solve needs about " << format_bytes(e.bytes) << " (" << size.str()
       << "), more than the " << format_bytes(limits.max_memory_bytes) << " "
-      << limits.memory_budget_name << fix;
-    if (!mmg_too.empty())
-      s << mmg_too << " (about "
-        << format_bytes(estimate_3d_solve(unknowns, SolverMethod::kMmg).bytes) << ")";
+      << limits.memory_budget_name << fix
+      << other_method_advice(method, e_other.bytes <= limits.max_memory_bytes);
+    if (e_other.bytes <= limits.max_memory_bytes)
+      s << " (about " << format_bytes(e_other.bytes) << ")";
     errors.push_back({"/mesh/refinements", s.str()});
   }
   if (limits.max_seconds > 0 && e.seconds > limits.max_seconds) {
     std::ostringstream s;
     s << "the case needs about " << budget_text(std::ceil(e.seconds)) << " (" << size.str()
       << "), more than the " << budget_text(limits.max_seconds) << " " << limits.time_budget_name
-      << fix << mmg_too;
+      << fix << other_method_advice(method, e_other.seconds <= limits.max_seconds);
+    if (e_other.seconds <= limits.max_seconds)
+      s << " (about " << budget_text(std::ceil(e_other.seconds)) << ")";
     errors.push_back({"/mesh/refinements", s.str()});
   }
   return errors;
@@ -111,10 +155,23 @@ Case3dAdmission admit_case_3d(const nlohmann::json& j, const CaseReadOptions& op
   Case3dReadResult read = read_case_3d(j, options);
   admission.errors = std::move(read.errors);
   if (!read.spec) return admission;
-  if (const auto coarse = coarse_3d_unknowns(read.spec->mesh)) {
+  const Case3dSpec& spec = *read.spec;
+  std::optional<double> coarse = builtin_3d_unknowns(spec.mesh);
+  if (spec.mesh.kind == Mesh3dSpec::Kind::kMsh) {  // read now: its problems are the case's
+    auto mesh = msh_mesh(spec.mesh);
+    if (auto* errors = std::get_if<std::vector<CaseError>>(&mesh)) {
+      admission.errors = std::move(*errors);
+      return admission;
+    }
+    const TetMesh& m = std::get<TetMesh>(mesh);
+    admission.errors = check_3d_groups(spec, m);
+    if (!admission.errors.empty()) return admission;
+    coarse = mesh_unknowns(m);
+  }
+  if (coarse) {
     admission.estimate =
-        estimate_3d_solve(finest_3d_unknowns(*coarse, read.spec->mesh), read.spec->solver.method);
-    admission.errors = check_3d_size(admission.estimate->unknowns, *read.spec, options.limits);
+        estimate_3d_solve(finest_3d_unknowns(*coarse, spec.mesh), spec.solver.method);
+    admission.errors = check_3d_size(admission.estimate->unknowns, spec, options.limits);
   }
   admission.spec = std::move(read.spec);
   return admission;

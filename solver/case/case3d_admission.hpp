@@ -13,6 +13,7 @@
 #include "case/case3d_spec.hpp"
 #include "case/case_error.hpp"
 #include "case/case_limits.hpp"
+#include "mesh/tet_mesh.hpp"
 
 namespace fosls {
 
@@ -25,10 +26,18 @@ struct Case3dEstimate {
 
 Case3dEstimate estimate_3d_solve(double unknowns, SolverMethod method);
 
-/// The coarse mesh's unknowns, before it is refined: a builtin's from its parameters, an msh
-/// text's counted on its mesh; nothing for a geo_file (known once gmsh has meshed it) or msh
-/// text the reader refuses (the runner reports why).
-std::optional<double> coarse_3d_unknowns(const Mesh3dSpec& mesh);
+/// A builtin's coarse unknowns from its parameters, before it is built; nothing for a mesh from
+/// msh text or a geo_file (counted once read or meshed).
+std::optional<double> builtin_3d_unknowns(const Mesh3dSpec& mesh);
+
+/// The mesh's index of the boundary group `name`, −1 when it has none of that name.
+int tet_group_index(const TetMesh& mesh, const std::string& name);
+
+/// Every group the case names is one of the mesh's, and every face of a contact group faces
+/// its plane (the gap along the body normal is then finite everywhere): the problems at the
+/// groups' pointers. Checked at admission on an msh text's mesh and by the runner on the
+/// finest mesh.
+std::vector<CaseError> check_3d_groups(const Case3dSpec& spec, const TetMesh& mesh);
 
 /// Unknowns of the finest level for `coarse_unknowns` on the coarse mesh: they grow about
 /// eightfold per refinement (vertices and faces each do).
@@ -45,8 +54,9 @@ struct Case3dAdmission {
   std::optional<Case3dEstimate> estimate;  ///< set when its size is known before meshing
 };
 
-/// Reads the case, counts a builtin's or an msh text's coarse unknowns (no gmsh: a geo_file's
-/// are unknown until it is meshed) and checks the size against `options.limits`.
+/// Reads the case; reads an msh text's mesh (its problems at /mesh/msh, its groups against the
+/// boundary); counts a builtin's or that mesh's coarse unknowns (no gmsh: a geo_file's are
+/// unknown until it is meshed) and checks the size against `options.limits`.
 Case3dAdmission admit_case_3d(const nlohmann::json& j, const CaseReadOptions& options = {});
 
 }  // namespace fosls

@@ -74,37 +74,9 @@ void check_size(double coarse_unknowns, const Case3dSpec& spec, const CaseLimits
   if (!errors.empty()) throw CaseException(std::move(errors));
 }
 
-int group_index(const TetMesh& mesh, const std::string& name) {
-  const auto& names = mesh.group_names();
-  for (std::size_t g = 0; g < names.size(); ++g)
-    if (names[g] == name) return static_cast<int>(g);
-  return -1;
-}
-
-/// Step 3: every named group is one of the mesh's, and every face of a contact group faces its
-/// plane (the gap along the body normal is then finite everywhere).
+/// Step 3: every named group is one of the mesh's, and every contact face faces its plane.
 void check_groups(const Case3dSpec& spec, const TetMesh& mesh) {
-  std::vector<CaseError> errors;
-  for (const auto& [name, bc] : spec.boundary) {
-    const int g = group_index(mesh, name);
-    if (g < 0) {
-      errors.push_back(unknown_group_problem(name, mesh.group_names()));
-      continue;
-    }
-    if (bc.type != Condition3d::Type::kContact) continue;
-    for (int f = 0; f < mesh.num_faces(); ++f) {
-      if (mesh.face_group(f) != g || mesh.face_normal(f).dot(bc.plane_normal) < 0) continue;
-      const Point3 c = mesh.face_centroid(f);
-      std::ostringstream s;
-      s << "the face of group " << name << " at (" << c.x() << ", " << c.y() << ", " << c.z()
-        << ") does not face the plane (its outward normal is not against the plane's normal): "
-           "the gap is measured along the body normal, so every face of a contact group must "
-           "face the plane; check the normal's sign (from the plane into the body) or make the "
-           "contact group smaller";
-      errors.push_back({child_pointer(child_pointer("/boundary", name), "normal"), s.str()});
-      break;
-    }
-  }
+  std::vector<CaseError> errors = check_3d_groups(spec, mesh);
   if (!errors.empty()) throw CaseException(std::move(errors));
 }
 
@@ -117,7 +89,7 @@ TetProblemData problem_data(const Case3dSpec& spec, const TetMesh& mesh) {
       d.body_force[i] = [v = spec.body_force[i]](const Point3&) { return v; };
   d.groups.resize(mesh.group_names().size());
   for (const auto& [name, bc] : spec.boundary) {
-    TetProblemData::Group& group = d.groups[group_index(mesh, name)];
+    TetProblemData::Group& group = d.groups[tet_group_index(mesh, name)];
     if (bc.type == Condition3d::Type::kContact) {
       group.role = GroupRole::kContact;
       group.gap_along_normal = [plane = bc](const Point3& x, const Point3& n) {
@@ -138,7 +110,7 @@ Run3dOutput run_case_3d(const Case3dSpec& spec, const Run3dControl& control,
                         const CaseLimits& limits) {
   const auto t0 = Clock::now();
   // Before anything is built: a builtin of many cells or a large msh is refused at once.
-  if (const auto unknowns = coarse_3d_unknowns(spec.mesh)) check_size(*unknowns, spec, limits);
+  if (const auto unknowns = builtin_3d_unknowns(spec.mesh)) check_size(*unknowns, spec, limits);
   TetMesh coarse = coarse_mesh(spec.mesh);
   check_size(3.0 * (coarse.num_vertices() + coarse.num_faces()), spec, limits);
   TetHierarchy meshes = build_tet_hierarchy(std::move(coarse), spec.mesh.refinements);

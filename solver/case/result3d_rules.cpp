@@ -79,7 +79,7 @@ std::vector<FieldRule> solution3d_fields() {
           output_field("warning_details",
                        list_value(object_value(warning_rule()), "one per warning"), "",
                        "the warnings with their codes: no_contact, initial_penetration and the "
-                       "solver's own as in 2D (not_converged, rounding_level, "
+                       "solver's own as in 2D (not_converged, time_limit, rounding_level, "
                        "coarse_corrections_shortened)"),
           output_field("review_required", boolean_value(), "",
                        "a warning says the answer may be physically empty or wrong although it "

@@ -30,7 +30,7 @@ std::string path(std::int64_t id, const std::string& leaf = "") {
   return "/v1/jobs/" + std::to_string(id) + (leaf.empty() ? "" : "/" + leaf);
 }
 
-/// The pointers of a 422's errors.
+/// The pointers of a 422's errors; `detail` gets their details, joined.
 std::vector<std::string> refused_at(Service& svc, const json& body, std::string* detail = nullptr) {
   auto res = svc.post(body);
   std::vector<std::string> pointers;
@@ -40,8 +40,8 @@ std::vector<std::string> refused_at(Service& svc, const json& body, std::string*
   }
   const json problem = json::parse(res->body);  // kept: the loop reads into it
   for (const auto& e : problem["errors"]) {
-    pointers.push_back(e["pointer"]);
-    if (detail) *detail = e["detail"];
+    pointers.push_back(e.value("pointer", ""));
+    if (detail) *detail += e.value("detail", "") + "\n";
   }
   return pointers;
 }
@@ -97,18 +97,39 @@ TEST(Service3d, ACaseTooLargeOrNamingALocalFileIsRefusedByItsFieldBeforeItRuns) 
   std::string why;
   EXPECT_EQ(refused_at(svc, file, &why), std::vector<std::string>{"/mesh/msh_file"});
   EXPECT_NE(why.find("mesh.msh"), std::string::npos) << why;
-  // Refinement 3: about 639 000 unknowns, estimated above 20 s (260 µs per unknown).
+  // Refinement 3: about 639 000 unknowns, estimated above 20 s (260 µs per unknown); pdas
+  // would not fit either (161 s), so it is not offered.
+  why.clear();
   EXPECT_EQ(refused_at(svc, hertz_3d(3), &why), std::vector<std::string>{"/mesh/refinements"});
   EXPECT_NE(why.find("--max-job-seconds"), std::string::npos) << why;
-  // Refinement 3 with pdas: about 5 GB, above the 2 GiB a job may use (and the time).
+  EXPECT_EQ(why.find("solver.method"), std::string::npos) << why;
+  // Refinement 3 with pdas: about 4.8 GiB, above the 2 GiB a job may use, where mmg's 1.35 GiB fits
+  // (offered); and above the time, where mmg does not fit either (not offered).
   json pdas = hertz_3d(3);
   pdas["solver"] = {{"method", "pdas"}};
-  refused_at(svc, pdas, &why);
-  EXPECT_NE(why.find("or solver.method mmg"), std::string::npos) << why;
+  why.clear();
+  EXPECT_EQ(refused_at(svc, pdas, &why),
+            (std::vector<std::string>{"/mesh/refinements", "/mesh/refinements"}));
+  EXPECT_NE(why.find("or solver.method mmg (about 1.35 GiB)"), std::string::npos) << why;
+  EXPECT_EQ(why.find("solver.method", why.find("--max-job-seconds")), std::string::npos) << why;
   json bad = hertz_3d(1);
   bad["boundary"]["contact"]["normal"] = {0, 0, 0};
   bad["material"]["lambda"] = -1;
   EXPECT_EQ(refused_at(svc, bad).size(), 2u);  // every problem in one answer
+}
+
+TEST(Service3d, AnMshTextsProblemsAreFoundWhenTheCaseIsSubmitted) {
+  Service svc(1);
+  json c = {{"dimension", 3},
+            {"mesh", {{"msh", fosls::testing::one_tetrahedron_msh()}}},
+            {"material", {{"mu", 1}, {"lambda", 1}}},
+            {"boundary", {{"rest", {{"type", "dirichlet"}, {"displacement", {0, 0, 0}}}}}}};
+  json unknown_group = c;
+  unknown_group["boundary"]["side"] = {{"type", "neumann"}, {"traction", {0, 0, 0}}};
+  EXPECT_EQ(refused_at(svc, unknown_group), std::vector<std::string>{"/boundary/side"});
+  json no_tetrahedra = c;
+  no_tetrahedra["mesh"]["msh"] = "$MeshFormat\n4.1 0 8\n$EndMeshFormat\n";
+  EXPECT_EQ(refused_at(svc, no_tetrahedra), std::vector<std::string>{"/mesh/msh"});
 }
 
 TEST(Service3d, AProblemOnlyTheMeshShowsFailsTheJobNamingTheField) {
@@ -121,7 +142,7 @@ TEST(Service3d, AProblemOnlyTheMeshShowsFailsTheJobNamingTheField) {
 }
 
 TEST(Service3d, ARunning3dSolveIsCancelled) {
-  Service svc(1);
+  Service svc(1, {"--max-job-memory", "2G"});  // about 1.4 GB: admitted on any machine
   auto cli = svc.client();
   const auto id = svc.submit(hertz_3d(3));  // about a minute
   svc.wait_for(id, [](const json& j) {

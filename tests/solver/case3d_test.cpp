@@ -4,6 +4,7 @@
 
 #include <gtest/gtest.h>
 
+#include <atomic>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
@@ -241,6 +242,23 @@ TEST(Case3d, AnMshFileIsReadOnceWhenTheCaseIsRead) {
   EXPECT_EQ(run(inline_text)["tetrahedra"], 8);
   inline_text["mesh"]["msh"] = "$MeshFormat\n4.1 0 8\n$EndMeshFormat\n";  // no tetrahedra
   EXPECT_EQ(run_problem(inline_text), "/mesh/msh");
+}
+
+TEST(Case3d, ACancelStopsTheSolveAndLeavesNoResult) {
+  std::atomic<bool> cancel = false;
+  Run3dControl control;
+  control.cancel = &cancel;
+  control.want_vtu = true;
+  int seen = 0;
+  control.on_iteration = [&](const IterationRecord& r) {
+    seen = r.iteration;
+    if (r.iteration == 2) cancel = true;  // polled before the next iteration
+  };
+  const Run3dOutput out = run_case_3d(*read_case_3d(hertz_3d(1)).spec, control);
+  EXPECT_TRUE(out.cancelled);
+  EXPECT_EQ(seen, 2);
+  EXPECT_TRUE(out.result.is_null());
+  EXPECT_TRUE(out.vtu.empty());
 }
 
 }  // namespace

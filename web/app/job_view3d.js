@@ -69,10 +69,12 @@ export function renderSummary3d(job, view) {
   setDownloads(job);
 }
 
-/** The residual history and the pressure line (each chart pushed to view.charts). */
+/** The residual history (in view.charts) and the pressure line (view.lineChart, redrawn alone when θ changes). */
 export function drawCharts3d(view, plots, viewer) {
   for (const chart of view.charts) chart.destroy();
   view.charts = [];
+  view.lineChart?.destroy();
+  view.lineChart = null;
   const box = $('line-plot');
   box.innerHTML = '';
   box.dataset.points = '0';
@@ -111,7 +113,6 @@ export function drawLine(view, plots, viewer) {
     box.textContent = 'The line misses the contact faces.';
   } else if (plots) {
     view.lineChart = plots.linePlot(box, samples, { hertz: view.hertz });
-    view.charts.push(view.lineChart);
   }
   const h = view.hertz;
   const [t1, c] = [solid.frame.t1, solid.centre];
@@ -140,6 +141,10 @@ export function drawSurfaceView(view, viewer, { resetMagnification = false } = {
   const { surface, contact, frame, nContact } = view.solid;
   const coloured = field.compute(view.mesh, surface, { contact, normal: frame?.n });
   if (!coloured) {
+    // Not the previous job's colours on this job's surface: a blank view and colour bar.
+    viewer.setField(null);
+    for (const part of ['min', 'max', 'label']) $(`surface-legend-${part}`).textContent = '';
+    $('surface-legend-bar').style.background = 'none';
     caption.textContent = `The solution file has no ${field.label}${frame ? '' : ' (or the case no contact plane)'}.`;
     return;
   }

@@ -226,7 +226,8 @@ function clearView() {
 
 function destroyCharts() {
   for (const chart of state.view?.charts ?? []) chart.destroy();
-  if (state.view) state.view.charts = [];
+  state.view?.lineChart?.destroy();
+  if (state.view) Object.assign(state.view, { charts: [], lineChart: null });
   destroyLiveChart();
 }
 

@@ -91,7 +91,11 @@ export class SurfaceViewer extends CanvasView {
   draw_() {
     const canvas = this.canvas_;
     // Not laid out (the view is hidden): the ResizeObserver redraws when it is shown.
-    if (!this.surface_ || !this.field_ || canvas.clientWidth === 0 || canvas.clientHeight === 0) return;
+    if (!this.surface_ || canvas.clientWidth === 0 || canvas.clientHeight === 0) return;
+    if (!this.field_) {  // nothing to colour by: an empty view rather than a stale one
+      canvas.getContext('2d').clearRect(0, 0, canvas.width, canvas.height);
+      return;
+    }
     this.geometry_();
     const started = performance.now();
     const ratio = window.devicePixelRatio || 1;
