@@ -98,7 +98,7 @@ TEST(Service3d, ACaseTooLargeOrNamingALocalFileIsRefusedByItsFieldBeforeItRuns) 
   EXPECT_EQ(refused_at(svc, file, &why), std::vector<std::string>{"/mesh/msh_file"});
   EXPECT_NE(why.find("mesh.msh"), std::string::npos) << why;
   // Refinement 3: about 639 000 unknowns, estimated above 20 s (260 µs per unknown); pdas
-  // would not fit either (161 s), so it is not offered.
+  // would not fit either (193 s), so it is not offered.
   why.clear();
   EXPECT_EQ(refused_at(svc, hertz_3d(3), &why), std::vector<std::string>{"/mesh/refinements"});
   EXPECT_NE(why.find("--max-job-seconds"), std::string::npos) << why;

@@ -107,5 +107,22 @@ TEST(Cli3d, ABadCaseExitsTwoNamingTheFieldAndNoContactExitsFourWithReview) {
   EXPECT_NE(empty.err.find("REVIEW"), std::string::npos) << empty.err;
 }
 
+TEST(Cli3d, EstimateChecksA3dCaseAndPrintsEachMethodsMemoryAndTime) {
+  const std::string hertz = fosls_contact({"example", "hertz_3d"}).out;
+  const CliRun shipped = fosls_contact({"estimate", "-"}, hertz);
+  EXPECT_EQ(shipped.exit_code, 0) << shipped.err;
+  // 4 · 2³ Kuhn cubes of 6 tetrahedra, 13/6 · 3 unknowns per tetrahedron, × 8² refinements.
+  EXPECT_NE(shipped.out.find("unknowns: 79872 (estimated before meshing)"), std::string::npos)
+      << shipped.out;
+  EXPECT_NE(shipped.out.find("  mmg "), std::string::npos) << shipped.out;
+  EXPECT_NE(shipped.out.find("  pdas "), std::string::npos) << shipped.out;
+  json big = json::parse(hertz);
+  big["mesh"]["refinements"] = 4;  // about 5·10⁶ unknowns: 11 GB with mmg
+  const CliRun refused = fosls_contact({"estimate", "--max-memory", "4G", "-"}, big.dump());
+  EXPECT_EQ(refused.exit_code, 2);
+  EXPECT_NE(refused.err.find("error: /mesh/refinements: the solve needs about"), std::string::npos)
+      << refused.err;
+}
+
 }  // namespace
 }  // namespace fosls
