@@ -134,6 +134,7 @@ json case3d_result(const Case3dSpec& spec, const TetDiscretization& disc, const 
   add_warnings(r, contact_warnings(spec, mesh, c));
   add_warnings(r, result_warnings(report, spec.solver));  // 2D's: not_converged, rounding, …
   r["history"] = history_json(report.history);
+  r["solver_statistics"] = statistics_json(report);
   return r;
 }
 

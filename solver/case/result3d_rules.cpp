@@ -86,6 +86,9 @@ std::vector<FieldRule> solution3d_fields() {
                        "converged; fosls-contact solve then exits with code 4"),
           output_field("history", list_value(object_value(history_rule()), "one per iteration"), "",
                        "the initial iterate and every iteration, as in 2D"),
+          output_field("solver_statistics", object_value(statistics_rule()), "",
+                       "counts and times of the multilevel method's parts, as in 2D (the contact "
+                       "strip's exact solves in strip_s)"),
           output_field("timing", object_value(timing3d_rule()), "", "wall-clock times")};
 }
 

@@ -14,20 +14,6 @@ using nlohmann::json;
 
 std::string short_number(double v) { return sentence_number(v, 3); }
 
-json statistics_json(const SolverReport& report) {
-  const CycleStatistics& c = report.cycle;
-  return {{"nested_iterations", report.nested_iterations},
-          {"nested_s", report.nested_s},
-          {"accelerated_steps", report.accelerated_steps},
-          {"galerkin_rebuilds", c.galerkin_rebuilds},
-          {"safeguard_reductions", c.safeguard_reductions},
-          {"double_precision_smoothers", c.double_precision_smoothers},
-          {"galerkin_s", c.galerkin_s},
-          {"smoothing_s", c.smoothing_s},
-          {"strip_s", c.strip_s},
-          {"coarse_s", c.coarse_s}};
-}
-
 const char* obstacle_name(Obstacle::Kind kind) {
   switch (kind) {
     case Obstacle::Kind::kPlane:
@@ -173,6 +159,20 @@ json history_json(const std::vector<IterationRecord>& history) {
                  {"changed", r.changed},
                  {"time_s", r.time_s}});
   return h;
+}
+
+json statistics_json(const SolverReport& report) {
+  const CycleStatistics& c = report.cycle;
+  return {{"nested_iterations", report.nested_iterations},
+          {"nested_s", report.nested_s},
+          {"accelerated_steps", report.accelerated_steps},
+          {"galerkin_rebuilds", c.galerkin_rebuilds},
+          {"safeguard_reductions", c.safeguard_reductions},
+          {"double_precision_smoothers", c.double_precision_smoothers},
+          {"galerkin_s", c.galerkin_s},
+          {"smoothing_s", c.smoothing_s},
+          {"strip_s", c.strip_s},
+          {"coarse_s", c.coarse_s}};
 }
 
 std::vector<ResultWarning> result_warnings(const SolverReport& report,

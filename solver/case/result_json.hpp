@@ -47,6 +47,9 @@ std::string convergence_message(const SolverReport& report, const SolverOptions&
 /// The result's `history`: iteration 0 and every iteration after it.
 nlohmann::json history_json(const std::vector<IterationRecord>& history);
 
+/// The result's `solver_statistics`: counts and times of the multilevel method's parts.
+nlohmann::json statistics_json(const SolverReport& report);
+
 /// The solver's warnings of a result, each saying what happened and what it means.
 std::vector<ResultWarning> result_warnings(const SolverReport& report,
                                            const SolverOptions& options);

@@ -17,10 +17,12 @@ ValueRule converged_by_value();
 /// A number, or null where there is none (JSON has no NaN).
 ValueRule number_or_null();
 ObjectRulePtr object_rule(std::string title, std::string anchor, std::vector<FieldRule> fields);
-/// One entry of `history`, of `warning_details`, and the `material` echo: the same in 2D and 3D.
+/// One entry of `history`, of `warning_details`, the `material` echo and `solver_statistics`:
+/// the same in 2D and 3D.
 ObjectRulePtr history_rule();
 ObjectRulePtr warning_rule();
 ObjectRulePtr material_echo_rule();
+ObjectRulePtr statistics_rule();
 
 /// The `adaptivity` object of an adaptive run (result_refinement_rules.cpp).
 ObjectRulePtr adaptivity_result_rule();

@@ -62,12 +62,6 @@ ObjectRulePtr material_echo_rule() {
        output_field("lambda", one_of_value({number_value(), choice_value({"inf"})}, "λ"), "S",
                     "Lamé parameter λ, \"inf\" when incompressible")});
 }
-}  // namespace result_parts
-
-namespace {
-
-using namespace result_parts;
-
 ObjectRulePtr statistics_rule() {
   return object_rule(
       "the solver statistics", "solver_statistics",
@@ -91,6 +85,11 @@ ObjectRulePtr statistics_rule() {
        output_field("strip_s", number(), "s", "time of the contact-strip solves"),
        output_field("coarse_s", number(), "s", "time of the coarsest-level solves")});
 }
+}  // namespace result_parts
+
+namespace {
+
+using namespace result_parts;
 
 ObjectRulePtr zone_rule() {
   ValueRule where = number_or_null();
