@@ -8,6 +8,7 @@
 #include "case/early_group_check.hpp"
 #include "case/job_time.hpp"
 #include "case/memory_size.hpp"
+#include "case/solver_methods.hpp"
 #include "mesh/mesh_error.hpp"
 #include "mesh/tet_msh_reader.hpp"
 
@@ -24,31 +25,21 @@ double builtin_coarse_unknowns(const Mesh3dSpec& m) {
   return 3.0 * (1.0 / 6.0 + 2.0) * 6.0 * cubes;
 }
 
-double mesh_unknowns(const TetMesh& mesh) { return 3.0 * (mesh.num_vertices() + mesh.num_faces()); }
-
-std::string mesh_source_pointer(const Mesh3dSpec& m) {
-  return m.path.empty() ? "/mesh/msh" : "/mesh/msh_file";
-}
-
 /// The text's mesh, or its problems at the mesh source's pointer.
 std::variant<TetMesh, std::vector<CaseError>> msh_mesh(const Mesh3dSpec& m) {
   try {
     return tet_mesh_from_msh(m.msh_text);
   } catch (const MeshError& e) {
     std::vector<CaseError> errors;
-    for (const auto& p : e.problems()) errors.push_back({mesh_source_pointer(m), p.detail});
+    for (const auto& p : e.problems()) errors.push_back({mesh3d_source_pointer(m), p.detail});
     return errors;
   }
 }
 
-/// A budget's problem names the other method when that one fits the same budget.
-std::string other_method_advice(SolverMethod method, bool fits_other) {
-  if (!fits_other) return "";
-  return method == SolverMethod::kPdas ? ", or solver.method mmg" : ", or solver.method pdas";
-}
-
-std::string method_name(SolverMethod method) {
-  return method == SolverMethod::kPdas ? "pdas" : "mmg";
+/// A budget's problem names the other method, with its figure, when that one fits the budget.
+std::string other_method_advice(SolverMethod other, bool fits, const std::string& figure) {
+  if (!fits) return "";
+  return std::string(", or solver.method ") + method_info(other).name + " (about " + figure + ")";
 }
 
 }  // namespace
@@ -107,6 +98,10 @@ std::vector<CaseError> check_3d_groups(const Case3dSpec& spec, const TetMesh& me
   return errors;
 }
 
+double tet_mesh_unknowns(const TetMesh& mesh) {
+  return 3.0 * (mesh.num_vertices() + mesh.num_faces());
+}
+
 double finest_3d_unknowns(double coarse_unknowns, const Mesh3dSpec& mesh) {
   return coarse_unknowns * std::pow(8.0, mesh.refinements);
 }
@@ -120,7 +115,7 @@ std::vector<CaseError> check_3d_size(double unknowns, const Case3dSpec& spec,
       method == SolverMethod::kPdas ? SolverMethod::kMmg : SolverMethod::kPdas;
   const Case3dEstimate e_other = estimate_3d_solve(unknowns, other);
   std::ostringstream size;
-  size << "about " << std::llround(unknowns) << " unknowns with " << method_name(method);
+  size << "about " << std::llround(unknowns) << " unknowns with " << method_info(method).name;
   std::vector<CaseError> errors;
   if (unknowns > static_cast<double>(limits.max_dofs)) {
     std::ostringstream s;
@@ -134,18 +129,17 @@ std::vector<CaseError> check_3d_size(double unknowns, const Case3dSpec& spec,
     s << "the solve needs about " << format_bytes(e.bytes) << " (" << size.str()
       << "), more than the " << format_bytes(limits.max_memory_bytes) << " "
       << limits.memory_budget_name << fix
-      << other_method_advice(method, e_other.bytes <= limits.max_memory_bytes);
-    if (e_other.bytes <= limits.max_memory_bytes)
-      s << " (about " << format_bytes(e_other.bytes) << ")";
+      << other_method_advice(other, e_other.bytes <= limits.max_memory_bytes,
+                             format_bytes(e_other.bytes));
     errors.push_back({"/mesh/refinements", s.str()});
   }
   if (limits.max_seconds > 0 && e.seconds > limits.max_seconds) {
     std::ostringstream s;
     s << "the case needs about " << budget_text(std::ceil(e.seconds)) << " (" << size.str()
       << "), more than the " << budget_text(limits.max_seconds) << " " << limits.time_budget_name
-      << fix << other_method_advice(method, e_other.seconds <= limits.max_seconds);
-    if (e_other.seconds <= limits.max_seconds)
-      s << " (about " << budget_text(std::ceil(e_other.seconds)) << ")";
+      << fix
+      << other_method_advice(other, e_other.seconds <= limits.max_seconds,
+                             budget_text(std::ceil(e_other.seconds)));
     errors.push_back({"/mesh/refinements", s.str()});
   }
   return errors;
@@ -167,7 +161,7 @@ Case3dAdmission admit_case_3d(const nlohmann::json& j, const CaseReadOptions& op
     const TetMesh& m = std::get<TetMesh>(mesh);
     admission.errors = check_3d_groups(spec, m);
     if (!admission.errors.empty()) return admission;
-    coarse = mesh_unknowns(m);
+    coarse = tet_mesh_unknowns(m);
   }
   if (coarse) {
     admission.estimate =

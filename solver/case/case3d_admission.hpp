@@ -30,6 +30,9 @@ Case3dEstimate estimate_3d_solve(double unknowns, SolverMethod method);
 /// msh text or a geo_file (counted once read or meshed).
 std::optional<double> builtin_3d_unknowns(const Mesh3dSpec& mesh);
 
+/// A built mesh's unknowns: three per vertex (u) and three per face (the stress rows' fluxes).
+double tet_mesh_unknowns(const TetMesh& mesh);
+
 /// The mesh's index of the boundary group `name`, −1 when it has none of that name.
 int tet_group_index(const TetMesh& mesh, const std::string& name);
 

@@ -8,6 +8,7 @@
 
 #include "case/result_json.hpp"
 #include "case/result_warnings.hpp"
+#include "case/solver_methods.hpp"
 
 namespace fosls {
 
@@ -108,7 +109,7 @@ json case3d_result(const Case3dSpec& spec, const TetDiscretization& disc, const 
   r["dimension"] = 3;
   r["converged"] = report.converged;
   r["iterations"] = report.iterations;
-  r["method"] = spec.solver.method == SolverMethod::kPdas ? "pdas" : "mmg";
+  r["method"] = method_info(spec.solver.method).name;
   r["tolerance"] = spec.solver.tolerance;
   r["stop_reason"] = stop_reason_name(stop_reason(report));
   r["cancelled"] = report.cancelled;

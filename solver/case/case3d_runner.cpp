@@ -5,7 +5,6 @@
 #include "case/case3d_runner.hpp"
 
 #include <chrono>
-#include <sstream>
 
 #include "assembly/tet_hierarchy.hpp"
 #include "case/case3d_admission.hpp"
@@ -30,17 +29,6 @@ double seconds_since(Clock::time_point t0) {
   return std::chrono::duration<double>(Clock::now() - t0).count();
 }
 
-std::string mesh_pointer(const Mesh3dSpec& m) {
-  switch (m.kind) {
-    case Mesh3dSpec::Kind::kMsh:
-      return m.path.empty() ? "/mesh/msh" : "/mesh/msh_file";
-    case Mesh3dSpec::Kind::kGeoFile:
-      return "/mesh/geo_file";
-    default:
-      return "/mesh/builtin";
-  }
-}
-
 /// Step 1: the coarse mesh from the case's source; its problems at the source's pointer.
 TetMesh coarse_mesh(const Mesh3dSpec& m) {
   try {
@@ -58,13 +46,14 @@ TetMesh coarse_mesh(const Mesh3dSpec& m) {
     std::vector<CaseError> errors;
     for (const auto& p : e.problems())
       errors.push_back(
-          {p.field == "/size" ? std::string("/mesh/size") : mesh_pointer(m), p.detail});
+          {p.field == "/size" ? std::string("/mesh/size") : mesh3d_source_pointer(m), p.detail});
     throw CaseException(std::move(errors));
   } catch (const std::invalid_argument& e) {  // the half ball's grading folds a tetrahedron
-    throw CaseException(mesh_pointer(m), std::string("these parameters give no valid mesh (") +
-                                             e.what() + "); use a smaller grading or fewer cells");
+    throw CaseException(mesh3d_source_pointer(m),
+                        std::string("these parameters give no valid mesh (") + e.what() +
+                            "); use a smaller grading or fewer cells");
   }
-  throw CaseException(mesh_pointer(m), "unknown mesh source");
+  throw CaseException(mesh3d_source_pointer(m), "unknown mesh source");
 }
 
 /// Refuses refinements whose finest level would exceed the limits (case3d_admission.hpp).
@@ -112,7 +101,7 @@ Run3dOutput run_case_3d(const Case3dSpec& spec, const Run3dControl& control,
   // Before anything is built: a builtin of many cells or a large msh is refused at once.
   if (const auto unknowns = builtin_3d_unknowns(spec.mesh)) check_size(*unknowns, spec, limits);
   TetMesh coarse = coarse_mesh(spec.mesh);
-  check_size(3.0 * (coarse.num_vertices() + coarse.num_faces()), spec, limits);
+  check_size(tet_mesh_unknowns(coarse), spec, limits);
   TetHierarchy meshes = build_tet_hierarchy(std::move(coarse), spec.mesh.refinements);
   check_groups(spec, meshes.finest());
   const double mesh_s = seconds_since(t0);

@@ -24,6 +24,18 @@ struct Mesh3dSpec {
   int refinements = 0;                   ///< levels = refinements + 1
 };
 
+/// The case field that gave the mesh: where a problem of the mesh source is reported.
+inline std::string mesh3d_source_pointer(const Mesh3dSpec& m) {
+  switch (m.kind) {
+    case Mesh3dSpec::Kind::kMsh:
+      return m.path.empty() ? "/mesh/msh" : "/mesh/msh_file";
+    case Mesh3dSpec::Kind::kGeoFile:
+      return "/mesh/geo_file";
+    default:
+      return "/mesh/builtin";
+  }
+}
+
 struct Condition3d {
   enum class Type { kDirichlet, kNeumann, kContact };
   Type type = Type::kNeumann;

@@ -42,8 +42,8 @@ int run_estimate_3d(const nlohmann::json& j, const CaseReadOptions& options) {
                "cases, docs/service.md \"3D jobs\"):\n";
   for (const SolverMethod m : {SolverMethod::kMmg, SolverMethod::kPdas}) {
     const Case3dEstimate e = estimate_3d_solve(admission.estimate->unknowns, m);
-    std::printf("  %-6s %8.0f MiB  %s\n", m == SolverMethod::kMmg ? "mmg" : "pdas",
-                e.bytes / (1 << 20), describe_seconds(e.seconds).c_str());
+    std::printf("  %-6s %8.0f MiB  %s\n", method_info(m).name, e.bytes / (1 << 20),
+                describe_seconds(e.seconds).c_str());
   }
   return kExitOk;
 }
