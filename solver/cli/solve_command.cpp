@@ -13,6 +13,7 @@
 #include <string>
 #include <vector>
 
+#include "case/case3d_admission.hpp"
 #include "case/case3d_reader.hpp"
 #include "case/case3d_runner.hpp"
 #include "case/case_admission.hpp"
@@ -108,7 +109,10 @@ bool output_folder_ok(const std::string& option, const std::string& path) {
 /// with --quiet.
 int report(const nlohmann::json& r, const SolveOptions& o) {
   for (const auto& w : r["warnings"]) std::cerr << "warning: " << w.get<std::string>() << '\n';
-  if (!o.quiet) print_result_summary(std::cerr, r);
+  if (!o.quiet) {
+    const bool solid = r.value("dimension", 2) == 3;
+    (solid ? print_result_summary_3d : print_result_summary)(std::cerr, r);
+  }
   return result_exit_code(r);
 }
 
@@ -141,10 +145,11 @@ std::optional<int> write_outputs(const nlohmann::json& result, const std::string
   return std::nullopt;
 }
 
-/// A 3D case (case/case3d_reader.hpp): read, solve, write; its summary in three lines.
+/// A 3D case (case/case3d_reader.hpp): admitted by the rule estimate and the service use,
+/// solved, written; its summary in three lines.
 int run_solve_3d(const nlohmann::json& case_json, const SolveOptions& o,
                  const CaseReadOptions& read_options, ProgressLine& progress) {
-  const auto read = read_case_3d(case_json, read_options);
+  const auto read = admit_case_3d(case_json, read_options);
   if (!read.errors.empty()) {
     print_errors(read.errors);
     return kExitBadInput;
@@ -155,11 +160,8 @@ int run_solve_3d(const nlohmann::json& case_json, const SolveOptions& o,
   control.on_iteration = [&progress](const IterationRecord& r) { progress.update(r); };
   const Run3dOutput output = run_case_3d(*read.spec, control, read_options.limits);
   progress.finish();
-  const nlohmann::json& r = output.result;
-  if (const auto failed = write_outputs(r, output.vtu, o)) return *failed;
-  for (const auto& w : r["warnings"]) std::cerr << "warning: " << w.get<std::string>() << '\n';
-  if (!o.quiet) print_result_summary_3d(std::cerr, r);
-  return result_exit_code(r);
+  if (const auto failed = write_outputs(output.result, output.vtu, o)) return *failed;
+  return report(output.result, o);
 }
 
 int run_solve(const SolveOptions& o) {
