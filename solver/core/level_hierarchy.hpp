@@ -28,6 +28,10 @@ struct ContactLink {
   std::array<std::vector<std::pair<int, double>>, 2> flux_moves;
 };
 
+/// How an exact block solver factorises the block restricted to a free set
+/// (solvers/free_set_solver.hpp): anew per free set, or once ordered with held rows.
+enum class BlockFactorization { reduced, held_rows };
+
 struct Level {
   int num_dofs = 0;
   /// P_j : level j−1 → level j (empty on the coarsest level).
@@ -41,6 +45,8 @@ struct Level {
   std::vector<ContactLink> links;
   /// DOFs of the triangles touching the contact boundary: the block of the strip smoother.
   std::vector<int> contact_strip;
+  /// 2D's strips are thin and keep `reduced`; 3D's are slabs (assembly/tet_hierarchy.cpp).
+  BlockFactorization strip_factorization = BlockFactorization::reduced;
 };
 
 /// Levels coarsest first; the finest level is the one of the BoxQp.

@@ -1,12 +1,11 @@
 #include "solvers/exact_box_qp.hpp"
 
-#include <Eigen/SparseCholesky>
 #include <algorithm>
 #include <cmath>
 #include <stdexcept>
 #include <vector>
 
-#include "core/indefinite_system.hpp"
+#include "solvers/free_set_solver.hpp"
 
 namespace fosls {
 
@@ -102,65 +101,30 @@ bool solve_dense_box_qp(const Eigen::MatrixXd& A, const Vector& r, const Vector&
   return definite;
 }
 
-struct SparseBoxQpSolver::Factor {
-  Eigen::SimplicialLDLT<SparseMatrix> ldlt;
-  std::vector<int> free;  ///< the free set `ldlt` factorises (cache of the last one)
-};
-
-SparseBoxQpSolver::SparseBoxQpSolver(const SparseMatrix& A)
+SparseBoxQpSolver::SparseBoxQpSolver(const SparseMatrix& A, BlockFactorization factorization)
     : A_(A),
       diagonal_(A.diagonal()),
-      full_(std::make_unique<Factor>()),
-      last_(std::make_unique<Factor>()) {
-  full_->ldlt.compute(A_);
-  bool ok = full_->ldlt.info() == Eigen::Success;
-  if (ok)
-    for (int i = 0; i < full_->ldlt.vectorD().size(); ++i) ok &= full_->ldlt.vectorD()[i] > 0;
-  if (!ok) throw IndefiniteSystemError("the coarse-level matrix is not positive definite");
+      free_set_(FreeSetSolver::make(A_, factorization)),
+      warm_start_(factorization == BlockFactorization::held_rows) {}
+
+void SparseBoxQpSolver::start_from_settled(const Vector& lo, const Vector& hi,
+                                           std::vector<signed char>& state) const {
+  for (int i = 0; i < static_cast<int>(state.size()); ++i) {
+    const signed char s = settled_[i];
+    if (lo[i] == hi[i])
+      state[i] = 2;
+    else if ((s == 1 && is_bounded_above(hi[i])) || (s == -1 && is_bounded_below(lo[i])))
+      state[i] = s;
+    else
+      state[i] = 0;
+  }
 }
 
 SparseBoxQpSolver::~SparseBoxQpSolver() = default;
 
 bool SparseBoxQpSolver::solve_free(const std::vector<signed char>& state, const Vector& r,
                                    const Vector& d, Vector& y) {
-  const int n = static_cast<int>(r.size());
-  std::vector<int> free;
-  std::vector<int> index(n, -1);
-  for (int i = 0; i < n; ++i)
-    if (state[i] == 0) index[i] = static_cast<int>(free.size()), free.push_back(i);
-  y = d;
-  if (free.empty()) return true;
-  if (static_cast<int>(free.size()) == n) {
-    y = full_->ldlt.solve(r);
-    return true;
-  }
-  // rhs = r_F − A_FW d_W, and the free block.
-  Vector ad = Vector::Zero(n);
-  for (int j = 0; j < n; ++j)
-    if (state[j] != 0 && d[j] != 0.0)
-      for (SparseMatrix::InnerIterator it(A_, j); it; ++it) ad[it.row()] += it.value() * d[j];
-  const int m = static_cast<int>(free.size());
-  Vector rhs(m);
-  for (int a = 0; a < m; ++a) rhs[a] = r[free[a]] - ad[free[a]];
-  // The same free set comes back call after call once the active set has settled (the
-  // linear phase): keep the factorisation of the last one.
-  if (last_->free != free) {
-    std::vector<Eigen::Triplet<double>> t;
-    for (int a = 0; a < m; ++a)
-      for (SparseMatrix::InnerIterator it(A_, free[a]); it; ++it)
-        if (index[it.row()] >= 0) t.emplace_back(index[it.row()], a, it.value());
-    SparseMatrix aff(m, m);
-    aff.setFromTriplets(t.begin(), t.end());
-    last_->ldlt.compute(aff);
-    last_->free = free;
-    if (last_->ldlt.info() != Eigen::Success) {
-      last_->free.clear();
-      return false;
-    }
-  }
-  Vector sol = last_->ldlt.solve(rhs);
-  for (int a = 0; a < m; ++a) y[free[a]] = sol[a];
-  return true;
+  return free_set_->solve(state, r, d, y);
 }
 
 bool SparseBoxQpSolver::solve_primal_dual(const Vector& r, const Vector& lo, const Vector& hi,
@@ -186,7 +150,10 @@ bool SparseBoxQpSolver::solve_primal_dual(const Vector& r, const Vector& lo, con
         s[i] = 0;
     }
   };
-  active_sets(state);
+  if (warm_start_ && static_cast<int>(settled_.size()) == n)
+    start_from_settled(lo, hi, state);
+  else
+    active_sets(state);
   for (int step = 0; step < kMaxSteps; ++step) {
     ++primal_dual_steps_;
     for (int i = 0; i < n; ++i) d[i] = state[i] == 1 ? hi[i] : state[i] == 0 ? 0.0 : lo[i];
@@ -202,6 +169,7 @@ bool SparseBoxQpSolver::solve_primal_dual(const Vector& r, const Vector& lo, con
     // bounds up to μ_i / a_ii, which is rounding. Clip that rounding, and check in floating
     // point what the cycle relies on before trusting the result.
     clip(delta, lo, hi);
+    settled_ = state;
     const double energy = 0.5 * delta.dot(A_ * delta) - r.dot(delta);
     return energy <= 0.0;
   }

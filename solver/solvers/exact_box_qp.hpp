@@ -11,8 +11,11 @@
 #include <memory>
 
 #include "core/box_qp.hpp"
+#include "core/level_hierarchy.hpp"
 
 namespace fosls {
+
+class FreeSetSolver;
 
 /// Dense version for the vertex patches of the patch smoother. Returns false when A restricted
 /// to the free set is not positive definite (weights that make the functional indefinite).
@@ -21,8 +24,8 @@ bool solve_dense_box_qp(const Eigen::MatrixXd& A, const Vector& r, const Vector&
 
 /// Sparse version for the coarsest level of the multilevel cycle and the block of the
 /// contact-strip smoother. The factorisation of the whole matrix is computed once, and that of
-/// the last free set is kept while the free set does not change. Not thread-safe: one solver
-/// per cycle or smoother.
+/// the last free set is kept while the free set does not change (solvers/free_set_solver.hpp). Not
+/// thread-safe: one solver per cycle or smoother.
 ///
 /// The primal method factorises once per bound it meets, which from δ = 0 on a large coarsest
 /// level with many contact bounds is most of a solve (docs/performance.md, "Measurements behind
@@ -33,8 +36,10 @@ bool solve_dense_box_qp(const Eigen::MatrixXd& A, const Vector& r, const Vector&
 /// cycle) or the check fails in rounding does the primal method run, from δ = 0 as before.
 class SparseBoxQpSolver {
  public:
-  /// Throws IndefiniteSystemError when A is not positive definite.
-  explicit SparseBoxQpSolver(const SparseMatrix& A);
+  /// Throws IndefiniteSystemError when A is not positive definite. `factorization`: how the
+  /// free sets are solved (solvers/free_set_solver.hpp).
+  explicit SparseBoxQpSolver(const SparseMatrix& A,
+                             BlockFactorization factorization = BlockFactorization::reduced);
   ~SparseBoxQpSolver();
   /// δ = argmin, feasible; returns false if the iteration cap was hit (δ is still a feasible
   /// point with J(δ) ≤ J(0)).
@@ -52,11 +57,17 @@ class SparseBoxQpSolver {
   /// The primal–dual attempt; true with δ the exact minimiser (checked), false to fall back.
   bool solve_primal_dual(const Vector& r, const Vector& lo, const Vector& hi, Vector& delta);
 
+  /// The last settled active set, where its bounds still exist, as the first primal–dual step's.
+  void start_from_settled(const Vector& lo, const Vector& hi,
+                          std::vector<signed char>& state) const;
+
   SparseMatrix A_;
   Vector diagonal_;  ///< A's diagonal: the primal–dual steps' scale of each DOF
-  struct Factor;
-  std::unique_ptr<Factor> full_;
-  std::unique_ptr<Factor> last_;
+  std::unique_ptr<FreeSetSolver> free_set_;
+  /// Start from the last settled active set, whose factor the free-set solver still holds (with
+  /// held rows: the 3D strip), instead of guessing it from δ = 0.
+  bool warm_start_ = false;
+  std::vector<signed char> settled_;
   int primal_dual_steps_ = 0;
   int solved_primal_dual_ = 0;
 };

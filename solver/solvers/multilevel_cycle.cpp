@@ -82,7 +82,7 @@ void MultilevelCycle::make_smoothers(int j) {
   if (s.smoother->double_precision_factors()) ++stats_.double_precision_smoothers;
   s.strip.reset();
   if (options_.strip && !level.contact_strip.empty())
-    s.strip = std::make_unique<StripSmoother>(a, level.contact_strip);
+    s.strip = std::make_unique<StripSmoother>(a, level.contact_strip, level.strip_factorization);
 }
 
 void MultilevelCycle::smooth_level(int j, Vector& c, Vector& r, const Vector& lo, const Vector& hi,

@@ -6,7 +6,8 @@
 
 namespace fosls {
 
-StripSmoother::StripSmoother(const SparseMatrix& A, std::vector<int> strip)
+StripSmoother::StripSmoother(const SparseMatrix& A, std::vector<int> strip,
+                             BlockFactorization factorization)
     : A_(A), strip_(std::move(strip)) {
   std::vector<int> local(A.rows(), -1);
   for (std::size_t a = 0; a < strip_.size(); ++a) local[strip_[a]] = static_cast<int>(a);
@@ -16,7 +17,7 @@ StripSmoother::StripSmoother(const SparseMatrix& A, std::vector<int> strip)
       if (int b = local[it.row()]; b >= 0) t.emplace_back(b, static_cast<int>(a), it.value());
   SparseMatrix sub(strip_.size(), strip_.size());
   sub.setFromTriplets(t.begin(), t.end());
-  solver_ = std::make_unique<SparseBoxQpSolver>(sub);
+  solver_ = std::make_unique<SparseBoxQpSolver>(sub, factorization);
 }
 
 StripSmoother::~StripSmoother() = default;

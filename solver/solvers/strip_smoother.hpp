@@ -9,6 +9,7 @@
 #include <memory>
 #include <vector>
 
+#include "core/level_hierarchy.hpp"
 #include "solvers/smoother.hpp"
 
 namespace fosls {
@@ -18,7 +19,7 @@ class SparseBoxQpSolver;
 class StripSmoother : public Smoother {
  public:
   /// Throws IndefiniteSystemError when the strip's matrix is not positive definite.
-  StripSmoother(const SparseMatrix& A, std::vector<int> strip);
+  StripSmoother(const SparseMatrix& A, std::vector<int> strip, BlockFactorization factorization);
   ~StripSmoother() override;
   /// The exact solve on the strip (the direction plays no part). The QP solver keeps the
   /// factorisation of the last free set: a cache, which changes no result.

@@ -26,14 +26,18 @@ TEST(DenseBoxQp, MatchesEnumerationOfActiveSets) {
   }
 }
 
-TEST(SparseBoxQp, MatchesEnumerationOfActiveSets) {
+// Both ways of solving the free sets (solvers/free_set_solver.hpp); held rows also start the
+// primal–dual steps from the last settled active set.
+class SparseBoxQp : public ::testing::TestWithParam<BlockFactorization> {};
+
+TEST_P(SparseBoxQp, MatchesEnumerationOfActiveSets) {
   // Here every solve ends by primal–dual steps whose active sets settled; the fallback to the
   // primal method is checked by the next test.
   std::mt19937 rng(11);
   int by_primal_dual = 0, by_primal = 0;
   for (int trial = 0; trial < 300; ++trial) {
     const RandomBoxQp p = testing::random_box_qp(rng, 1 + trial % 7);
-    SparseBoxQpSolver solver(p.A);
+    SparseBoxQpSolver solver(p.A, GetParam());
     Vector delta;
     EXPECT_TRUE(solver.solve(p.r, p.lo, p.hi, delta));
     (solver.solved_primal_dual() == 1 ? by_primal_dual : by_primal) += 1;
@@ -46,7 +50,7 @@ TEST(SparseBoxQp, MatchesEnumerationOfActiveSets) {
   EXPECT_GT(by_primal_dual, 150);
 }
 
-TEST(SparseBoxQp, FallsBackToThePrimalMethodWhenPrimalDualStepsCycle) {
+TEST_P(SparseBoxQp, FallsBackToThePrimalMethodWhenPrimalDualStepsCycle) {
   // An SPD matrix on which the primal–dual active sets cycle (found by a search over random
   // 3 × 3 problems): the solve must still end at the exact minimiser, by the primal method.
   Eigen::MatrixXd a(3, 3);
@@ -58,7 +62,7 @@ TEST(SparseBoxQp, FallsBackToThePrimalMethodWhenPrimalDualStepsCycle) {
   r << -0.14216403090123211, -0.8310339591200061, 0.49867660991367335;
   lo << -0.95977563233322127, -0.5304480608255786, -0.92528623665586618;
   hi << 0.077530391687385222, 0.39716859109242436, 0.071391235607463827;
-  SparseBoxQpSolver solver(sparse);
+  SparseBoxQpSolver solver(sparse, GetParam());
   Vector delta;
   EXPECT_TRUE(solver.solve(r, lo, hi, delta));
   EXPECT_EQ(solver.solved_primal_dual(), 0);
@@ -68,23 +72,54 @@ TEST(SparseBoxQp, FallsBackToThePrimalMethodWhenPrimalDualStepsCycle) {
   EXPECT_TRUE(testing::within(delta, lo, hi));
 }
 
-TEST(SparseBoxQp, ReusesItsFactorisationAcrossCallsWithoutChangingTheAnswer) {
-  // The solver keeps the factorisation of the last free set: solving several right-hand sides
-  // in a row, in both orders, must give what a fresh solver gives.
+TEST_P(SparseBoxQp, ReusesItsFactorisationAcrossCallsWithoutChangingTheAnswer) {
+  // The solver keeps the factorisation of the last free set (and, with held rows, starts from the
+  // last settled active set): solving several right-hand sides in a row, in both orders, must
+  // give what a fresh solver gives, and the exact minimiser.
   std::mt19937 rng(3);
   const RandomBoxQp p = testing::random_box_qp(rng, 7);
   std::vector<Vector> rhs;
   for (int k = 0; k < 6; ++k) rhs.push_back(testing::random_box_qp(rng, 7).r);
-  SparseBoxQpSolver reused(p.A);
+  SparseBoxQpSolver reused(p.A, GetParam());
   for (int pass = 0; pass < 2; ++pass)
     for (int k = 0; k < 6; ++k) {
       const Vector& r = rhs[pass == 0 ? k : 5 - k];
       Vector a, b;
       reused.solve(r, p.lo, p.hi, a);
-      SparseBoxQpSolver(p.A).solve(r, p.lo, p.hi, b);
+      SparseBoxQpSolver(p.A, GetParam()).solve(r, p.lo, p.hi, b);
       EXPECT_LE((a - b).norm(), 1e-12 * (1.0 + b.norm()));
+      const Vector best = testing::enumerate_box_qp(p.A, r, p.lo, p.hi);
+      EXPECT_LE((a - best).norm(), 1e-10 * (1.0 + best.norm()));
     }
 }
+
+TEST(SparseBoxQpHeldRows, StartsFromTheLastSettledActiveSet) {
+  // Solving the same problem again: the settled active set of the first solve is the answer's,
+  // so the second takes one primal–dual step (with the factor it already has).
+  std::mt19937 rng(5);
+  int repeated = 0;
+  for (int trial = 0; trial < 50; ++trial) {
+    const RandomBoxQp p = testing::random_box_qp(rng, 2 + trial % 6);
+    SparseBoxQpSolver solver(p.A, BlockFactorization::held_rows);
+    Vector first, second;
+    solver.solve(p.r, p.lo, p.hi, first);
+    if (solver.solved_primal_dual() != 1) continue;
+    const int steps = solver.primal_dual_steps();
+    solver.solve(p.r, p.lo, p.hi, second);
+    EXPECT_EQ(solver.primal_dual_steps(), steps + 1) << "trial " << trial;
+    EXPECT_LE((first - second).norm(), 1e-12 * (1.0 + first.norm())) << "trial " << trial;
+    ++repeated;
+  }
+  EXPECT_GT(repeated, 40);
+}
+
+INSTANTIATE_TEST_SUITE_P(Factorizations, SparseBoxQp,
+                         ::testing::Values(BlockFactorization::reduced,
+                                           BlockFactorization::held_rows),
+                         [](const auto& info) {
+                           return info.param == BlockFactorization::reduced ? "reduced"
+                                                                            : "held_rows";
+                         });
 
 TEST(DenseBoxQp, ReportsAnIndefiniteMatrix) {
   Eigen::MatrixXd a(2, 2);

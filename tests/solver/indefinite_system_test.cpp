@@ -24,7 +24,8 @@ SparseMatrix saddle() {
 TEST(IndefiniteSystem, SparseQpSolverAndSmoothersThrowIt) {
   const SparseMatrix a = saddle();
   EXPECT_THROW(SparseBoxQpSolver{a}, IndefiniteSystemError);
-  EXPECT_THROW(StripSmoother(a, {0, 1}), IndefiniteSystemError);
+  EXPECT_THROW(StripSmoother(a, {0, 1}, BlockFactorization::reduced), IndefiniteSystemError);
+  EXPECT_THROW(StripSmoother(a, {0, 1}, BlockFactorization::held_rows), IndefiniteSystemError);
   const std::vector<std::vector<int>> patches = {{0, 1}};
   EXPECT_THROW(PatchSmoother(a, patches), IndefiniteSystemError);
 }
