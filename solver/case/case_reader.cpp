@@ -119,9 +119,9 @@ CaseReadResult read_case(const nlohmann::json& j, const CaseReadOptions& options
   if (is_3d_case(j)) {
     result.errors.push_back(
         {"/dimension",
-         "a 3D case is solved by fosls-contact solve and by the service and checked by "
-         "fosls-contact estimate (its own format and reader, docs/case-format.md, \"3D "
-         "cases\"); bench takes 2D cases"});
+         "a 3D case is solved by fosls-contact solve and bench and by the service and checked "
+         "by fosls-contact estimate (its own format and reader, docs/case-format.md, \"3D "
+         "cases\")"});
     return result;
   }
   RuleChecker checker(options);

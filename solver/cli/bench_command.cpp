@@ -15,6 +15,9 @@
 #include <optional>
 #include <sstream>
 
+#include "case/case3d_admission.hpp"
+#include "case/case3d_reader.hpp"
+#include "case/case3d_runner.hpp"
 #include "case/case_admission.hpp"
 #include "case/case_runner.hpp"
 #include "case/memory_size.hpp"
@@ -97,6 +100,58 @@ extern "C" void openblas_set_num_threads(int) __attribute__((weak));
 namespace fosls {
 namespace {
 
+/// The columns of a row that 2D's and 3D's results share.
+nlohmann::json common_row(const nlohmann::json& r, double setup_s, double solve_s) {
+  return {{"dofs", r["dofs"]},
+          {"levels", r["levels"]},
+          {"iterations", r["iterations"]},
+          {"converged", r["converged"]},
+          {"rate", r["asymptotic_rate"]},
+          {"setup_s", setup_s},
+          {"solve_s", solve_s},
+          {"total_s", r["timing"]["total_s"]},
+          {"threads", omp_get_max_threads()},
+          // The physical answer per level, so that a mesh-convergence study is one command.
+          {"force", r["contact"]["force"]},
+          {"estimator", r["functional"]["estimator"]}};
+}
+
+/// A 2D run's row of the table.
+nlohmann::json bench_row_2d(const nlohmann::json& case_json) {
+  CaseReadResult read = read_case(case_json, {});
+  if (!read.errors.empty())
+    return {{"error", read.errors.front().pointer + ": " + read.errors.front().detail}};
+  RunControl control;
+  control.want_vtu = false;
+  const nlohmann::json r = run_case(*read.spec, control).result;
+  const auto& timing = r["timing"];
+  nlohmann::json row =
+      common_row(r,
+                 timing["mesh_s"].get<double>() + timing["assembly_s"].get<double>() +
+                     timing["setup_s"].get<double>(),
+                 timing["solve_s"].get<double>() - timing["setup_s"].get<double>());
+  row["memory"] = r["memory"];
+  row["peak_pressure"] = r["contact"]["zone"]["peak_pressure"];
+  row["contact_width"] = r["contact"]["zone"]["width"];
+  return row;
+}
+
+/// A 3D run's row: the same columns, the contact area in the width's place; the 3D result
+/// reports no memory split (its columns stay empty) and times the set-up within the solve.
+nlohmann::json bench_row_3d(const nlohmann::json& case_json) {
+  Case3dReadResult read = read_case_3d(case_json, {});
+  if (!read.errors.empty())
+    return {{"error", read.errors.front().pointer + ": " + read.errors.front().detail}};
+  const nlohmann::json r = run_case_3d(*read.spec).result;
+  const auto& timing = r["timing"];
+  nlohmann::json row =
+      common_row(r, timing["mesh_s"].get<double>() + timing["assembly_s"].get<double>(),
+                 timing["solve_s"].get<double>());
+  row["peak_pressure"] = r["contact"]["max_pressure"];
+  row["contact_area"] = r["contact"]["area"];
+  return row;
+}
+
 /// Runs one configuration in a child process, so that its peak memory is its own; the child
 /// writes one JSON line to the pipe. `threads` > 0 sets the OpenMP and OpenBLAS thread counts
 /// of the child.
@@ -113,33 +168,7 @@ nlohmann::json run_isolated(const nlohmann::json& case_json, int threads) {
     }
     nlohmann::json row;
     try {
-      CaseReadResult read = read_case(case_json, {});
-      if (!read.errors.empty()) {
-        row["error"] = read.errors.front().pointer + ": " + read.errors.front().detail;
-      } else {
-        RunControl control;
-        control.want_vtu = false;
-        RunOutput out = run_case(*read.spec, control);
-        const auto& r = out.result;
-        row = {{"dofs", r["dofs"]},
-               {"levels", r["levels"]},
-               {"iterations", r["iterations"]},
-               {"converged", r["converged"]},
-               {"rate", r["asymptotic_rate"]},
-               {"setup_s", r["timing"]["mesh_s"].get<double>() +
-                               r["timing"]["assembly_s"].get<double>() +
-                               r["timing"]["setup_s"].get<double>()},
-               {"solve_s",
-                r["timing"]["solve_s"].get<double>() - r["timing"]["setup_s"].get<double>()},
-               {"total_s", r["timing"]["total_s"]},
-               {"threads", omp_get_max_threads()},
-               {"memory", r["memory"]},
-               // The physical answer per level, so that a mesh-convergence study is one command.
-               {"force", r["contact"]["force"]},
-               {"peak_pressure", r["contact"]["zone"]["peak_pressure"]},
-               {"contact_width", r["contact"]["zone"]["width"]},
-               {"estimator", r["functional"]["estimator"]}};
-      }
+      row = is_3d_case(case_json) ? bench_row_3d(case_json) : bench_row_2d(case_json);
     } catch (const std::exception& e) {
       row["error"] = e.what();
     }
@@ -212,23 +241,45 @@ struct BenchRun {
   std::string refusal;
 };
 
+/// What admission says of one run: why it is refused, or its memory and time (no time for pgs
+/// in 2D, or for a 3D mesh known only once gmsh has made it).
+struct RunEstimate {
+  std::string refusal;
+  double bytes = 0;
+  std::optional<double> seconds;
+};
+
+RunEstimate estimate_run(const nlohmann::json& case_json, const CaseReadOptions& options) {
+  auto refused = [](const std::vector<CaseError>& errors) {
+    return RunEstimate{errors.front().pointer + ": " + errors.front().detail, 0, std::nullopt};
+  };
+  if (is_3d_case(case_json)) {
+    const Case3dAdmission admission = admit_case_3d(case_json, options);
+    if (!admission.errors.empty()) return refused(admission.errors);
+    if (!admission.estimate) return {};
+    return {"", admission.estimate->bytes, admission.estimate->seconds};
+  }
+  const CaseAdmission admission = admit_case(case_json, options);
+  if (!admission.errors.empty()) return refused(admission.errors);
+  return {"", admission.estimate->memory_bytes,
+          estimated_seconds(admission.estimate->unknowns, admission.spec->solver.method)};
+}
+
 /// Admits every run by the rule solve and the service use, before any runs, and says on stderr
 /// what the admitted ones will take in all (a level too many can take hours).
 void admit_runs(std::vector<BenchRun>& runs, const CaseReadOptions& options) {
   double seconds = 0, peak = 0;
   int admitted = 0, untimed = 0;
   for (BenchRun& run : runs) {
-    const CaseAdmission admission = admit_case(run.case_json, options);
-    if (!admission.errors.empty()) {
-      const CaseError& e = admission.errors.front();
-      run.refusal = "refused before running: " + e.pointer + ": " + e.detail;
+    const RunEstimate estimate = estimate_run(run.case_json, options);
+    if (!estimate.refusal.empty()) {
+      run.refusal = "refused before running: " + estimate.refusal;
       continue;
     }
     ++admitted;
-    peak = std::max(peak, admission.estimate->memory_bytes);
-    const auto t = estimated_seconds(admission.estimate->unknowns, admission.spec->solver.method);
-    if (t)
-      seconds += *t;
+    peak = std::max(peak, estimate.bytes);
+    if (estimate.seconds)
+      seconds += *estimate.seconds;
     else
       ++untimed;
   }
@@ -240,8 +291,9 @@ void admit_runs(std::vector<BenchRun>& runs, const CaseReadOptions& options) {
 
 /// The case to bench: a shipped example by name, else a case file; nullopt after saying why not.
 std::optional<nlohmann::json> bench_case(const std::string& path) {
-  for (const auto& ex : shipped_examples())
-    if (ex.name == path) return nlohmann::json::parse(ex.text);
+  for (const auto& examples : {shipped_examples(), shipped_3d_examples()})
+    for (const auto& ex : examples)
+      if (ex.name == path) return nlohmann::json::parse(ex.text);
   CaseFile file = load_case_file(path, 16u << 20);
   if (!file.problem.empty()) {
     std::cerr << "error: " << path << ": " << file.problem << '\n';
@@ -305,25 +357,46 @@ std::vector<BenchRun> bench_runs(const nlohmann::json& base, const BenchOptions&
   return runs;
 }
 
+/// A number of a row printed with `format`, or "-" in its width when the row has none.
+std::string cell(const nlohmann::json& value, const char* format, int width) {
+  char text[64];
+  if (value.is_number())
+    std::snprintf(text, sizeof text, format, value.get<double>());
+  else
+    std::snprintf(text, sizeof text, "%*s", width, "-");
+  return text;
+}
+
+/// |F| over all its components (two in 2D, three in 3D).
+double force_magnitude(const nlohmann::json& force) {
+  double sum = 0;
+  for (const auto& component : force) sum += component.get<double>() * component.get<double>();
+  return std::sqrt(sum);
+}
+
 /// One row of the table (an error line for a run that failed or was refused).
 void print_row(const nlohmann::json& row) {
   const int level = row["level"].get<int>();
   if (row.contains("error")) {
     std::printf("%-5d %9s %s error: %s\n", level, "-", settings_columns(row).c_str(),
                 row["error"].get<std::string>().c_str());
-  } else {
-    const double force = std::hypot(row["force"][0].get<double>(), row["force"][1].get<double>());
-    std::printf(
-        "%-5d %9lld %s %3d %6d %5s %8.4f %9.3f %9.3f %9.3f %9.1f %9.1f %9.1f %11.5g %11.5g "
-        "%10.4g %10.3g\n",
-        level, row["dofs"].get<long long>(), settings_columns(row).c_str(),
-        row["threads"].get<int>(), row["iterations"].get<int>(),
-        row["converged"].get<bool>() ? "yes" : "no", row["rate"].get<double>(),
-        row["setup_s"].get<double>(), row["solve_s"].get<double>(), row["total_s"].get<double>(),
-        row["memory"]["assembly_mib"].get<double>(), row["memory"]["chain_mib"].get<double>(),
-        row["peak_mib"].get<double>(), force, row["peak_pressure"].get<double>(),
-        row["contact_width"].get<double>(), row["estimator"].get<double>());
+    return;
   }
+  const nlohmann::json none;
+  const nlohmann::json& memory = row.contains("memory") ? row["memory"] : none;
+  auto in_memory = [&](const char* key) { return memory.is_object() ? memory[key] : none; };
+  const nlohmann::json& extent =
+      row.contains("contact_area") ? row["contact_area"] : row["contact_width"];
+  std::printf(
+      "%-5d %9lld %s %3d %6d %5s %s %9.3f %9.3f %9.3f %s %s %9.1f %11.5g %11.5g %s %10.3g\n", level,
+      row["dofs"].get<long long>(), settings_columns(row).c_str(), row["threads"].get<int>(),
+      row["iterations"].get<int>(), row["converged"].get<bool>() ? "yes" : "no",
+      cell(row["rate"], "%8.4f", 8).c_str(), row["setup_s"].get<double>(),
+      row["solve_s"].get<double>(), row["total_s"].get<double>(),
+      cell(in_memory("assembly_mib"), "%9.1f", 9).c_str(),
+      cell(in_memory("chain_mib"), "%9.1f", 9).c_str(), row["peak_mib"].get<double>(),
+      force_magnitude(row["force"]), row["peak_pressure"].get<double>(),
+      cell(extent, "%10.4g", 10).c_str(), row["estimator"].get<double>());
 }
 
 int run_bench(const BenchOptions& o) {
@@ -337,7 +410,8 @@ int run_bench(const BenchOptions& o) {
       "%-5s %9s %-6s %-6s %-3s %-3s %3s %6s %5s %8s %9s %9s %9s %9s %9s %9s %11s %11s %10s "
       "%10s\n",
       "level", "dofs", "method", "smooth", "obs", "cyc", "thr", "iters", "conv", "rate", "setup_s",
-      "solve_s", "total_s", "asm_MiB", "chain_MiB", "peak_MiB", "|F|", "p_max", "width", "J^1/2");
+      "solve_s", "total_s", "asm_MiB", "chain_MiB", "peak_MiB", "|F|", "p_max",
+      is_3d_case(*base) ? "area" : "width", "J^1/2");
   nlohmann::json rows = nlohmann::json::array();
   bool all_ok = true;
   const auto methods = split(o.methods), smoothers = split(o.smoothers),

@@ -1,7 +1,7 @@
 // 3D cases through `fosls-contact` as a user runs them (docs/case-format.md, "3D cases"): the
 // shipped hertz_3d example listed and solved, a .geo file next to the case meshed in 3D, the
-// exit codes of a bad case (2) and of an answer without contact (4), and the .vtu of
-// tetrahedra. Runs build/bin/fosls-contact.
+// exit codes of a bad case (2) and of an answer without contact (4), the .vtu of
+// tetrahedra, estimate and bench. Runs build/bin/fosls-contact.
 
 #include <gtest/gtest.h>
 
@@ -105,6 +105,44 @@ TEST(Cli3d, ABadCaseExitsTwoNamingTheFieldAndNoContactExitsFourWithReview) {
   EXPECT_EQ(empty.exit_code, 4);
   EXPECT_NE(empty.err.find("warning: nothing touches the plane"), std::string::npos) << empty.err;
   EXPECT_NE(empty.err.find("REVIEW"), std::string::npos) << empty.err;
+}
+
+TEST(Cli3d, BenchSolvesA3dCaseOnEachLevelByMmgAndPdas) {
+  // The shipped example by name, refinements 0 and 1: a row per level and method, the same
+  // force from both methods, the contact area in the width's column and no memory split.
+  Folder folder("bench");
+  const fs::path rows_file = folder.path / "rows.json";
+  const CliRun bench =
+      fosls_contact({"bench", "hertz_3d", "--levels", "1..2", "--json", rows_file.string()});
+  ASSERT_EQ(bench.exit_code, 0) << bench.err;
+  EXPECT_NE(bench.out.find("     area "), std::string::npos) << bench.out;
+  EXPECT_NE(bench.out.find("time/pdas"), std::string::npos) << bench.out;
+  std::ifstream in(rows_file);
+  const json rows = json::parse(in);
+  ASSERT_EQ(rows.size(), 4u);
+  const std::vector<long long> dofs = {1222, 1222, 9868, 9868};
+  for (std::size_t k = 0; k < rows.size(); ++k) {
+    const json& row = rows[k];
+    ASSERT_FALSE(row.contains("error")) << row.dump();
+    EXPECT_EQ(row["method"], k % 2 == 0 ? "mmg" : "pdas");
+    EXPECT_EQ(row["dofs"].get<long long>(), dofs[k]);
+    EXPECT_TRUE(row["converged"].get<bool>());
+    EXPECT_LE(row["iterations"].get<int>(), 40);
+    ASSERT_EQ(row["force"].size(), 3u);
+    EXPECT_GT(row["contact_area"].get<double>(), 0.0);
+    EXPECT_FALSE(row.contains("memory"));
+  }
+  for (std::size_t k = 0; k < rows.size(); k += 2) {
+    const double mmg = rows[k]["force"][2].get<double>(),
+                 pdas = rows[k + 1]["force"][2].get<double>();
+    EXPECT_NEAR(mmg, pdas, 1e-6 * pdas);
+  }
+  // tnnmg has no 3D solver: refused before running, at the field, and the bench exits 1.
+  const CliRun refused =
+      fosls_contact({"bench", "hertz_3d", "--levels", "1", "--methods", "tnnmg"});
+  EXPECT_EQ(refused.exit_code, 1);
+  EXPECT_NE(refused.out.find("refused before running: /solver/method"), std::string::npos)
+      << refused.out;
 }
 
 TEST(Cli3d, EstimateChecksA3dCaseAndPrintsEachMethodsMemoryAndTime) {
