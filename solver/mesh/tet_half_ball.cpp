@@ -4,8 +4,6 @@
 #include <cmath>
 #include <stdexcept>
 
-#include "mesh/tet_refinement.hpp"
-
 namespace fosls {
 
 namespace {
@@ -26,6 +24,41 @@ Point3 half_ball_point(Point3 xi, double grading, double radius) {
   return radius * xi * (xi.cwiseAbs().maxCoeff() / euclid);
 }
 
+/// Kuhn cubes of the half cube [−1, 1]² × [−1, 0], n cubes deep, each split along the diagonal
+/// from its vertex nearest the origin outwards. Every tetrahedron then holds a vertex off the five
+/// faces that go onto the sphere: with make_box's one diagonal direction, tetrahedra at the
+/// mapped cube's corners had all four vertices on the sphere and flattened under refinement.
+/// Each tetrahedron's vertices are in path order, so refinement keeps them Kuhn tetrahedra.
+std::pair<std::vector<Point3>, std::vector<std::array<int, 4>>> outward_kuhn_half_cube(int n) {
+  auto id = [n](int i, int j, int k) { return (k * (2 * n + 1) + j) * (2 * n + 1) + i; };
+  std::vector<Point3> points;
+  for (int k = 0; k <= n; ++k)
+    for (int j = 0; j <= 2 * n; ++j)
+      for (int i = 0; i <= 2 * n; ++i)
+        points.emplace_back(-1.0 + double(i) / n, -1.0 + double(j) / n, -double(k) / n);
+  const std::array<std::array<int, 3>, 6> paths = {
+      {{0, 1, 2}, {0, 2, 1}, {1, 0, 2}, {1, 2, 0}, {2, 0, 1}, {2, 1, 0}}};
+  std::vector<std::array<int, 4>> tets;
+  for (int k = 0; k < n; ++k)
+    for (int j = 0; j < 2 * n; ++j)
+      for (int i = 0; i < 2 * n; ++i) {
+        // Away from the axis in x and y, downwards in z (k grows downwards).
+        const std::array<int, 3> start = {i < n ? i + 1 : i, j < n ? j + 1 : j, k};
+        const std::array<int, 3> step = {i < n ? -1 : 1, j < n ? -1 : 1, 1};
+        for (const auto& path : paths) {
+          std::array<int, 3> c = start;
+          std::array<int, 4> t;
+          t[0] = id(c[0], c[1], c[2]);
+          for (int s = 0; s < 3; ++s) {
+            c[path[s]] += step[path[s]];
+            t[s + 1] = id(c[0], c[1], c[2]);
+          }
+          tets.push_back(t);
+        }
+      }
+  return {std::move(points), std::move(tets)};
+}
+
 }  // namespace
 
 TetMesh make_half_ball(const HalfBallSpec& spec) {
@@ -34,30 +67,26 @@ TetMesh make_half_ball(const HalfBallSpec& spec) {
     throw std::invalid_argument(
         "make_half_ball: radius > 0, cells 1–64, grading 1–4, "
         "contact_fraction in (0, 1] expected");
-  const TetMesh cube = make_box({2 * spec.cells, 2 * spec.cells, spec.cells}, Point3(2, 2, 1));
-  std::vector<Point3> reference, vertices;
-  std::vector<std::array<int, 4>> tets;
-  for (int v = 0; v < cube.num_vertices(); ++v) {
-    reference.push_back(cube.vertex(v) - Point3(1, 1, 1));
-    vertices.push_back(half_ball_point(reference.back(), spec.grading, spec.radius));
-  }
-  for (int t = 0; t < cube.num_tets(); ++t) {
-    tets.push_back(cube.tet(t));
-    if (signed_volume(reference, tets.back()) * signed_volume(vertices, tets.back()) <= 0)
+  auto [reference, tets] = outward_kuhn_half_cube(spec.cells);
+  std::vector<Point3> vertices;
+  for (const Point3& xi : reference)
+    vertices.push_back(half_ball_point(xi, spec.grading, spec.radius));
+  for (const auto& t : tets)
+    if (signed_volume(reference, t) * signed_volume(vertices, t) <= 0)
       throw std::invalid_argument("make_half_ball: the grading folds a tetrahedron");
-  }
   const int top = 0, contact = 1, free = 2;
+  const TetMesh cube(reference, tets, {}, {});
   std::vector<BoundaryFace> boundary;
   for (int f = 0; f < cube.num_faces(); ++f) {
     if (!cube.is_boundary_face(f)) continue;
-    // make_box's group 5 is its top, z = 0 here; its five other sides go onto the sphere.
+    // The top z = 0 stays flat; the half cube's five other sides go onto the sphere.
+    const auto& v = cube.face(f);
     int group = top;
-    if (cube.face_group(f) != 5) {
-      const auto& v = cube.face(f);
+    if (cube.face_normal(f).z() < 0.5) {
       const Point3 c = (vertices[v[0]] + vertices[v[1]] + vertices[v[2]]) / 3.0;
       group = std::hypot(c.x(), c.y()) <= spec.contact_fraction * spec.radius ? contact : free;
     }
-    boundary.push_back({cube.face(f), group});
+    boundary.push_back({v, group});
   }
   const SphereSurface sphere{Point3::Zero(), spec.radius};
   return TetMesh(std::move(vertices), std::move(tets), boundary, {"top", "contact", "free"},

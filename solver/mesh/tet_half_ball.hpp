@@ -13,7 +13,8 @@ struct HalfBallSpec {
   double contact_fraction = 0.5;  ///< of the radius: the contact group's extent about the axis
 };
 
-/// The half ball {|x| ≤ R, z ≤ 0}: a Kuhn mesh of the half cube [−1, 1]² × [−1, 0], graded
+/// The half ball {|x| ≤ R, z ≤ 0}: a Kuhn mesh of the half cube [−1, 1]² × [−1, 0] whose cubes'
+/// diagonals point away from the origin (so no tetrahedron has four vertices on the sphere), graded
 /// towards its pole p = (0, 0, −1) by ξ ↦ p + (ξ − p) |ξ − p|^(grading − 1) where |ξ − p| < 1,
 /// then mapped onto the half ball radially (x ↦ R x ‖x‖_∞ / ‖x‖₂, which keeps z = 0 flat and takes
 /// the other five faces onto the sphere). Groups: `top` (z = 0), `contact` (sphere faces whose
