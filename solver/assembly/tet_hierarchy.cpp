@@ -83,6 +83,29 @@ std::vector<std::vector<int>> tet_vertex_patches(const TetSpace& space, std::arr
 
 namespace {
 
+/// The free σ DOFs of the fine faces inside one coarse tetrahedron: the way a flux move goes.
+std::vector<int> interior_sigma_dofs(const TetSpace& fine, const std::vector<int>& faces) {
+  std::vector<int> dofs;
+  for (int f : faces)
+    for (int i = 0; i < 3; ++i)
+      if (const int dof = fine.free_index(fine.sigma_dof(f, i)); dof >= 0) dofs.push_back(dof);
+  return dofs;
+}
+
+/// 2D's flux move (ContactLink::flux_moves) on a coarse contact face: one unit of normal flux
+/// taken off quarter `from` arrives on quarter `to` as n_from · n_to of its S_n (the tangential
+/// rest falls on the fixed S_t), carried through the fine faces inside the coarse tetrahedron,
+/// whose values the truncation sets with the least energy.
+std::vector<std::pair<int, double>> flux_move(const TetSpace& fine, int from, int to,
+                                              const std::vector<int>& path) {
+  const TetMesh& m = fine.mesh();
+  std::vector<std::pair<int, double>> move;
+  move.emplace_back(fine.free_index(fine.sigma_dof(to, 0)),
+                    m.face_normal(from).dot(m.face_normal(to)));
+  for (int dof : path) move.emplace_back(dof, 0.0);
+  return move;
+}
+
 /// Contact links between a level and the one below (docs/method.md §4.3 in 3D): one per coarse
 /// contact edge for U_n (its ends and the fine midpoint, interpolated with ½, ½ as in 2D) and
 /// two per coarse contact face for S_n (its four quarters, each with weight ¼), so that the 2D
@@ -100,10 +123,12 @@ std::vector<ContactLink> tet_contact_links(const TetSpace& coarse, const TetSpac
   };
   std::vector<ContactLink> links;
   std::set<std::pair<int, int>> edges;
-  std::vector<std::vector<int>> quarters(cm.num_faces());
-  for (int f = 0; f < fine.mesh().num_faces(); ++f)
+  std::vector<std::vector<int>> quarters(cm.num_faces()), inside(cm.num_tets());
+  for (int f = 0; f < fine.mesh().num_faces(); ++f) {
     if (const int parent = maps.parent_face[f]; parent >= 0 && coarse.is_contact_face(parent))
       quarters[parent].push_back(f);
+    if (const int t = maps.parent_tet_of_face[f]; t >= 0) inside[t].push_back(f);
+  }
   for (int F = 0; F < cm.num_faces(); ++F) {
     if (!coarse.is_contact_face(F)) continue;
     const auto& v = cm.face(F);
@@ -119,6 +144,7 @@ std::vector<ContactLink> tet_contact_links(const TetSpace& coarse, const TetSpac
       links.push_back(link);
     }
     const int coarse_sn = coarse.free_index(coarse.sigma_dof(F, 0));
+    const std::vector<int> path = interior_sigma_dofs(fine, inside[cm.face_tets(F)[0]]);
     for (std::size_t q = 0; q + 1 < quarters[F].size(); q += 2) {
       ContactLink link;
       link.coarse_sn = coarse_sn;
@@ -126,6 +152,8 @@ std::vector<ContactLink> tet_contact_links(const TetSpace& coarse, const TetSpac
         link.fine_sn[k] = fine.free_index(fine.sigma_dof(quarters[F][q + k], 0));
         link.sn_weight[k] = prolongation.coeff(link.fine_sn[k], coarse_sn);
       }
+      for (int k = 0; k < 2; ++k)
+        link.flux_moves[k] = flux_move(fine, quarters[F][q + k], quarters[F][q + 1 - k], path);
       links.push_back(link);
     }
   }
