@@ -106,6 +106,21 @@ std::vector<std::pair<int, double>> flux_move(const TetSpace& fine, int from, in
   return move;
 }
 
+/// Makes the last two links, a coarse face's quarters 0–1 and 2–3, each other's partner.
+void pair_up(const TetSpace& fine, const std::vector<int>& quarters,
+             std::vector<ContactLink>& links) {
+  const int n = static_cast<int>(links.size());
+  const TetMesh& m = fine.mesh();
+  for (int side = 0; side < 2; ++side) {
+    ContactLink& link = links[n - 2 + side];
+    link.partner = n - 1 - side;
+    for (int k = 0; k < 2; ++k)
+      for (int i = 0; i < 2; ++i)
+        link.partner_factor[k][i] =
+            m.face_normal(quarters[2 * side + k]).dot(m.face_normal(quarters[2 * (1 - side) + i]));
+  }
+}
+
 /// Contact links between a level and the one below (docs/method.md §4.3 in 3D): one per coarse
 /// contact edge for U_n (its ends and the fine midpoint, interpolated with ½, ½ as in 2D) and
 /// two per coarse contact face for S_n (its four quarters, each with weight ¼), so that the 2D
@@ -156,6 +171,7 @@ std::vector<ContactLink> tet_contact_links(const TetSpace& coarse, const TetSpac
         link.flux_moves[k] = flux_move(fine, quarters[F][q + k], quarters[F][q + 1 - k], path);
       links.push_back(link);
     }
+    if (quarters[F].size() == 4) pair_up(fine, quarters[F], links);
   }
   return links;
 }

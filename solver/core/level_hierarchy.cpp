@@ -34,9 +34,12 @@ std::string hierarchy_inconsistency(const LevelHierarchy& hierarchy, int finest_
       if (level.prolongation.rows() != n || level.prolongation.cols() != coarse)
         return "P_" + std::to_string(j) + " does not map level " + std::to_string(j - 1) +
                " to level " + std::to_string(j);
-      for (const ContactLink& link : level.links)
+      for (const ContactLink& link : level.links) {
         if (auto why = link_inconsistency(link, coarse, n); !why.empty())
           return why + " (level " + std::to_string(j) + ")";
+        if (link.partner < -1 || link.partner >= static_cast<int>(level.links.size()))
+          return "a contact link's partner is not a link of level " + std::to_string(j);
+      }
     }
     for (const auto& patch : level.patches)
       for (int d : patch)

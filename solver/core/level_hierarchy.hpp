@@ -26,6 +26,12 @@ struct ContactLink {
   /// When only half k is truncated, the coarse S_n function moves half k's flux this way
   /// (TruncatedHierarchy::truncate_level), so that it keeps a bounded divergence.
   std::array<std::vector<std::pair<int, double>>, 2> flux_moves;
+  /// 3D, where a coarse face's four quarters make two links: the index of the other link of the
+  /// same face (-1 in 2D), and partner_factor[k][i] = n_k · n_i from this link's quarter k to the
+  /// partner's quarter i. When both quarters here are truncated, their share moves onto a free
+  /// quarter of the partner, along this link's flux_moves path.
+  int partner = -1;
+  std::array<std::array<double, 2>, 2> partner_factor = {{{0.0, 0.0}, {0.0, 0.0}}};
 };
 
 /// How an exact block solver factorises the block restricted to a free set

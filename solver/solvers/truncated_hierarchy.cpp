@@ -2,6 +2,7 @@
 
 #include <Eigen/Dense>
 #include <algorithm>
+#include <map>
 
 #include "core/indefinite_system.hpp"
 #include "solvers/galerkin_product.hpp"
@@ -13,10 +14,11 @@ namespace fosls {
 namespace {
 
 /// The change δ on the DOFs `local` that minimises the energy (v + δ)ᵀ A (v + δ) of v = column
-/// `column` of p with `extra_value` added at `extra_dof`: δ = −A_LL⁻¹ (A v)_L.
+/// `column` of p with the `extras` (DOF, value) added: δ = −A_LL⁻¹ (A v)_L.
 Vector energy_minimising_correction(const SparseMatrix& a, const SparseMatrix& p, int column,
-                                    const std::vector<int>& local, int extra_dof,
-                                    double extra_value, const std::vector<char>* dropped_rows) {
+                                    const std::vector<int>& local,
+                                    const std::vector<std::pair<int, double>>& extras,
+                                    const std::vector<char>* dropped_rows) {
   const int m = static_cast<int>(local.size());
   std::vector<int> position(a.rows(), -1);
   for (int i = 0; i < m; ++i) position[local[i]] = i;
@@ -26,8 +28,9 @@ Vector energy_minimising_correction(const SparseMatrix& a, const SparseMatrix& p
     for (SparseMatrix::InnerIterator it(a, static_cast<int>(pc.row())); it; ++it)
       if (const int i = position[it.row()]; i >= 0) ap[i] += it.value() * pc.value();
   }
-  for (SparseMatrix::InnerIterator it(a, extra_dof); it; ++it)
-    if (const int i = position[it.row()]; i >= 0) ap[i] += it.value() * extra_value;
+  for (const auto& [extra_dof, extra_value] : extras)
+    for (SparseMatrix::InnerIterator it(a, extra_dof); it; ++it)
+      if (const int i = position[it.row()]; i >= 0) ap[i] += it.value() * extra_value;
   Eigen::MatrixXd all(m, m);
   all.setZero();
   for (int b = 0; b < m; ++b)
@@ -36,6 +39,57 @@ Vector energy_minimising_correction(const SparseMatrix& a, const SparseMatrix& p
   Eigen::LDLT<Eigen::MatrixXd> ldlt(all);
   if (ldlt.info() != Eigen::Success) return Vector::Zero(m);
   return -ldlt.solve(ap);
+}
+
+/// The flux moved into one coarse S_n's column: where it lands and the path that carries it.
+struct ColumnMoves {
+  std::vector<int> path;                         ///< the interior fine σ DOFs on the way
+  std::vector<std::pair<int, double>> arrivals;  ///< (free fine S_n, flux added there)
+};
+
+/// The path DOFs of a flux move (its entries after the arrival's).
+std::vector<int> path_of(const std::vector<std::pair<int, double>>& move) {
+  std::vector<int> path;
+  for (std::size_t m = 1; m < move.size(); ++m) path.push_back(move[m].first);
+  return path;
+}
+
+/// When both quarters of link l are truncated, their share of the coarse S_n moves onto a free
+/// quarter of the partner link (3D): false when there is none.
+bool move_to_partner(const Level& level, int l, const std::vector<char>& truncated,
+                     std::vector<std::array<double, 2>>& weights, ColumnMoves& column) {
+  const ContactLink& link = level.links[l];
+  if (link.partner < 0 || link.flux_moves[0].empty()) return false;
+  const ContactLink& partner = level.links[link.partner];
+  for (int i = 0; i < 2; ++i) {
+    const int free_sn = partner.fine_sn[i];
+    if (free_sn < 0 || truncated[free_sn]) continue;
+    for (int k = 0; k < 2; ++k) {
+      const double moved = link.sn_weight[k] * link.partner_factor[k][i];
+      column.arrivals.emplace_back(free_sn, moved);
+      weights[link.partner][i] += moved;
+    }
+    column.path = path_of(link.flux_moves[0]);
+    return true;
+  }
+  return false;  // all four quarters are truncated: the coarse S_n has no flux left
+}
+
+/// P̃'s entries for the moves: the arrivals, and one least-energy correction on each column's path.
+void add_moves(const SparseMatrix& a, const SparseMatrix& prolongation,
+               const std::vector<char>& truncated, const std::map<int, ColumnMoves>& columns,
+               std::vector<Eigen::Triplet<double>>& corrections) {
+  for (const auto& [coarse_sn, column] : columns) {
+    if (column.arrivals.empty()) continue;
+    for (const auto& [free_sn, moved] : column.arrivals)
+      corrections.emplace_back(free_sn, coarse_sn, moved);
+    // The truncated rows of the coarse S_n's column are zero, and the path and the free
+    // quarters are not truncated, so column coarse_sn of P stands for that of P̃ here.
+    const Vector delta = energy_minimising_correction(a, prolongation, coarse_sn, column.path,
+                                                      column.arrivals, &truncated);
+    for (std::size_t m = 0; m < column.path.size(); ++m)
+      corrections.emplace_back(column.path[m], coarse_sn, delta[m]);
+  }
 }
 
 constexpr double kCoarseShift = 1e-10;
@@ -231,7 +285,6 @@ void TruncatedHierarchy::truncate_level(int j) {
 SparseMatrix TruncatedHierarchy::flux_moves(int j, std::vector<char>& coarse) {
   const Level& level = hierarchy_.levels[j];
   const std::vector<char>& truncated = level_truncated_[j];
-  const SparseMatrix& a = matrix(j);
   std::vector<std::array<double, 2>>& weights = sn_weights_[j];
   weights.assign(level.links.size(), {0.0, 0.0});
   for (std::size_t l = 0; l < level.links.size(); ++l) weights[l] = level.links[l].sn_weight;
@@ -245,7 +298,8 @@ SparseMatrix TruncatedHierarchy::flux_moves(int j, std::vector<char>& coarse) {
     // behind choices in the code"). The function keeps
     // its flux instead: the truncated half's share goes to the free half, and the fine edges
     // between the halves carry it with the least energy, so the divergence stays bounded and
-    // the truncated DOF is untouched.
+    // the truncated DOF is untouched. (In 3D a truncated pair of quarters moves to its partner.)
+    std::map<int, ColumnMoves> columns;
     for (std::size_t l = 0; l < level.links.size(); ++l) {
       const ContactLink& link = level.links[l];
       if (link.coarse_sn < 0 || link.fine_sn[0] < 0) continue;
@@ -256,23 +310,22 @@ SparseMatrix TruncatedHierarchy::flux_moves(int j, std::vector<char>& coarse) {
         continue;
       }
       const bool t0 = truncated[link.fine_sn[0]], t1 = truncated[link.fine_sn[1]];
-      if (t0 && t1) coarse[link.coarse_sn] = 1;
+      if (t0 && t1) {
+        if (!move_to_partner(level, static_cast<int>(l), truncated, weights,
+                             columns[link.coarse_sn]))
+          coarse[link.coarse_sn] = 1;
+        continue;
+      }
       const int k = t0 ? 0 : 1;
       if (t0 == t1 || link.flux_moves[k].empty()) continue;
       const auto& [free_sn, factor] = link.flux_moves[k].front();
-      std::vector<int> path;  // the interior fine σ DOFs between the halves
-      for (std::size_t m = 1; m < link.flux_moves[k].size(); ++m)
-        path.push_back(link.flux_moves[k][m].first);
       const double moved = link.sn_weight[k] * factor;
-      corrections.emplace_back(free_sn, link.coarse_sn, moved);
+      ColumnMoves& column = columns[link.coarse_sn];
+      column.path = path_of(link.flux_moves[k]);
+      column.arrivals.emplace_back(free_sn, moved);
       weights[l][1 - k] += moved;
-      // The truncated rows of the coarse S_n's column are zero, and the path and the free
-      // half are not truncated, so column coarse_sn of P stands for that of P̃ here.
-      const Vector delta = energy_minimising_correction(a, level.prolongation, link.coarse_sn, path,
-                                                        free_sn, moved, &truncated);
-      for (std::size_t m = 0; m < path.size(); ++m)
-        corrections.emplace_back(path[m], link.coarse_sn, delta[m]);
     }
+    add_moves(matrix(j), level.prolongation, truncated, columns, corrections);
   }
   SparseMatrix moves(level.prolongation.rows(), level.prolongation.cols());
   moves.setFromTriplets(corrections.begin(), corrections.end());

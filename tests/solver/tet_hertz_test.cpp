@@ -79,14 +79,26 @@ TEST(TetHalfBall, RefusesFoldingGradings) {
 TEST(TetHertzLinks, EachQuarterCanMoveItsFluxOntoItsPartnerInsideTheCoarseTetrahedron) {
   // 2D's H(div)-stable truncation in 3D (docs/method.md §11): when one quarter of a pair is
   // truncated, the coarse S_n's share on it moves onto the other quarter, carried by the σ DOFs
-  // of the fine faces inside the coarse tetrahedron (eight faces, three rows each).
+  // of the fine faces inside the coarse tetrahedron (eight faces, three rows each); when both
+  // are, onto a free quarter of the partner pair.
   const TetDiscretization disc(build_tet_hierarchy(make_half_ball({.cells = 2, .grading = 3}), 1),
                                testing::hertz_half_ball(1.0));
   const LevelHierarchy h = disc.build_level_hierarchy();
   int pairs = 0;
-  for (const ContactLink& link : h.levels.back().links) {
+  const std::vector<ContactLink>& links = h.levels.back().links;
+  for (const ContactLink& link : links) {
     if (link.coarse_sn < 0 || link.fine_sn[0] < 0 || link.fine_sn[1] < 0) continue;
     ++pairs;
+    // The face's other two quarters: when both quarters here are truncated, their share goes there.
+    ASSERT_GE(link.partner, 0);
+    const ContactLink& partner = links[link.partner];
+    EXPECT_EQ(&links[partner.partner], &link);
+    EXPECT_EQ(partner.coarse_sn, link.coarse_sn);
+    for (const auto& row : link.partner_factor)
+      for (double factor : row) {
+        EXPECT_GT(factor, 0.8);
+        EXPECT_LE(factor, 1.0 + 1e-12);
+      }
     for (int k = 0; k < 2; ++k) {
       const auto& move = link.flux_moves[k];
       ASSERT_GT(move.size(), 1u);
