@@ -8,7 +8,8 @@ bool inside(int dof, int size, bool fixed_allowed) {
   return (fixed_allowed && dof == -1) || (dof >= 0 && dof < size);
 }
 
-std::string link_inconsistency(const ContactLink& l, int coarse, int fine) {
+std::string link_inconsistency(const ContactLink& l, int coarse, int fine, int links) {
+  if (l.partner < -1 || l.partner >= links) return "a contact link's partner is not a link";
   for (int d : {l.coarse_un_a, l.coarse_un_b, l.coarse_sn})
     if (!inside(d, coarse, true)) return "a contact link's coarse DOF is outside its level";
   for (int d : {l.fine_un_a, l.fine_un_mid, l.fine_un_b, l.fine_sn[0], l.fine_sn[1]})
@@ -34,12 +35,10 @@ std::string hierarchy_inconsistency(const LevelHierarchy& hierarchy, int finest_
       if (level.prolongation.rows() != n || level.prolongation.cols() != coarse)
         return "P_" + std::to_string(j) + " does not map level " + std::to_string(j - 1) +
                " to level " + std::to_string(j);
-      for (const ContactLink& link : level.links) {
-        if (auto why = link_inconsistency(link, coarse, n); !why.empty())
+      const int links = static_cast<int>(level.links.size());
+      for (const ContactLink& link : level.links)
+        if (auto why = link_inconsistency(link, coarse, n, links); !why.empty())
           return why + " (level " + std::to_string(j) + ")";
-        if (link.partner < -1 || link.partner >= static_cast<int>(level.links.size()))
-          return "a contact link's partner is not a link of level " + std::to_string(j);
-      }
     }
     for (const auto& patch : level.patches)
       for (int d : patch)

@@ -4,6 +4,8 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "mesh/tet_refinement.hpp"
+
 namespace fosls {
 
 namespace {
@@ -36,26 +38,12 @@ std::pair<std::vector<Point3>, std::vector<std::array<int, 4>>> outward_kuhn_hal
     for (int j = 0; j <= 2 * n; ++j)
       for (int i = 0; i <= 2 * n; ++i)
         points.emplace_back(-1.0 + double(i) / n, -1.0 + double(j) / n, -double(k) / n);
-  const std::array<std::array<int, 3>, 6> paths = {
-      {{0, 1, 2}, {0, 2, 1}, {1, 0, 2}, {1, 2, 0}, {2, 0, 1}, {2, 1, 0}}};
   std::vector<std::array<int, 4>> tets;
   for (int k = 0; k < n; ++k)
     for (int j = 0; j < 2 * n; ++j)
-      for (int i = 0; i < 2 * n; ++i) {
-        // Away from the axis in x and y, downwards in z (k grows downwards).
-        const std::array<int, 3> start = {i < n ? i + 1 : i, j < n ? j + 1 : j, k};
-        const std::array<int, 3> step = {i < n ? -1 : 1, j < n ? -1 : 1, 1};
-        for (const auto& path : paths) {
-          std::array<int, 3> c = start;
-          std::array<int, 4> t;
-          t[0] = id(c[0], c[1], c[2]);
-          for (int s = 0; s < 3; ++s) {
-            c[path[s]] += step[path[s]];
-            t[s + 1] = id(c[0], c[1], c[2]);
-          }
-          tets.push_back(t);
-        }
-      }
+      for (int i = 0; i < 2 * n; ++i)  // away from the axis in x and y, downwards in z
+        append_kuhn_cube({i < n ? i + 1 : i, j < n ? j + 1 : j, k},
+                         {i < n ? -1 : 1, j < n ? -1 : 1, 1}, id, tets);
   return {std::move(points), std::move(tets)};
 }
 

@@ -119,6 +119,23 @@ TetHierarchy build_tet_hierarchy(TetMesh coarse, int refinements) {
   return h;
 }
 
+void append_kuhn_cube(const std::array<int, 3>& start, const std::array<int, 3>& step,
+                      const std::function<int(int, int, int)>& id,
+                      std::vector<std::array<int, 4>>& tets) {
+  const std::array<std::array<int, 3>, 6> paths = {
+      {{0, 1, 2}, {0, 2, 1}, {1, 0, 2}, {1, 2, 0}, {2, 0, 1}, {2, 1, 0}}};
+  for (const auto& path : paths) {
+    std::array<int, 3> c = start;
+    std::array<int, 4> t;
+    t[0] = id(c[0], c[1], c[2]);
+    for (int s = 0; s < 3; ++s) {
+      c[path[s]] += step[path[s]];
+      t[s + 1] = id(c[0], c[1], c[2]);
+    }
+    tets.push_back(t);
+  }
+}
+
 TetMesh make_box(const std::array<int, 3>& cells, const Point3& lengths) {
   const int nx = cells[0], ny = cells[1], nz = cells[2];
   auto id = [&](int i, int j, int k) { return (k * (ny + 1) + j) * (nx + 1) + i; };
@@ -127,23 +144,10 @@ TetMesh make_box(const std::array<int, 3>& cells, const Point3& lengths) {
     for (int j = 0; j <= ny; ++j)
       for (int i = 0; i <= nx; ++i)
         vertices.emplace_back(lengths.x() * i / nx, lengths.y() * j / ny, lengths.z() * k / nz);
-  // Kuhn: the six paths from the cube's low corner to its high one, one axis at a time.
-  const std::array<std::array<int, 3>, 6> paths = {
-      {{0, 1, 2}, {0, 2, 1}, {1, 0, 2}, {1, 2, 0}, {2, 0, 1}, {2, 1, 0}}};
   std::vector<std::array<int, 4>> tets;
   for (int k = 0; k < nz; ++k)
     for (int j = 0; j < ny; ++j)
-      for (int i = 0; i < nx; ++i)
-        for (const auto& path : paths) {
-          std::array<int, 3> c = {i, j, k};
-          std::array<int, 4> t;
-          t[0] = id(c[0], c[1], c[2]);
-          for (int s = 0; s < 3; ++s) {
-            ++c[path[s]];
-            t[s + 1] = id(c[0], c[1], c[2]);
-          }
-          tets.push_back(t);
-        }
+      for (int i = 0; i < nx; ++i) append_kuhn_cube({i, j, k}, {1, 1, 1}, id, tets);
   const std::vector<std::string> names = {"left", "right", "front", "back", "bottom", "top"};
   const TetMesh plain(vertices, tets, {}, names);
   std::vector<BoundaryFace> boundary;

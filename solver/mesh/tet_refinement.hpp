@@ -3,6 +3,7 @@
 // and the nested hierarchy T_1 ⊂ … ⊂ T_J of the 3D multilevel method (docs/method.md §11);
 // the built-in box mesh.
 
+#include <functional>
 #include <vector>
 
 #include "mesh/tet_mesh.hpp"
@@ -41,6 +42,13 @@ struct TetHierarchy {
 };
 
 TetHierarchy build_tet_hierarchy(TetMesh coarse, int refinements);
+
+/// One cube's six Kuhn tetrahedra, appended to `tets`: the paths from grid point `start` to the
+/// opposite corner, one axis at a time, each axis a stepping by step[a] (±1); `id` numbers the
+/// grid points. Each tetrahedron's vertices are in path order (what Bey's refinement keeps).
+void append_kuhn_cube(const std::array<int, 3>& start, const std::array<int, 3>& step,
+                      const std::function<int(int, int, int)>& id,
+                      std::vector<std::array<int, 4>>& tets);
 
 /// The box [0, lx] × [0, ly] × [0, lz] in n_x × n_y × n_z cubes of six Kuhn tetrahedra each (a
 /// conforming mesh whose red refinements stay in three shape classes); boundary groups left,
