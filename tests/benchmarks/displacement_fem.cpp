@@ -1,7 +1,7 @@
 // Benchmark and reference (not a test): an independent displacement finite element solution of
 // a contact case — the method FOSLS is measured against (docs/validation.md §12).
 //
-//   build/bin/fosls-bench-displacement CASE.json [--element p1|mixed]
+//   build/bin/fosls-bench-displacement CASE.json [--element p1|mixed] [--axisymmetric]
 //
 // Both discretisations are nodal, on the case's mesh refined `mesh.refinements` times, and share
 // nothing with the FOSLS discretisation but the mesh and the problem's data:
@@ -14,6 +14,9 @@
 // primal–dual active set method (a semismooth Newton method): each step replaces the rows of the
 // active vertices by u·d = g and the tangential equilibrium, and solves with a sparse LU (UMFPACK),
 // until the active set repeats. The contact force is the sum of the nodal contact forces.
+// --axisymmetric: the mesh is the meridian section (x = r ≥ 0, y the axis) of a body of
+// revolution, loaded and constrained symmetrically; the force is the whole body's (the 3D
+// half ball's reference, docs/validation.md §16).
 // Prints one JSON object.
 #include <sys/resource.h>
 
@@ -35,6 +38,7 @@
 #include "case/case_reader.hpp"
 #include "case/expression.hpp"
 #include "case/mesh_factory.hpp"
+#include "displacement_elements.hpp"
 #include "mesh/refinement.hpp"
 
 namespace {
@@ -65,6 +69,11 @@ struct NodalConstraint {
   int free_component = -1;  ///< -1: both free; 0 or 1: the one a roller leaves free
 };
 
+struct Options {
+  bool mixed = false;
+  bool axisymmetric = false;  ///< x is the radius, y the axis; forces of the whole body
+};
+
 /// The system before boundary conditions: displacement DOFs 2v, 2v + 1 of vertex v, then the
 /// pressure DOFs (mixed only).
 struct Assembled {
@@ -91,9 +100,11 @@ std::vector<std::vector<std::pair<int, double>>> pressure_weights(const Mesh& co
 }
 
 /// The system on level `level` of `meshes` (mixed: the pressure on level − 1).
-Assembled assemble(const MeshHierarchy& meshes, int level, const CaseSpec& spec, bool mixed) {
+Assembled assemble(const MeshHierarchy& meshes, int level, const CaseSpec& spec,
+                   const Options& options) {
   const Mesh& mesh = meshes.meshes[level];
-  const double mu = spec.material.mu, lambda = spec.material.lambda;
+  const bool mixed = options.mixed;
+  const double lambda = spec.material.lambda;
   const int nv = mesh.num_vertices();
   std::vector<std::vector<std::pair<int, double>>> pw;
   int np = 0;
@@ -105,51 +116,29 @@ Assembled assemble(const MeshHierarchy& meshes, int level, const CaseSpec& spec,
   Assembled out;
   out.displacement_dofs = 2 * nv;
   out.f = Eigen::VectorXd::Zero(2 * nv + np);
-  const double fx = constant(spec.body_force[0], "body_force"),
-               fy = constant(spec.body_force[1], "body_force");
+  ElementData data;
+  data.mu = spec.material.mu;
+  data.lambda_in_stiffness = mixed ? 0.0 : lambda;
+  data.body_force =
+      Point(constant(spec.body_force[0], "body_force"), constant(spec.body_force[1], "body_force"));
   Triplets t;
   t.reserve(static_cast<std::size_t>(mesh.num_triangles()) * (36 + (mixed ? 2 * 6 * 6 + 36 : 0)));
   for (int k = 0; k < mesh.num_triangles(); ++k) {
     const auto& tri = mesh.triangle(k);
-    const Point &a = mesh.vertex(tri[0]), &b = mesh.vertex(tri[1]), &c = mesh.vertex(tri[2]);
-    const double area = mesh.triangle_area(k);
-    // ∇λ_i = R(opposite edge) / (2|T|), R the rotation by +90° of (x_{i+2} − x_{i+1}).
-    std::array<Point, 3> grad;
-    const std::array<Point, 3> x = {a, b, c};
-    for (int i = 0; i < 3; ++i) {
-      const Point e = x[(i + 2) % 3] - x[(i + 1) % 3];
-      grad[i] = Point(-e.y(), e.x()) / (2.0 * area);
-    }
-    // B-matrix rows: ε_xx, ε_yy, 2ε_xy; columns the six DOFs (x, y of each vertex).
-    Eigen::Matrix<double, 3, 6> B = Eigen::Matrix<double, 3, 6>::Zero();
-    Eigen::Matrix<double, 1, 6> div;
-    for (int i = 0; i < 3; ++i) {
-      B(0, 2 * i) = grad[i].x();
-      B(1, 2 * i + 1) = grad[i].y();
-      B(2, 2 * i) = grad[i].y();
-      B(2, 2 * i + 1) = grad[i].x();
-      div(2 * i) = grad[i].x();
-      div(2 * i + 1) = grad[i].y();
-    }
-    Eigen::Matrix3d D = Eigen::Matrix3d::Zero();  // 2μ ε:ε in Voigt form
-    D(0, 0) = D(1, 1) = 2 * mu;
-    D(2, 2) = mu;
-    Eigen::Matrix<double, 6, 6> ke = area * B.transpose() * D * B;
-    if (!mixed) ke += area * lambda * div.transpose() * div;
-    for (int i = 0; i < 6; ++i)
+    for (int i = 0; i < 3; ++i) data.x[i] = mesh.vertex(tri[i]);
+    const ElementMatrices m =
+        options.axisymmetric ? axisymmetric_element(data) : plane_strain_element(data);
+    for (int i = 0; i < 6; ++i) {
+      out.f[2 * tri[i / 2] + i % 2] += m.load[i];
       for (int j = 0; j < 6; ++j)
-        t.emplace_back(2 * tri[i / 2] + i % 2, 2 * tri[j / 2] + j % 2, ke(i, j));
-    for (int i = 0; i < 3; ++i) {
-      out.f[2 * tri[i]] += area / 3 * fx;
-      out.f[2 * tri[i] + 1] += area / 3 * fy;
+        t.emplace_back(2 * tri[i / 2] + i % 2, 2 * tri[j / 2] + j % 2, m.stiffness(i, j));
     }
     if (!mixed) continue;
-    // (q, div v): div v is constant on T and q linear, so ∫_T q = |T| × the mean of q's values
-    // at T's vertices; (p, q)/λ with the P1 mass matrix |T|/12 (1 + δ_ij).
+    // (q, div v) and −(p, q)/λ, with q and p in the coarser level's P1 space.
     for (int i = 0; i < 3; ++i)
       for (const auto& [pdof, weight] : pw[tri[i]])
         for (int j = 0; j < 6; ++j) {
-          const double value = area / 3 * weight * div(j);
+          const double value = weight * m.coupling(i, j);
           const int row = 2 * nv + pdof, col = 2 * tri[j / 2] + j % 2;
           t.emplace_back(row, col, value);
           t.emplace_back(col, row, value);
@@ -159,8 +148,7 @@ Assembled assemble(const MeshHierarchy& meshes, int level, const CaseSpec& spec,
       for (int j = 0; j < 3; ++j)
         for (const auto& [pi, wi] : pw[tri[i]])
           for (const auto& [pj, wj] : pw[tri[j]])
-            t.emplace_back(2 * nv + pi, 2 * nv + pj,
-                           -area / 12 * (i == j ? 2.0 : 1.0) * wi * wj / lambda);
+            t.emplace_back(2 * nv + pi, 2 * nv + pj, -m.mass(i, j) * wi * wj / lambda);
   }
   out.K.resize(2 * nv + np, 2 * nv + np);
   out.K.setFromTriplets(t.begin(), t.end());
@@ -174,7 +162,8 @@ struct BoundaryData {
   std::vector<NodalConstraint> contact;
 };
 
-BoundaryData boundary_data(const Mesh& mesh, const CaseSpec& spec, Eigen::VectorXd& f) {
+BoundaryData boundary_data(const Mesh& mesh, const CaseSpec& spec, bool axisymmetric,
+                           Eigen::VectorXd& f) {
   BoundaryData out;
   out.prescribed.assign(2 * mesh.num_vertices(), std::nan(""));
   std::vector<Point> normal_sum(mesh.num_vertices(), Point::Zero());
@@ -197,9 +186,10 @@ BoundaryData boundary_data(const Mesh& mesh, const CaseSpec& spec, Eigen::Vector
         break;
       case BoundaryCondition::Type::kNeumann:
         for (int k = 0; k < 2; ++k) {
-          const double share = 0.5 * mesh.edge_length(e) * constant(bc.values[k], group);
-          f[2 * v0 + k] += share;
-          f[2 * v1 + k] += share;
+          const double t = constant(bc.values[k], group);
+          const auto w = edge_load_weights(mesh.vertex(v0), mesh.vertex(v1), axisymmetric);
+          f[2 * v0 + k] += w[0] * t;
+          f[2 * v1 + k] += w[1] * t;
         }
         break;
       case BoundaryCondition::Type::kContact:
@@ -357,7 +347,19 @@ std::vector<char> prolongated_active_set(const BoundaryData& coarse,
   return out;
 }
 
-int run(const std::string& path, bool mixed) {
+/// A body of revolution about the y axis: the mesh in x ≥ 0, and the axis (where x = 0 on the
+/// boundary) held by a roller, u_x = 0 — the case must say so.
+void check_axisymmetric(const Mesh& mesh, const BoundaryData& bd) {
+  for (int v = 0; v < mesh.num_vertices(); ++v) {
+    const double r = mesh.vertex(v).x();
+    if (r < -1e-12) throw std::runtime_error("axisymmetric: the mesh must lie in x >= 0");
+    if (std::abs(r) <= 1e-12 && std::isnan(bd.prescribed[2 * v]))
+      throw std::runtime_error("axisymmetric: a vertex on the axis x = 0 needs u_x = 0");
+  }
+}
+
+int run(const std::string& path, const Options& options) {
+  const bool mixed = options.mixed;
   std::ifstream in(path);
   if (!in) throw std::runtime_error("cannot read " + path);
   const CaseReadResult read = read_case(nlohmann::json::parse(in));
@@ -382,8 +384,9 @@ int run(const std::string& path, bool mixed) {
   int coarse_iterations = 0;
   for (int level = mixed ? 1 : 0; level <= finest; ++level) {
     const auto t1 = Clock::now();
-    sys = assemble(meshes, level, spec, mixed);
-    BoundaryData next = boundary_data(meshes.meshes[level], spec, sys.f);
+    sys = assemble(meshes, level, spec, options);
+    BoundaryData next = boundary_data(meshes.meshes[level], spec, options.axisymmetric, sys.f);
+    if (options.axisymmetric) check_axisymmetric(meshes.meshes[level], next);
     assembly_s += seconds_since(t1);
     std::vector<char> start(next.contact.size(), 0);
     if (!s.active_set.empty())
@@ -396,9 +399,12 @@ int run(const std::string& path, bool mixed) {
   }
   Point force = Point::Zero();
   for (std::size_t i = 0; i < bd.contact.size(); ++i) force -= s.contact_force[i] * bd.contact[i].d;
+  // A body of revolution's radial tractions cancel around the axis: its force is along it.
+  if (options.axisymmetric) force.x() = 0.0;
   rusage usage{};
   getrusage(RUSAGE_SELF, &usage);
   const nlohmann::json out = {{"element", mixed ? "mixed" : "p1"},
+                              {"axisymmetric", options.axisymmetric},
                               {"refinements", spec.mesh.refinements},
                               {"vertices", meshes.finest().num_vertices()},
                               {"dofs", sys.f.size()},
@@ -422,10 +428,13 @@ int run(const std::string& path, bool mixed) {
 
 int main(int argc, char** argv) {
   std::string path, element = "p1";
+  Options options;
   for (int i = 1; i < argc; ++i) {
     const std::string arg = argv[i];
     if (arg == "--element" && i + 1 < argc) {
       element = argv[++i];
+    } else if (arg == "--axisymmetric") {
+      options.axisymmetric = true;
     } else if (path.empty() && arg.rfind("--", 0) != 0) {
       path = arg;
     } else {
@@ -434,11 +443,12 @@ int main(int argc, char** argv) {
     }
   }
   if (path.empty() || (element != "p1" && element != "mixed")) {
-    std::fprintf(stderr, "usage: %s CASE.json [--element p1|mixed]\n", argv[0]);
+    std::fprintf(stderr, "usage: %s CASE.json [--element p1|mixed] [--axisymmetric]\n", argv[0]);
     return 2;
   }
+  options.mixed = element == "mixed";
   try {
-    return run(path, element == "mixed");
+    return run(path, options);
   } catch (const std::exception& e) {
     std::fprintf(stderr, "%s\n", e.what());
     return 1;

@@ -4,7 +4,8 @@ target_link_libraries(fosls-bench-assembly PRIVATE fosls_internals)
 
 # The displacement FEM that FOSLS is measured against (docs/validation.md §12): its own sparse LU.
 find_library(UMFPACK_LIBRARY NAMES umfpack REQUIRED)
-add_executable(fosls-bench-displacement ${CMAKE_CURRENT_LIST_DIR}/displacement_fem.cpp)
+add_executable(fosls-bench-displacement ${CMAKE_CURRENT_LIST_DIR}/displacement_fem.cpp
+                                        ${CMAKE_CURRENT_LIST_DIR}/displacement_elements.cpp)
 target_link_libraries(fosls-bench-displacement PRIVATE fosls_internals ${UMFPACK_LIBRARY})
 
 # The order-2 space's force, solved by pdas (docs/performance.md, "Order 2").

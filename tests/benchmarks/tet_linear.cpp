@@ -62,8 +62,9 @@ TetProblemData problem(double lambda) {
 struct Options {
   bool contact = false, hertz = false, pdas = false, no_strip = false;
   HalfBallSpec ball{.cells = 2, .grading = 3.0};
-  double delta = 0.01;  ///< the Hertz problem's indentation
-  std::string vtu;      ///< where to write the solution for ParaView, if anywhere
+  double delta = 0.01;      ///< the Hertz problem's indentation
+  double volumetric = 1.0;  ///< weights.c2_volumetric (v, docs/method.md §2)
+  std::string vtu;          ///< where to write the solution for ParaView, if anywhere
 };
 
 bool parse_word(const std::string& w, Options& o) {
@@ -73,17 +74,19 @@ bool parse_word(const std::string& w, Options& o) {
   if (w == "nostrip") return o.no_strip = true;
   if (w.rfind("cells=", 0) == 0) return (o.ball.cells = std::atoi(w.c_str() + 6)) > 0;
   if (w.rfind("vtu=", 0) == 0) return !(o.vtu = w.substr(4)).empty();
+  if (w.rfind("v=", 0) == 0) return (o.volumetric = std::atof(w.c_str() + 2)) > 0;
   if (w.rfind("delta=", 0) == 0) return (o.delta = std::atof(w.c_str() + 6)) > 0;
   if (w.rfind("grading=", 0) == 0) return (o.ball.grading = std::atof(w.c_str() + 8)) >= 1.0;
   return false;
 }
 
 TetDiscretization discretization(const Options& o, double lambda, int r) {
-  if (o.hertz)
-    return TetDiscretization(build_tet_hierarchy(make_half_ball(o.ball), r),
-                             testing::hertz_half_ball(lambda, o.delta));
-  return TetDiscretization(build_tet_hierarchy(make_box({2, 2, 2}), r),
-                           o.contact ? testing::signorini_block(lambda) : problem(lambda));
+  TetProblemData p = o.hertz     ? testing::hertz_half_ball(lambda, o.delta)
+                     : o.contact ? testing::signorini_block(lambda)
+                                 : problem(lambda);
+  p.weights.c2_volumetric = o.volumetric;
+  return TetDiscretization(
+      build_tet_hierarchy(o.hertz ? make_half_ball(o.ball) : make_box({2, 2, 2}), r), p);
 }
 
 /// The half ball's contact radius and peak pressure: a from the pressure's second moment about
@@ -117,9 +120,10 @@ int main(int argc, char** argv) {
   bool usable = argc >= 3;
   for (int k = 3; k < argc && usable; ++k) usable = parse_word(argv[k], o);
   if (!usable) {
-    std::fprintf(stderr,
-                 "usage: fosls-bench-3d --header | fosls-bench-3d LAMBDA REFINEMENTS "
-                 "[contact|hertz [cells=N] [grading=P] [delta=D]] [pdas|nostrip] [vtu=FILE]\n");
+    std::fprintf(
+        stderr,
+        "usage: fosls-bench-3d --header | fosls-bench-3d LAMBDA REFINEMENTS "
+        "[contact|hertz [cells=N] [grading=P] [delta=D]] [v=V] [pdas|nostrip] [vtu=FILE]\n");
     return 2;
   }
   const double lambda =

@@ -18,7 +18,7 @@ find_package(Python3 COMPONENTS Interpreter)
 if(Python3_Interpreter_FOUND)
   foreach(check ShippedBenchmarks HertzCompressible HertzIncompressible FiniteBody
                 SolverIterations ErrorEstimator SignoriniSquare CornerSingularity CornerTrueError
-                DisplacementFem)
+                DisplacementFem AxisymmetricReference)
     add_test(NAME validation_${check}
              COMMAND ${Python3_EXECUTABLE} ${VALIDATION_DIR}/test_validation.py
                      --bin $<TARGET_FILE:fosls-contact>
