@@ -107,6 +107,20 @@ std::array<double, 2> contact_radius_and_peak(const TetDiscretization& disc, con
   return {std::sqrt(2.5 * moment / force), peak};
 }
 
+/// The force through the faces of mesh group `group` on the finest level, −∫ σ n (the force the
+/// body exerts there; μ = 1 in these problems, and σ's rows are Cartesian off the contact).
+Point3 force_through_group(const TetDiscretization& disc, const Vector& x, int group) {
+  const TetAssembler& a = disc.assembler();
+  const TetMesh& mesh = disc.meshes().finest();
+  const Vector full = a.full_vector(disc.problem(), x);
+  const TetSpace& space = a.space();
+  Point3 force = Point3::Zero();
+  for (int f = 0; f < mesh.num_faces(); ++f)
+    if (mesh.is_boundary_face(f) && mesh.face_group(f) == group)
+      force -= full.segment<3>(space.sigma_dof(f, 0));
+  return force;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -155,6 +169,7 @@ int main(int argc, char** argv) {
         "%.4f, Hertz(F) %.4f, %+.2f %% |",
         force.z(), hertz, 100.0 * (force.z() / hertz - 1.0), radius, a_f,
         100.0 * (radius / a_f - 1.0), peak, p0_f, 100.0 * (peak / p0_f - 1.0));
+    std::printf(" through the top: F_z = %.7f |", force_through_group(disc, x, 0).z());
   }
   if (o.contact || o.hertz)
     std::printf(
