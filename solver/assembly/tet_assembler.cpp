@@ -76,6 +76,12 @@ TetAssembler::TetAssembler(const TetSpace& space, const TetProblemData& data)
   const double lambda = data.material.lambda / mu_;
   kappa_ = data.material.incompressible() ? 1.0 / 3.0 : lambda / (3.0 * lambda + 2.0);
   const TetMesh& mesh = space.mesh();
+  // Gaps capped at a length far beyond the body, as in 2D: a ray that misses the obstacle leaves
+  // its vertex effectively unconstrained, and the functional's gap term stays finite.
+  Point3 lo = mesh.vertex(0), hi = mesh.vertex(0);
+  for (int v = 1; v < mesh.num_vertices(); ++v)
+    lo = lo.cwiseMin(mesh.vertex(v)), hi = hi.cwiseMax(mesh.vertex(v));
+  const double far = 10.0 * (hi - lo).norm();
   vertex_gap_.assign(mesh.num_vertices(), std::numeric_limits<double>::infinity());
   for (int f = 0; f < mesh.num_faces(); ++f) {
     if (!space.is_contact_face(f)) continue;
@@ -87,6 +93,7 @@ TetAssembler::TetAssembler(const TetSpace& space, const TetProblemData& data)
             space.is_contact_vertex(v) ? Point3(space.vertex_frame(v).col(0)) : mesh.face_normal(f);
         g = group.gap_along_normal(mesh.vertex(v), n);
       }
+      if (!std::isfinite(g) || g > far) g = far;
       vertex_gap_[v] = std::min(vertex_gap_[v], g);
     }
   }

@@ -81,9 +81,12 @@ std::vector<CaseError> check_3d_groups(const Case3dSpec& spec, const TetMesh& me
       errors.push_back(unknown_group_problem(name, mesh.group_names()));
       continue;
     }
-    if (bc.type != Condition3d::Type::kContact) continue;
+    // A plane's gap along a face's normal that does not point at it is infinite; a sphere's or
+    // gap function's may be, and the face is then unconstrained (as in 2D).
+    if (bc.type != Condition3d::Type::kContact || bc.obstacle.kind != Obstacle3d::Kind::kPlane)
+      continue;
     for (int f = 0; f < mesh.num_faces(); ++f) {
-      if (mesh.face_group(f) != g || mesh.face_normal(f).dot(bc.plane_normal) < 0) continue;
+      if (mesh.face_group(f) != g || mesh.face_normal(f).dot(bc.obstacle.normal) < 0) continue;
       const Point3 c = mesh.face_centroid(f);
       std::ostringstream s;
       s << "the face of group " << name << " at (" << c.x() << ", " << c.y() << ", " << c.z()
@@ -91,7 +94,10 @@ std::vector<CaseError> check_3d_groups(const Case3dSpec& spec, const TetMesh& me
            "the gap is measured along the body normal, so every face of a contact group must "
            "face the plane; check the normal's sign (from the plane into the body) or make the "
            "contact group smaller";
-      errors.push_back({child_pointer(child_pointer("/boundary", name), "normal"), s.str()});
+      const std::string at = child_pointer("/boundary", name);
+      errors.push_back(
+          {child_pointer(bc.obstacle.as_object ? child_pointer(at, "obstacle") : at, "normal"),
+           s.str()});
       break;
     }
   }

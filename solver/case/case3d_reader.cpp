@@ -6,6 +6,7 @@
 #include <algorithm>
 
 #include "case/case_sections.hpp"
+#include "case/contact3d_section.hpp"
 #include "case/early_group_check.hpp"
 #include "case/rule_checker.hpp"
 
@@ -14,10 +15,6 @@ namespace fosls {
 namespace {
 
 using nlohmann::json;
-
-ValueRule vector3_value(const std::string& names) {
-  return tuple_value(number_value(), 3, "an array of 3 numbers " + names);
-}
 
 ValueRule cells_value(int max) { return integer_value(Range::closed(1, max)); }
 
@@ -95,7 +92,7 @@ ObjectRulePtr mesh3d_rule(const CaseReadOptions& options) {
   return r;
 }
 
-ObjectRulePtr condition3d_rule() {
+ObjectRulePtr condition3d_rule(const CaseReadOptions& options) {
   auto r = std::make_shared<ObjectRule>();
   r->title = "a 3D boundary condition";
   r->anchor = "condition3d";
@@ -115,20 +112,7 @@ ObjectRulePtr condition3d_rule() {
        {required_field("traction", vector, "the prescribed traction [t_x, t_y, t_z]")},
        {},
        ""},
-      {"contact",
-       "a contact condition",
-       "frictionless contact with a rigid plane, the gap measured along the body normal",
-       {required_field("point", vector, "a point [x, y, z] of the plane"),
-        required_field("normal", vector,
-                       "the normal [nx, ny, nz] from the plane into the body (any non-zero "
-                       "length; it is normalised)")},
-       [](const json& j, const std::string& pointer, RuleChecker& checker) {
-         if (!checker.usable(j, pointer, {"normal"})) return;
-         const auto& n = j["normal"];
-         if (Point3(n[0].get<double>(), n[1].get<double>(), n[2].get<double>()).norm() == 0)
-           checker.error(child_pointer(pointer, "normal"), "the normal must not be zero");
-       },
-       "the normal is not zero"},
+      contact3d_variant(options),
   };
   return r;
 }
@@ -176,8 +160,7 @@ Condition3d read_condition3d(const json& j) {
   const std::string type = j["type"].get<std::string>();
   if (type == "contact") {
     c.type = Condition3d::Type::kContact;
-    c.plane_point = read_vector3(j["point"]);
-    c.plane_normal = read_vector3(j["normal"]).normalized();
+    c.obstacle = read_obstacle3d(j);
     return c;
   }
   c.type = type == "dirichlet" ? Condition3d::Type::kDirichlet : Condition3d::Type::kNeumann;
@@ -209,7 +192,7 @@ ObjectRulePtr case3d_rule(const CaseReadOptions& options) {
       required_field(
           "boundary",
           map_value(name_value(options.limits.max_name_length, "the boundary group name"),
-                    object_value(condition3d_rule()), options.limits.max_geometry_entities,
+                    object_value(condition3d_rule(options)), options.limits.max_geometry_entities,
                     "object mapping boundary group names to conditions", "conditions"),
           "the conditions on the boundary groups"),
       optional_field("solver", object_value(solver_rule()), nullptr,

@@ -42,19 +42,38 @@ ContactSummary contact_summary(const TetDiscretization& disc, const Vector& x_fu
   return s;
 }
 
-/// The smallest initial gap of a contact vertex along its face's normal, and where.
-std::pair<double, Point3> smallest_gap(const Case3dSpec& spec, const TetMesh& mesh) {
-  std::pair<double, Point3> out{std::numeric_limits<double>::infinity(), Point3::Zero()};
+/// The smallest initial gap of a contact vertex along its face's normal, where, and the
+/// obstacle it is measured to.
+struct SmallestGap {
+  double gap = std::numeric_limits<double>::infinity();
+  Point3 at = Point3::Zero();
+  const Obstacle3d* obstacle = nullptr;
+};
+
+SmallestGap smallest_gap(const Case3dSpec& spec, const TetMesh& mesh) {
+  SmallestGap out;
   for (int f = 0; f < mesh.num_faces(); ++f) {
     if (mesh.face_group(f) < 0) continue;  // an interior face
     const auto it = spec.boundary.find(mesh.group_names()[mesh.face_group(f)]);
     if (it == spec.boundary.end() || it->second.type != Condition3d::Type::kContact) continue;
     for (int v : mesh.face(f)) {
       const double g = it->second.gap_along(mesh.vertex(v), mesh.face_normal(f));
-      if (g < out.first) out = {g, mesh.vertex(v)};
+      if (g < out.gap || !out.obstacle) out = {g, mesh.vertex(v), &it->second.obstacle};
     }
   }
   return out;
+}
+
+/// What to move when the body starts inside an obstacle.
+std::string move_hint(const Obstacle3d& o) {
+  switch (o.kind) {
+    case Obstacle3d::Kind::kPlane:
+      return "Move the plane's point";
+    case Obstacle3d::Kind::kSphere:
+      return "Move the sphere's center";
+    default:
+      return "Check the gap g";
+  }
 }
 
 /// The length of the mesh's bounding box's diagonal: the body's size.
@@ -76,22 +95,25 @@ std::vector<ResultWarning> contact_warnings(const Case3dSpec& spec, const TetMes
                                             const ContactSummary& c) {
   std::vector<ResultWarning> warnings;
   if (c.faces == 0) return warnings;
-  const auto [gap, at] = smallest_gap(spec, mesh);
+  const auto [gap, at, obstacle] = smallest_gap(spec, mesh);
+  const std::string noun = obstacle->noun();
   if (gap < -kTouchingOverlap * body_size(mesh))
     warnings.push_back({"initial_penetration",
-                        "the body starts inside the plane: the gap along the body normal is "
-                        "down to " +
-                            sentence_number(gap) + " at " + where(at) +
-                            "; the solution pushes it out. Move the plane's point if this is "
-                            "not meant",
+                        "the body starts inside the " + noun +
+                            ": the gap along the body normal is down to " + sentence_number(gap) +
+                            " at " + where(at) + "; the solution pushes it out. " +
+                            move_hint(*obstacle) + " if this is not meant",
                         true});
   if (c.faces_in_contact == 0)
-    warnings.push_back({"no_contact",
-                        "nothing touches the plane: no contact face carries pressure and the "
-                        "force is 0; the smallest gap is " +
-                            sentence_number(gap) + " at " + where(at) +
-                            ". Press the body towards the plane",
-                        true});
+    warnings.push_back(
+        {"no_contact",
+         "nothing touches the " + noun + ": no contact face carries pressure and the force is 0; " +
+             (std::isfinite(gap)
+                  ? "the smallest gap is " + sentence_number(gap) + " at " + where(at)
+                  : "no contact vertex's outward normal meets "
+                    "it") +
+             ". Press the body towards the " + noun,
+         true});
   return warnings;
 }
 

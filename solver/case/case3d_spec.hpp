@@ -1,9 +1,11 @@
 #pragma once
 // A 3D case ("dimension": 3) as the library sees it after its JSON has been validated
 // (case3d_reader.hpp; docs/case-format.md, "3D cases"). Its own small format: the 2D case's
-// material and solver sections, 3-vectors of numbers, a rigid plane as the obstacle.
+// material and solver sections, 3-vectors of numbers, a rigid plane, ball or gap function as the
+// obstacle.
 
 #include <array>
+#include <functional>
 #include <map>
 #include <string>
 
@@ -36,16 +38,32 @@ inline std::string mesh3d_source_pointer(const Mesh3dSpec& m) {
   }
 }
 
+/// A rigid obstacle of a 3D contact condition.
+struct Obstacle3d {
+  enum class Kind { kPlane, kSphere, kGap };
+  Kind kind = Kind::kPlane;
+  Point3 point = Point3::Zero();    ///< plane: a point of it
+  Point3 normal = Point3::UnitZ();  ///< plane: unit normal from the plane into the body
+  Point3 center = Point3::Zero();   ///< sphere: a rigid ball, the body outside it
+  double radius = 1.0;              ///< sphere
+  /// gap: g(x, y, z), the gap along the body normal itself (compiled once, when read).
+  std::function<double(double, double, double)> gap;
+  bool as_object =
+      false;  ///< given as the field `obstacle` (errors point into it), not point/normal
+  /// The distance from x to the obstacle along the body's unit outward normal n there: the
+  /// first hit of the ray x + s n (+∞ when it misses); where x is already inside the ball, its
+  /// radial distance (negative), as 2D's circle.
+  double gap_along(const Point3& x, const Point3& n) const;
+  /// "plane", "sphere" or "obstacle": the word for messages.
+  const char* noun() const;
+};
+
 struct Condition3d {
   enum class Type { kDirichlet, kNeumann, kContact };
   Type type = Type::kNeumann;
   std::array<double, 3> values = {0, 0, 0};  ///< displacement (Dirichlet) or traction (Neumann)
-  Point3 plane_point = Point3::Zero();       ///< contact: a point of the rigid plane
-  Point3 plane_normal = Point3::UnitZ();     ///< contact: unit normal from the plane into the body
-  /// Contact: the distance from x to the plane along the body's unit outward normal n there.
-  double gap_along(const Point3& x, const Point3& n) const {
-    return (x - plane_point).dot(plane_normal) / -n.dot(plane_normal);
-  }
+  Obstacle3d obstacle;                       ///< contact
+  double gap_along(const Point3& x, const Point3& n) const { return obstacle.gap_along(x, n); }
 };
 
 struct Case3dSpec {

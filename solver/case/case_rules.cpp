@@ -86,6 +86,16 @@ ValueRule scalar_value(std::size_t max_expression_length) {
   return r;
 }
 
+ValueRule scalar3_value(std::size_t max_expression_length) {
+  ValueRule r = scalar_value(max_expression_length);
+  r.variables = 3;
+  return r;
+}
+
+ValueRule vector3_value(const std::string& names) {
+  return tuple_value(number_value(), 3, "an array of 3 numbers " + names);
+}
+
 ValueRule null_value() {
   ValueRule r;
   r.kind = ValueKind::kNull;

@@ -77,6 +77,7 @@ struct ValueRule {
   std::string entries = "entries";      ///< kArray, kMap: the word for its entries in messages
   ObjectRulePtr object;                 ///< kObject
   std::vector<ValueRule> alternatives;  ///< kOneOf
+  int variables = 2;                    ///< kScalar: expressions of x, y (2) or x, y, z (3)
   /// Appended to a range error, e.g. why the bound is there.
   std::string range_note;
   /// A semantic rule; `notes` says it in words for the docs.
@@ -142,6 +143,10 @@ ValueRule string_value(std::size_t max_length, std::string what);
 ValueRule name_value(std::size_t max_length, std::string what);
 ValueRule choice_value(std::vector<std::string> choices);
 ValueRule scalar_value(std::size_t max_expression_length);
+/// A 3D case's scalar: a number or an expression of x, y and z.
+ValueRule scalar3_value(std::size_t max_expression_length);
+/// Three numbers, e.g. a 3D point or vector; `names` says which ("[x, y, z]").
+ValueRule vector3_value(const std::string& names);
 ValueRule null_value();
 ValueRule boolean_value();
 /// An array of exactly `count` entries.

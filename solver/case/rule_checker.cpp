@@ -187,8 +187,8 @@ bool RuleChecker::check_scalar(const json& j, const ValueRule& rule, const std::
     error(pointer, "expected " + value_noun(rule) + ", got " + describe_value(j));
     return false;
   }
-  if (auto reason =
-          check_expression(j.get<std::string>(), static_cast<std::size_t>(rule.range.hi))) {
+  if (auto reason = check_expression(j.get<std::string>(), static_cast<std::size_t>(rule.range.hi),
+                                     rule.variables)) {
     error(pointer, *reason + unit_hint(j));
     return false;
   }

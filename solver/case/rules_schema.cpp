@@ -96,7 +96,9 @@ class SchemaWriter {
       case ValueKind::kScalar:
         s = {{"type", json::array({"number", "string"})},
              {"maxLength", number(rule.range.hi)},
-             {"description", "a number, or an expression of x and y (muParser syntax)"}};
+             {"description", rule.variables == 3
+                                 ? "a number, or an expression of x, y and z (muParser syntax)"
+                                 : "a number, or an expression of x and y (muParser syntax)"}};
         break;
       case ValueKind::kNull:
         s = {{"type", "null"}};

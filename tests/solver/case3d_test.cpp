@@ -10,6 +10,7 @@
 #include <fstream>
 #include <nlohmann/json.hpp>
 
+#include "../case3d_runs.hpp"
 #include "../one_tetrahedron_msh.hpp"
 #include "../shipped_example.hpp"
 #include "../tet_problems.hpp"
@@ -26,24 +27,9 @@ namespace {
 
 using nlohmann::json;
 
-json hertz_3d(int refinements) {
-  json j = testing::load_shipped_example("3d/hertz_3d");
-  j["mesh"]["refinements"] = refinements;
-  return j;
-}
-
-json run(const json& j) {
-  const auto read = read_case_3d(j);
-  EXPECT_TRUE(read.errors.empty()) << (read.errors.empty() ? "" : read.errors[0].detail);
-  return run_case_3d(*read.spec).result;
-}
-
-/// The pointers of the problems read_case_3d reports for `j`.
-std::vector<std::string> problems(const json& j) {
-  std::vector<std::string> pointers;
-  for (const auto& e : read_case_3d(j).errors) pointers.push_back(e.pointer);
-  return pointers;
-}
+using testing::hertz_3d;
+json run(const json& j) { return testing::run_3d(j); }
+std::vector<std::string> problems(const json& j) { return testing::case3d_problems(j); }
 
 /// The pointer of the CaseException the run throws (after a clean read).
 std::string run_problem(const json& j) {

@@ -1,0 +1,36 @@
+#pragma once
+// 3D cases for tests: the shipped hertz_3d at a given refinement, a case read and run, and the
+// pointers of a bad case's problems.
+#include <gtest/gtest.h>
+
+#include <nlohmann/json.hpp>
+#include <string>
+#include <vector>
+
+#include "case/case3d_reader.hpp"
+#include "case/case3d_runner.hpp"
+#include "shipped_example.hpp"
+
+namespace fosls::testing {
+
+inline nlohmann::json hertz_3d(int refinements) {
+  nlohmann::json j = load_shipped_example("3d/hertz_3d");
+  j["mesh"]["refinements"] = refinements;
+  return j;
+}
+
+/// The result of a case that must read cleanly (a read error is a test failure).
+inline nlohmann::json run_3d(const nlohmann::json& j) {
+  const auto read = read_case_3d(j);
+  EXPECT_TRUE(read.errors.empty()) << (read.errors.empty() ? "" : read.errors[0].detail);
+  return run_case_3d(*read.spec).result;
+}
+
+/// The pointers of the problems read_case_3d reports for `j`.
+inline std::vector<std::string> case3d_problems(const nlohmann::json& j) {
+  std::vector<std::string> pointers;
+  for (const auto& e : read_case_3d(j).errors) pointers.push_back(e.pointer);
+  return pointers;
+}
+
+}  // namespace fosls::testing
