@@ -12,8 +12,8 @@ import { dirname, join } from 'node:path';
 
 import { parseVtu } from '../../web/app/vtu.js';
 import { boundarySurface, contactFaces, normalOf } from '../../web/app/tet_surface.js';
-import { planeFrame, pressureCentre, projectToPlane, sampleLine } from '../../web/app/contact_line.js';
-import { hertzForResult3d, hertzSphereContact, halfBallRadius } from '../../web/app/hertz.js';
+import { planeFrame, pressureCentre, projectToPlane, sampleLine, sphereTangentPlane } from '../../web/app/contact_line.js';
+import { contactPlanes, contactSpheres, hertzForResult3d, hertzSphereContact, halfBallRadius } from '../../web/app/hertz.js';
 
 const here = dirname(fileURLToPath(import.meta.url));
 const repo = join(here, '..', '..');
@@ -259,4 +259,35 @@ test("the line's CSV: one row per sample, the pressure empty off the contact, He
   const samples = [{ s: -0.5, value: null, point: [-0.5, 0, -1] }, { s: 0, value: 2, point: [0, 0, -1] }];
   assert.equal(lineCsv(samples), 's,x,y,z,pressure\n-0.5,-0.5,0,-1,\n0,0,0,-1,2\n');
   assert.equal(lineCsv(samples, { a: 1, p0: 3 }), 's,x,y,z,pressure,hertz_pressure\n-0.5,-0.5,0,-1,,' + `${3 * Math.sqrt(0.75)}\n0,0,0,-1,2,3\n`);
+});
+
+test('the contact planes of a 3D case: point and normal, or an obstacle of type plane; not a sphere or gap', () => {
+  const caseDoc = {
+    boundary: {
+      top: { type: 'dirichlet', displacement: [0, 0, 0] },
+      a: { type: 'contact', point: [0, 0, -1], normal: [0, 0, 1] },
+      b: { type: 'contact', obstacle: { type: 'plane', point: [0, 0, 2], normal: [0, 0, -1] } },
+      c: { type: 'contact', obstacle: { type: 'sphere', center: [0, 0, 3], radius: 1 } },
+      d: { type: 'contact', obstacle: { type: 'gap', g: '1 - z' } },
+    },
+  };
+  assert.deepEqual(contactPlanes(caseDoc), [
+    { group: 'a', point: [0, 0, -1], normal: [0, 0, 1] },
+    { group: 'b', point: [0, 0, 2], normal: [0, 0, -1] },
+  ]);
+});
+
+test('a sphere obstacle gives the line its tangent plane at the contact, the normal into the body', () => {
+  const sphere = contactSpheres({
+    boundary: { top: { type: 'contact', obstacle: { type: 'sphere', center: [1, 1, 11], radius: 10 } } },
+  })[0];
+  assert.deepEqual(sphere, { group: 'top', center: [1, 1, 11], radius: 10 });
+  // Contact vertices around (1, 1, 1), the pressure symmetric about it; one vertex off contact.
+  const points3 = Float64Array.from([0.9, 1, 1, 1.1, 1, 1, 1, 0.9, 1, 1, 1.1, 1, 5, 5, 5]);
+  const flags = Float64Array.from([1, 1, 1, 1, 0]);
+  const pressure = Float64Array.from([2, 2, 3, 3, 100]);
+  const plane = sphereTangentPlane(points3, flags, pressure, sphere);
+  assert.deepEqual(plane.normal, [0, 0, -1]);
+  for (let k = 0; k < 3; k++) assert.ok(Math.abs(plane.point[k] - [1, 1, 1][k]) < 1e-12, plane.point);
+  assert.equal(sphereTangentPlane(points3, Float64Array.from([0, 0, 0, 0, 0]), pressure, sphere), null);
 });

@@ -1,6 +1,7 @@
 // End-to-end test of the page's 3D job view: the shipped hertz_3d (at refinements 1, about a
-// second) submitted from the editor to a real fosls-serve, shown in Debian's Chromium; then a
-// 2D job, whose view must come back as it was.
+// second) submitted from the editor to a real fosls-serve, shown in Debian's Chromium; a box
+// pressed onto a plane and a ball pressed into a box; then a 2D job, whose view must come back
+// as it was.
 //
 //   FOSLS_SERVE=build/bin/fosls-serve node --test tests/web/page3d.test.mjs
 //
@@ -249,6 +250,31 @@ test('a 3D case that is not the half ball: no Hertz curve, a flat pressure under
   const peak = Number(await page.locator('#line-plot').getAttribute('data-peak'));
   assert.ok(Math.abs(peak - result.contact.max_pressure) < 1e-9 * peak, `${peak} against ${result.contact.max_pressure}`);
   assert.equal(await page.locator('#surface-canvas').getAttribute('data-contact-triangles'), '2');
+});
+
+test('a ball pressed into a box: the pressure line runs in its tangent plane, through the peak', async () => {
+  const ball = readFileSync(join(repo, 'tests', 'web', 'fixtures', 'ball_on_box_3d.json'), 'utf8');
+  await page.locator('#case-text').fill(ball);
+  const row = await submitAndWaitForRow(page, 'ball_on_box_3d');
+  await row.locator('.state-succeeded').waitFor();
+  await page.waitForFunction(() => document.querySelector('#line-plot')?.dataset.points !== undefined &&
+    Number(document.querySelector('#line-plot')?.dataset.points) > 0);
+  const result = await getJson(`/v1/jobs/${await row.getAttribute('data-job-id')}/result`);
+  assert.ok(result.contact.force[2] < 0, 'the ball pushes the box down');
+  assert.ok(!(await page.locator('#key-numbers').innerText()).includes('Hertz'));
+  // The tangent plane at the contact, near the top's centre (1, 1, 1) (the Kuhn mesh is not
+  // symmetric, so the pressure centroid is off it by about 0.014): the line runs through a point
+  // on the sphere there, t1 nearly horizontal; its peak is a vertex mean, at most the largest
+  // face value.
+  const note = await page.locator('#line-note').innerText();
+  const [, centre, t1] = note.match(/^The line through \(([^)]*)\) at θ = [^ ]+ from t1 = \(([^)]*)\), in the contact plane/) ?? [];
+  assert.ok(centre && t1, note);
+  const c = centre.split(', ').map(Number);
+  assert.ok(Math.hypot(c[0] - 1, c[1] - 1, c[2] - 1) < 0.05, note);
+  assert.ok(Math.abs(Math.hypot(c[0] - 1, c[1] - 1, c[2] - 11) - 10) < 1e-3, `on the sphere (to the note's 4 digits): ${note}`);
+  assert.ok(Math.abs(Number(t1.split(', ')[2])) < 0.01, note);
+  const peak = Number(await page.locator('#line-plot').getAttribute('data-peak'));
+  assert.ok(peak > 0 && peak <= result.contact.max_pressure * (1 + 1e-12), `${peak} against ${result.contact.max_pressure}`);
 });
 
 test('a 2D job after the 3D one shows the 2D view, and comes back the same after the 3D one again', async () => {

@@ -32,11 +32,10 @@ export function projectToPlane(x, point, n) {
 }
 
 /**
- * The default centre of the line: the contact vertices' centroid weighted by `values` (their
- * pressure), projected onto the plane. Without pressure the plain centroid of the contact
- * vertices; without contact vertices the plane's point.
+ * The contact vertices' centroid weighted by `values` (their pressure); without pressure their
+ * plain centroid; without contact vertices null.
  */
-export function pressureCentre(points3, flags, values, plane) {
+function pressureCentroid(points3, flags, values) {
   const sum = [0, 0, 0], plain = [0, 0, 0];
   let weight = 0, count = 0;
   for (let v = 0; v < flags.length; v++) {
@@ -49,9 +48,34 @@ export function pressureCentre(points3, flags, values, plane) {
     weight += w;
     count++;
   }
-  if (count === 0) return [...plane.point];
-  const centroid = weight > 0 ? sum.map((c) => c / weight) : plain.map((c) => c / count);
+  if (count === 0) return null;
+  return weight > 0 ? sum.map((c) => c / weight) : plain.map((c) => c / count);
+}
+
+/**
+ * The default centre of the line: the contact vertices' centroid weighted by `values` (their
+ * pressure), projected onto the plane. Without pressure the plain centroid of the contact
+ * vertices; without contact vertices the plane's point.
+ */
+export function pressureCentre(points3, flags, values, plane) {
+  const centroid = pressureCentroid(points3, flags, values);
+  if (!centroid) return [...plane.point];
   return projectToPlane(centroid, plane.point, unit(plane.normal));
+}
+
+/**
+ * A sphere obstacle's plane for the line: tangent to the sphere where the line from its centre
+ * through the contact's pressure centroid meets it, the normal pointing from the ball into the
+ * body. Null without contact vertices or when the centroid is the centre.
+ */
+export function sphereTangentPlane(points3, flags, values, sphere) {
+  const centroid = pressureCentroid(points3, flags, values);
+  if (!centroid) return null;
+  const d = centroid.map((c, k) => c - sphere.center[k]);
+  const length = Math.hypot(...d);
+  if (!(length > 0)) return null;
+  const normal = d.map((c) => c / length);
+  return { point: sphere.center.map((c, k) => c + sphere.radius * normal[k]), normal };
 }
 
 /**

@@ -84,13 +84,26 @@ export function hertzSphereContact(F, R, lame) {
   return { a, p0, Estar };
 }
 
-/** The contact conditions of a 3D case: [{group, point, normal}] of its "contact" groups. */
+/**
+ * The plane obstacles of a 3D case's "contact" groups: [{group, point, normal}], given as point
+ * and normal or as an obstacle of type plane (a sphere or gap obstacle has no plane).
+ */
 export function contactPlanes(caseDoc) {
   const boundary = caseDoc?.boundary;
   if (!boundary || typeof boundary !== 'object') return [];
+  const planeOf = (c) => (c?.obstacle?.type === 'plane' ? c.obstacle : c);
   return Object.entries(boundary)
-    .filter(([, c]) => c?.type === 'contact' && Array.isArray(c.point) && Array.isArray(c.normal))
-    .map(([group, c]) => ({ group, point: c.point, normal: c.normal }));
+    .filter(([, c]) => c?.type === 'contact' && Array.isArray(planeOf(c).point) && Array.isArray(planeOf(c).normal))
+    .map(([group, c]) => ({ group, point: planeOf(c).point, normal: planeOf(c).normal }));
+}
+
+/** The sphere obstacles of a 3D case's "contact" groups: [{group, center, radius}]. */
+export function contactSpheres(caseDoc) {
+  const boundary = caseDoc?.boundary;
+  if (!boundary || typeof boundary !== 'object') return [];
+  return Object.entries(boundary)
+    .filter(([, c]) => c?.type === 'contact' && c.obstacle?.type === 'sphere' && Array.isArray(c.obstacle.center))
+    .map(([group, c]) => ({ group, center: c.obstacle.center, radius: c.obstacle.radius }));
 }
 
 /** The builtin half ball's radius (default 1), or null when the case's mesh is something else. */

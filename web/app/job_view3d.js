@@ -6,9 +6,9 @@
 import {
   addNumber, drawResiduals, figureMagnification, renderHeadline, renderWarnings, setCsvLink, setDownloads, unitText, writeColourBar,
 } from './job_result.js';
-import { planeFrame, pressureCentre, sampleLine } from './contact_line.js';
+import { planeFrame, pressureCentre, sampleLine, sphereTangentPlane } from './contact_line.js';
 import { contactFaces, boundarySurface } from './tet_surface.js';
-import { contactPlanes } from './hertz.js';
+import { contactPlanes, contactSpheres } from './hertz.js';
 import { SURFACE_FIELDS, shownRange } from './surface_fields.js';
 import { colourScale } from './mesh_view.js';
 import { lineCsv } from './csv_export.js';
@@ -32,11 +32,14 @@ export function prepare3d(view) {
   const contact = contactFaces(mesh, surface);
   const faces = [];
   for (let f = 0; f < contact.length; f++) if (contact[f]) faces.push([...surface.triangles.subarray(3 * f, 3 * f + 3)]);
-  // The plane of the contact groups (the first when there are several; they share the drawing).
-  const plane = contactPlanes(caseDoc)[0] ?? null;
-  const frame = plane ? planeFrame(plane.normal) : null;
+  // The plane of the contact groups (the first when there are several; they share the drawing);
+  // against a sphere, its tangent plane at the contact.
   const pressure = mesh.pointData.contact_pressure?.values;
   const flags = mesh.pointData.contact_boundary?.values;
+  const sphere = contactSpheres(caseDoc)[0];
+  const plane = contactPlanes(caseDoc)[0] ??
+    (sphere && pressure && flags ? sphereTangentPlane(mesh.points3, flags, pressure, sphere) : null);
+  const frame = plane ? planeFrame(plane.normal) : null;
   const centre = frame && pressure && flags ? pressureCentre(mesh.points3, flags, pressure, plane) : null;
   view.solid = { surface, contact, faces, plane, frame, centre, nContact: faces.length };
 }
@@ -96,7 +99,7 @@ export function drawLine(view, plots, viewer) {
   box.innerHTML = '';
   box.dataset.points = '0';
   if (!solid?.centre || solid.faces.length === 0) {
-    box.textContent = view.meshError ?? (solid?.plane ? 'The solution has no contact faces with a pressure.' : 'The case names no contact plane.');
+    box.textContent = view.meshError ?? (solid?.plane ? 'The solution has no contact faces with a pressure.' : 'The case names no plane or sphere obstacle: the pressure line runs in a plane.');
     note.textContent = '';
     view.lineSamples = [];
     viewer.setLine(null);
