@@ -1,6 +1,7 @@
 #include "case/case3d_admission.hpp"
 
 #include <cmath>
+#include <optional>
 #include <sstream>
 #include <variant>
 
@@ -73,6 +74,31 @@ int tet_group_index(const TetMesh& mesh, const std::string& name) {
   return -1;
 }
 
+namespace {
+
+/// A gap function must give a number at every vertex of its group: its expression was checked
+/// at three sample points only, and a NaN would leave the vertex silently unconstrained.
+std::optional<CaseError> check_gap_function(const std::string& name, const Obstacle3d& obstacle,
+                                            const TetMesh& mesh, int group) {
+  for (int f = 0; f < mesh.num_faces(); ++f) {
+    if (mesh.face_group(f) != group) continue;
+    for (int v : mesh.face(f)) {
+      const Point3& x = mesh.vertex(v);
+      const double g = obstacle.gap(x.x(), x.y(), x.z());
+      if (std::isfinite(g)) continue;
+      std::ostringstream s;
+      s << "the gap g is not finite at (x, y, z) = (" << x.x() << ", " << x.y() << ", " << x.z()
+        << ") (value " << g << "), a vertex of the contact group " << name
+        << "; it must give a number at every vertex of the group";
+      return CaseError{
+          child_pointer(child_pointer(child_pointer("/boundary", name), "obstacle"), "g"), s.str()};
+    }
+  }
+  return std::nullopt;
+}
+
+}  // namespace
+
 std::vector<CaseError> check_3d_groups(const Case3dSpec& spec, const TetMesh& mesh) {
   std::vector<CaseError> errors;
   for (const auto& [name, bc] : spec.boundary) {
@@ -81,10 +107,14 @@ std::vector<CaseError> check_3d_groups(const Case3dSpec& spec, const TetMesh& me
       errors.push_back(unknown_group_problem(name, mesh.group_names()));
       continue;
     }
-    // A plane's gap along a face's normal that does not point at it is infinite; a sphere's or
-    // gap function's may be, and the face is then unconstrained (as in 2D).
-    if (bc.type != Condition3d::Type::kContact || bc.obstacle.kind != Obstacle3d::Kind::kPlane)
+    if (bc.type != Condition3d::Type::kContact) continue;
+    if (bc.obstacle.kind == Obstacle3d::Kind::kGap) {
+      if (auto e = check_gap_function(name, bc.obstacle, mesh, g)) errors.push_back(*e);
       continue;
+    }
+    // A plane's gap along a face's normal that does not point at it is infinite; a sphere's may
+    // be, and the face is then unconstrained (as in 2D).
+    if (bc.obstacle.kind != Obstacle3d::Kind::kPlane) continue;
     for (int f = 0; f < mesh.num_faces(); ++f) {
       if (mesh.face_group(f) != g || mesh.face_normal(f).dot(bc.obstacle.normal) < 0) continue;
       const Point3 c = mesh.face_centroid(f);

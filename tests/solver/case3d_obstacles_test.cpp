@@ -135,6 +135,15 @@ TEST(Case3dObstacles, EveryProblemOfAnObstacleIsNamedByItsField) {
       std::vector<std::string>{"/boundary/top/obstacle/normal"});
   EXPECT_EQ(case3d_problems(box_under({{"type", "cylinder"}})),
             std::vector<std::string>{"/boundary/top/obstacle/type"});
+  // A gap that is not a number at the vertices x = 0.25 of the group (0·log 0), though it is at
+  // the expression's sample points (x = 0, 0.5, 1): found once the mesh is built.
+  try {
+    run_3d(box_under({{"type", "gap"}, {"g", "1 - z + 0 * ln(abs(x - 0.25))"}}));
+    ADD_FAILURE() << "a gap that is NaN on the contact group was accepted";
+  } catch (const CaseException& e) {
+    EXPECT_EQ(e.errors().front().pointer, "/boundary/top/obstacle/g");
+    EXPECT_NE(e.errors().front().detail.find("not finite"), std::string::npos);
+  }
   // Facing away: the plane's normal from the body into the plane. Found once the mesh is built.
   json away = box_under({{"type", "plane"}, {"point", {0, 0, 1}}, {"normal", {0, 0, 1}}});
   try {
