@@ -50,14 +50,16 @@ struct SmallestGap {
   const Obstacle3d* obstacle = nullptr;
 };
 
-SmallestGap smallest_gap(const Case3dSpec& spec, const TetMesh& mesh) {
+/// `at_rest`: to the obstacles where the case puts them, before their displacement.
+SmallestGap smallest_gap(const Case3dSpec& spec, const TetMesh& mesh, bool at_rest) {
   SmallestGap out;
   for (int f = 0; f < mesh.num_faces(); ++f) {
     if (mesh.face_group(f) < 0) continue;  // an interior face
     const auto it = spec.boundary.find(mesh.group_names()[mesh.face_group(f)]);
     if (it == spec.boundary.end() || it->second.type != Condition3d::Type::kContact) continue;
     for (int v : mesh.face(f)) {
-      const double g = it->second.gap_along(mesh.vertex(v), mesh.face_normal(f));
+      const Obstacle3d& o = it->second.obstacle;
+      const double g = (at_rest ? o.at_rest() : o).gap_along(mesh.vertex(v), mesh.face_normal(f));
       if (g < out.gap || !out.obstacle) out = {g, mesh.vertex(v), &it->second.obstacle};
     }
   }
@@ -95,23 +97,27 @@ std::vector<ResultWarning> contact_warnings(const Case3dSpec& spec, const TetMes
                                             const ContactSummary& c) {
   std::vector<ResultWarning> warnings;
   if (c.faces == 0) return warnings;
-  const auto [gap, at, obstacle] = smallest_gap(spec, mesh);
-  const std::string noun = obstacle->noun();
-  if (gap < -kTouchingOverlap * body_size(mesh))
+  // An overlap where the case puts the obstacle is a mistake; its displacement is not.
+  const SmallestGap rest = smallest_gap(spec, mesh, true);
+  const std::string noun = rest.obstacle->noun();
+  if (rest.gap < -kTouchingOverlap * body_size(mesh))
     warnings.push_back({"initial_penetration",
                         "the body starts inside the " + noun +
-                            ": the gap along the body normal is down to " + sentence_number(gap) +
-                            " at " + where(at) + "; the solution pushes it out. " +
-                            move_hint(*obstacle) + " if this is not meant",
+                            ": the gap along the body normal is down to " +
+                            sentence_number(rest.gap) + " at " + where(rest.at) +
+                            " (before any obstacle displacement); the solution pushes it out. " +
+                            move_hint(*rest.obstacle) +
+                            " if this is not meant (an indentation belongs in the obstacle's "
+                            "displacement or the body's)",
                         true});
+  const SmallestGap moved = smallest_gap(spec, mesh, false);
   if (c.faces_in_contact == 0)
     warnings.push_back(
         {"no_contact",
          "nothing touches the " + noun + ": no contact face carries pressure and the force is 0; " +
-             (std::isfinite(gap)
-                  ? "the smallest gap is " + sentence_number(gap) + " at " + where(at)
-                  : "no contact vertex's outward normal meets "
-                    "it") +
+             (std::isfinite(moved.gap)
+                  ? "the smallest gap is " + sentence_number(moved.gap) + " at " + where(moved.at)
+                  : "no contact vertex's outward normal meets it") +
              ". Press the body towards the " + noun,
          true});
   return warnings;

@@ -46,14 +46,23 @@ struct Obstacle3d {
   Point3 normal = Point3::UnitZ();  ///< plane: unit normal from the plane into the body
   Point3 center = Point3::Zero();   ///< sphere: a rigid ball, the body outside it
   double radius = 1.0;              ///< sphere
+  /// plane, sphere: a rigid translation from where point or center put it (a prescribed
+  /// indentation, so the body can stay at rest).
+  Point3 displacement = Point3::Zero();
   /// gap: g(x, y, z), the gap along the body normal itself (compiled once, when read).
   std::function<double(double, double, double)> gap;
   bool as_object =
       false;  ///< given as the field `obstacle` (errors point into it), not point/normal
   /// The distance from x to the obstacle along the body's unit outward normal n there: the
-  /// first hit of the ray x + s n (+∞ when it misses); where x is already inside the ball, its
-  /// radial distance (negative), as 2D's circle.
+  /// first hit of the ray x + s n (+∞ when it misses); where x is already inside the ball, the
+  /// distance back along n to its sphere (negative).
   double gap_along(const Point3& x, const Point3& n) const;
+  /// The obstacle where the case puts it, before its displacement.
+  Obstacle3d at_rest() const {
+    Obstacle3d o = *this;
+    o.displacement = Point3::Zero();
+    return o;
+  }
   /// "plane", "sphere" or "obstacle": the word for messages.
   const char* noun() const;
 };

@@ -31,6 +31,12 @@ void check_normal_not_zero(const json& j, const std::string& pointer, RuleChecke
     checker.error(child_pointer(pointer, "normal"), "the normal must not be zero");
 }
 
+FieldRule obstacle_displacement_field() {
+  return optional_field("displacement", vector3_value("[dx, dy, dz]"), json::array({0, 0, 0}),
+                        "rigid displacement [dx, dy, dz] of the obstacle from where point/center "
+                        "put it; [0, 0, 0.01] moves it 0.01 up, into a body above it");
+}
+
 ObjectRulePtr obstacle3d_rule(const CaseReadOptions& options) {
   auto r = std::make_shared<ObjectRule>();
   r->title = "a 3D obstacle";
@@ -41,14 +47,15 @@ ObjectRulePtr obstacle3d_rule(const CaseReadOptions& options) {
       {"plane",
        "a plane obstacle",
        "a rigid half-space; the gap is the distance to its plane",
-       {plane_point_field(true), plane_normal_field(true)},
+       {plane_point_field(true), plane_normal_field(true), obstacle_displacement_field()},
        check_normal_not_zero,
        "the normal is not zero"},
       {"sphere",
        "a sphere obstacle",
        "a rigid ball; the body lies outside it; the gap is the distance to its sphere",
        {required_field("center", vector3_value("[x, y, z]"), "the centre [x, y, z] of the ball"),
-        required_field("radius", number_value(Range::positive()), "the radius of the ball")},
+        required_field("radius", number_value(Range::positive()), "the radius of the ball"),
+        obstacle_displacement_field()},
        {},
        ""},
       {"gap",
@@ -109,6 +116,7 @@ Obstacle3d read_obstacle3d(const json& condition) {
   const json& j = short_form ? condition : condition["obstacle"];
   const std::string type = short_form ? "plane" : j["type"].get<std::string>();
   o.as_object = !short_form;
+  if (j.contains("displacement")) o.displacement = read_vector3(j["displacement"]);
   if (type == "sphere") {
     o.kind = Obstacle3d::Kind::kSphere;
     o.center = read_vector3(j["center"]);

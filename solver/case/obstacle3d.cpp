@@ -12,17 +12,18 @@ double Obstacle3d::gap_along(const Point3& x, const Point3& n) const {
   switch (kind) {
     case Kind::kPlane: {
       const double approach = -n.dot(normal);  // how directly n points at the plane
-      return (x - point).dot(normal) / approach;
+      return (x - (point + displacement)).dot(normal) / approach;
     }
     case Kind::kSphere: {
-      const Point3 rel = x - center;
-      const double dist = rel.norm();
-      if (dist < radius) return dist - radius;  // already inside: how deep, radially
-      // First hit of the ray x + s n with the sphere: s² + 2 b s + (|rel|² − R²) = 0.
-      const double b = n.dot(rel);
-      const double disc = b * b - (dist * dist - radius * radius);
+      // The ray x + s n meets the sphere where s² + 2 b s + c = 0, c = |x − centre|² − R².
+      const Point3 rel = x - (center + displacement);
+      const double b = n.dot(rel), c = rel.squaredNorm() - radius * radius;
+      const double disc = b * b - c;
       if (disc < 0) return kInf;
       const double s = -b - std::sqrt(disc);
+      // Inside (c < 0) the smaller root is negative: how far back along n the surface is, so
+      // that moving the ball moves every gap along n alike. Outside, a ball behind is missed.
+      if (c < 0) return s;
       return s >= 0 ? s : kInf;
     }
     case Kind::kGap:

@@ -97,6 +97,26 @@ TEST(Case3dObstacles, ASphereAndItsParaboloidPressTheBoxAlike) {
   EXPECT_TRUE(sphere["warning_details"].empty()) << sphere["warning_details"].dump();
 }
 
+TEST(Case3dObstacles, MovingTheObstacleDownIsPushingTheBodyUp) {
+  // The top's faces are flat and their gap is taken along +z, so moving the plane or the ball
+  // down by 0.01 onto a body at rest differs from pushing the body up by 0.01 by a rigid
+  // translation: the same force, and no overlap warning (the displacement is the indentation).
+  const json plane = {{"type", "plane"}, {"point", {0, 0, 1}}, {"normal", {0, 0, -1}}};
+  const json ball = {{"type", "sphere"}, {"center", {1, 1, 11}}, {"radius", 10}};
+  for (const json& obstacle : {plane, ball}) {
+    json pushed = box_under(obstacle, 0.25);
+    pushed["mesh"]["builtin"] = {{"name", "box"}, {"lengths", {2, 2, 1}}, {"cells", {4, 4, 2}}};
+    json moved = pushed;
+    moved["boundary"]["bottom"]["displacement"] = {0, 0, 0};
+    moved["boundary"]["top"]["obstacle"]["displacement"] = {0, 0, -0.01};
+    const json a = run_3d(pushed), b = run_3d(moved);
+    const double f = a["contact"]["force"][2].get<double>();
+    EXPECT_LT(f, 0.0);
+    EXPECT_NEAR(b["contact"]["force"][2].get<double>() / f, 1.0, 1e-8) << obstacle.dump();
+    EXPECT_TRUE(b["warning_details"].empty()) << b["warning_details"].dump();
+  }
+}
+
 TEST(Case3dObstacles, AMissedOrOverlappingSphereIsNamedInTheWarnings) {
   const json away =
       run_3d(box_under({{"type", "sphere"}, {"center", {0.5, 0.5, 2}}, {"radius", 0.5}}));

@@ -266,20 +266,20 @@ test('the contact planes of a 3D case: point and normal, or an obstacle of type 
     boundary: {
       top: { type: 'dirichlet', displacement: [0, 0, 0] },
       a: { type: 'contact', point: [0, 0, -1], normal: [0, 0, 1] },
-      b: { type: 'contact', obstacle: { type: 'plane', point: [0, 0, 2], normal: [0, 0, -1] } },
+      b: { type: 'contact', obstacle: { type: 'plane', point: [0, 0, 2], normal: [0, 0, -1], displacement: [0, 0, -0.5] } },
       c: { type: 'contact', obstacle: { type: 'sphere', center: [0, 0, 3], radius: 1 } },
       d: { type: 'contact', obstacle: { type: 'gap', g: '1 - z' } },
     },
   };
   assert.deepEqual(contactPlanes(caseDoc), [
     { group: 'a', point: [0, 0, -1], normal: [0, 0, 1] },
-    { group: 'b', point: [0, 0, 2], normal: [0, 0, -1] },
+    { group: 'b', point: [0, 0, 1.5], normal: [0, 0, -1] },
   ]);
 });
 
 test('a sphere obstacle gives the line its tangent plane at the contact, the normal into the body', () => {
   const sphere = contactSpheres({
-    boundary: { top: { type: 'contact', obstacle: { type: 'sphere', center: [1, 1, 11], radius: 10 } } },
+    boundary: { top: { type: 'contact', obstacle: { type: 'sphere', center: [1, 1, 12], radius: 10, displacement: [0, 0, -1] } } },
   })[0];
   assert.deepEqual(sphere, { group: 'top', center: [1, 1, 11], radius: 10 });
   // Contact vertices around (1, 1, 1), the pressure symmetric about it; one vertex off contact.

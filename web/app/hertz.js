@@ -84,9 +84,16 @@ export function hertzSphereContact(F, R, lame) {
   return { a, p0, Estar };
 }
 
+/** A 3D obstacle's point moved by its displacement, when it has one. */
+function moved(point, obstacle) {
+  const d = obstacle?.displacement;
+  return Array.isArray(d) && d.length === 3 ? point.map((x, k) => x + d[k]) : point;
+}
+
 /**
  * The plane obstacles of a 3D case's "contact" groups: [{group, point, normal}], given as point
- * and normal or as an obstacle of type plane (a sphere or gap obstacle has no plane).
+ * and normal or as an obstacle of type plane, moved by its displacement (a sphere or gap
+ * obstacle has no plane).
  */
 export function contactPlanes(caseDoc) {
   const boundary = caseDoc?.boundary;
@@ -94,16 +101,16 @@ export function contactPlanes(caseDoc) {
   const planeOf = (c) => (c?.obstacle?.type === 'plane' ? c.obstacle : c);
   return Object.entries(boundary)
     .filter(([, c]) => c?.type === 'contact' && Array.isArray(planeOf(c).point) && Array.isArray(planeOf(c).normal))
-    .map(([group, c]) => ({ group, point: planeOf(c).point, normal: planeOf(c).normal }));
+    .map(([group, c]) => ({ group, point: moved(planeOf(c).point, c.obstacle), normal: planeOf(c).normal }));
 }
 
-/** The sphere obstacles of a 3D case's "contact" groups: [{group, center, radius}]. */
+/** The sphere obstacles of a 3D case's "contact" groups: [{group, center, radius}], moved by their displacement. */
 export function contactSpheres(caseDoc) {
   const boundary = caseDoc?.boundary;
   if (!boundary || typeof boundary !== 'object') return [];
   return Object.entries(boundary)
     .filter(([, c]) => c?.type === 'contact' && c.obstacle?.type === 'sphere' && Array.isArray(c.obstacle.center))
-    .map(([group, c]) => ({ group, center: c.obstacle.center, radius: c.obstacle.radius }));
+    .map(([group, c]) => ({ group, center: moved(c.obstacle.center, c.obstacle), radius: c.obstacle.radius }));
 }
 
 /** The builtin half ball's radius (default 1), or null when the case's mesh is something else. */
