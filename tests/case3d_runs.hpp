@@ -1,6 +1,6 @@
 #pragma once
 // 3D cases for tests: the shipped hertz_3d at a given refinement, a case read and run, and the
-// pointers of a bad case's problems.
+// problems of a bad case, found when it is read or when it runs.
 #include <gtest/gtest.h>
 
 #include <nlohmann/json.hpp>
@@ -9,6 +9,7 @@
 
 #include "case/case3d_reader.hpp"
 #include "case/case3d_runner.hpp"
+#include "case/case_error.hpp"
 #include "shipped_example.hpp"
 
 namespace fosls::testing {
@@ -24,6 +25,17 @@ inline nlohmann::json run_3d(const nlohmann::json& j) {
   const auto read = read_case_3d(j);
   EXPECT_TRUE(read.errors.empty()) << (read.errors.empty() ? "" : read.errors[0].detail);
   return run_case_3d(*read.spec).result;
+}
+
+/// The first problem the run of a cleanly read case throws (a CaseException: what only the
+/// mesh shows); empty pointer and detail when it runs.
+inline CaseError run_3d_problem(const nlohmann::json& j) {
+  try {
+    run_3d(j);
+  } catch (const CaseException& e) {
+    return e.errors().front();
+  }
+  return {};
 }
 
 /// The pointers of the problems read_case_3d reports for `j`.

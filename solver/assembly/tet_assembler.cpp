@@ -78,10 +78,7 @@ TetAssembler::TetAssembler(const TetSpace& space, const TetProblemData& data)
   const TetMesh& mesh = space.mesh();
   // Gaps capped at a length far beyond the body, as in 2D: a ray that misses the obstacle leaves
   // its vertex effectively unconstrained, and the functional's gap term stays finite.
-  Point3 lo = mesh.vertex(0), hi = mesh.vertex(0);
-  for (int v = 1; v < mesh.num_vertices(); ++v)
-    lo = lo.cwiseMin(mesh.vertex(v)), hi = hi.cwiseMax(mesh.vertex(v));
-  const double far = 10.0 * (hi - lo).norm();
+  const double far = 10.0 * mesh.diameter();
   vertex_gap_.assign(mesh.num_vertices(), std::numeric_limits<double>::infinity());
   for (int f = 0; f < mesh.num_faces(); ++f) {
     if (!space.is_contact_face(f)) continue;

@@ -117,10 +117,6 @@ ObjectRulePtr condition3d_rule(const CaseReadOptions& options) {
   return r;
 }
 
-Point3 read_vector3(const json& j) {
-  return {j[0].get<double>(), j[1].get<double>(), j[2].get<double>()};
-}
-
 Mesh3dSpec read_mesh3d_section(const json& j) {
   Mesh3dSpec m;
   m.size = j.value("size", m.size);

@@ -59,7 +59,8 @@ SmallestGap smallest_gap(const Case3dSpec& spec, const TetMesh& mesh, bool at_re
     if (it == spec.boundary.end() || it->second.type != Condition3d::Type::kContact) continue;
     for (int v : mesh.face(f)) {
       const Obstacle3d& o = it->second.obstacle;
-      const double g = (at_rest ? o.at_rest() : o).gap_along(mesh.vertex(v), mesh.face_normal(f));
+      const double g = at_rest ? o.gap_at_rest(mesh.vertex(v), mesh.face_normal(f))
+                               : o.gap_along(mesh.vertex(v), mesh.face_normal(f));
       if (g < out.gap || !out.obstacle) out = {g, mesh.vertex(v), &it->second.obstacle};
     }
   }
@@ -78,14 +79,6 @@ std::string move_hint(const Obstacle3d& o) {
   }
 }
 
-/// The length of the mesh's bounding box's diagonal: the body's size.
-double body_size(const TetMesh& mesh) {
-  Point3 lo = mesh.vertex(0), hi = mesh.vertex(0);
-  for (int v = 1; v < mesh.num_vertices(); ++v)
-    lo = lo.cwiseMin(mesh.vertex(v)), hi = hi.cwiseMax(mesh.vertex(v));
-  return (hi - lo).norm();
-}
-
 std::string where(const Point3& x) {
   return "(" + sentence_number(x.x()) + ", " + sentence_number(x.y()) + ", " +
          sentence_number(x.z()) + ")";
@@ -100,7 +93,7 @@ std::vector<ResultWarning> contact_warnings(const Case3dSpec& spec, const TetMes
   // An overlap where the case puts the obstacle is a mistake; its displacement is not.
   const SmallestGap rest = smallest_gap(spec, mesh, true);
   const std::string noun = rest.obstacle->noun();
-  if (rest.gap < -kTouchingOverlap * body_size(mesh))
+  if (rest.gap < -kTouchingOverlap * mesh.diameter())
     warnings.push_back({"initial_penetration",
                         "the body starts inside the " + noun +
                             ": the gap along the body normal is down to " +
@@ -110,8 +103,8 @@ std::vector<ResultWarning> contact_warnings(const Case3dSpec& spec, const TetMes
                             " if this is not meant (an indentation belongs in the obstacle's "
                             "displacement or the body's)",
                         true});
-  const SmallestGap moved = smallest_gap(spec, mesh, false);
-  if (c.faces_in_contact == 0)
+  if (c.faces_in_contact == 0) {
+    const SmallestGap moved = smallest_gap(spec, mesh, false);
     warnings.push_back(
         {"no_contact",
          "nothing touches the " + noun + ": no contact face carries pressure and the force is 0; " +
@@ -120,6 +113,7 @@ std::vector<ResultWarning> contact_warnings(const Case3dSpec& spec, const TetMes
                   : "no contact vertex's outward normal meets it") +
              ". Press the body towards the " + noun,
          true});
+  }
   return warnings;
 }
 

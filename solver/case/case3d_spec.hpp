@@ -56,15 +56,17 @@ struct Obstacle3d {
   /// The distance from x to the obstacle along the body's unit outward normal n there: the
   /// first hit of the ray x + s n (+∞ when it misses); where x is already inside the ball, the
   /// distance back along n to its sphere (negative).
-  double gap_along(const Point3& x, const Point3& n) const;
-  /// The obstacle where the case puts it, before its displacement.
-  Obstacle3d at_rest() const {
-    Obstacle3d o = *this;
-    o.displacement = Point3::Zero();
-    return o;
+  double gap_along(const Point3& x, const Point3& n) const { return gap_from(x, n, displacement); }
+  /// The same to the obstacle where the case puts it, before its displacement.
+  double gap_at_rest(const Point3& x, const Point3& n) const {
+    return gap_from(x, n, Point3::Zero());
   }
   /// "plane", "sphere" or "obstacle": the word for messages.
   const char* noun() const;
+
+ private:
+  /// The gap with the plane or sphere moved by `shift`.
+  double gap_from(const Point3& x, const Point3& n, const Point3& shift) const;
 };
 
 struct Condition3d {

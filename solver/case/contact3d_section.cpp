@@ -26,8 +26,7 @@ FieldRule plane_normal_field(bool required) {
 
 void check_normal_not_zero(const json& j, const std::string& pointer, RuleChecker& checker) {
   if (!j.contains("normal") || !checker.usable(j, pointer, {"normal"})) return;
-  const auto& n = j["normal"];
-  if (Point3(n[0].get<double>(), n[1].get<double>(), n[2].get<double>()).norm() == 0)
+  if (read_vector3(j["normal"]).norm() == 0)
     checker.error(child_pointer(pointer, "normal"), "the normal must not be zero");
 }
 
@@ -92,11 +91,11 @@ void check_one_obstacle(const json& j, const std::string& pointer, RuleChecker& 
   check_normal_not_zero(j, pointer, checker);
 }
 
+}  // namespace
+
 Point3 read_vector3(const json& j) {
   return {j[0].get<double>(), j[1].get<double>(), j[2].get<double>()};
 }
-
-}  // namespace
 
 ObjectVariant contact3d_variant(const CaseReadOptions& options) {
   return {"contact",

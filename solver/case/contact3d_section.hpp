@@ -14,6 +14,9 @@ namespace fosls {
 /// The contact variant of a 3D boundary condition.
 ObjectVariant contact3d_variant(const CaseReadOptions& options);
 
+/// Three numbers that passed vector3_value's rule, as a point (also the 3D reader's).
+Point3 read_vector3(const nlohmann::json& j);
+
 /// The obstacle of a contact condition that passed contact3d_variant's rules.
 Obstacle3d read_obstacle3d(const nlohmann::json& condition);
 

@@ -7,16 +7,16 @@
 
 namespace fosls {
 
-double Obstacle3d::gap_along(const Point3& x, const Point3& n) const {
+double Obstacle3d::gap_from(const Point3& x, const Point3& n, const Point3& shift) const {
   constexpr double kInf = std::numeric_limits<double>::infinity();
   switch (kind) {
     case Kind::kPlane: {
       const double approach = -n.dot(normal);  // how directly n points at the plane
-      return (x - (point + displacement)).dot(normal) / approach;
+      return (x - (point + shift)).dot(normal) / approach;
     }
     case Kind::kSphere: {
       // The ray x + s n meets the sphere where s² + 2 b s + c = 0, c = |x − centre|² − R².
-      const Point3 rel = x - (center + displacement);
+      const Point3 rel = x - (center + shift);
       const double b = n.dot(rel), c = rel.squaredNorm() - radius * radius;
       const double disc = b * b - c;
       if (disc < 0) return kInf;

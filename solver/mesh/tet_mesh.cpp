@@ -88,4 +88,10 @@ std::vector<std::vector<int>> TetMesh::vertex_faces() const {
   return out;
 }
 
+double TetMesh::diameter() const {
+  Point3 lo = vertices_.front(), hi = vertices_.front();
+  for (const Point3& x : vertices_) lo = lo.cwiseMin(x), hi = hi.cwiseMax(x);
+  return (hi - lo).norm();
+}
+
 }  // namespace fosls

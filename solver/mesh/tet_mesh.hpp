@@ -44,6 +44,8 @@ class TetMesh {
   int num_tets() const { return static_cast<int>(tets_.size()); }
   int num_faces() const { return static_cast<int>(faces_.size()); }
   const Point3& vertex(int v) const { return vertices_[v]; }
+  /// The length of the bounding box's diagonal: the body's size.
+  double diameter() const;
   const std::array<int, 4>& tet(int t) const { return tets_[t]; }
   /// Face k (opposite vertex k) of tetrahedron t.
   int tet_face(int t, int k) const { return tet_faces_[t][k]; }
