@@ -92,10 +92,9 @@ TetDiscretization discretization(const Options& o, double lambda, int r) {
 /// The half ball's contact radius and peak pressure: a from the pressure's second moment about
 /// the axis (for Hertz's p0 √(1 − r²/a²), ∫p r² dA / ∫p dA = 2a²/5, so all faces count, not just
 /// the outermost loaded one), p0 as the largest face pressure (a face mean: slightly low).
-std::array<double, 2> contact_radius_and_peak(const TetDiscretization& disc, const Vector& x) {
-  const TetAssembler& a = disc.assembler();
+std::array<double, 2> contact_radius_and_peak(const TetDiscretization& disc, const Vector& full) {
   const TetMesh& mesh = disc.meshes().finest();
-  const std::vector<double> p = a.contact_pressure(a.full_vector(disc.problem(), x));
+  const std::vector<double> p = disc.assembler().contact_pressure(full);
   double force = 0.0, moment = 0.0, peak = 0.0;
   for (int f = 0; f < mesh.num_faces(); ++f) {
     const Point3 c = mesh.face_centroid(f);
@@ -109,11 +108,9 @@ std::array<double, 2> contact_radius_and_peak(const TetDiscretization& disc, con
 
 /// The force through the faces of mesh group `group` on the finest level, −∫ σ n (the force the
 /// body exerts there; μ = 1 in these problems, and σ's rows are Cartesian off the contact).
-Point3 force_through_group(const TetDiscretization& disc, const Vector& x, int group) {
-  const TetAssembler& a = disc.assembler();
+Point3 force_through_group(const TetDiscretization& disc, const Vector& full, int group) {
   const TetMesh& mesh = disc.meshes().finest();
-  const Vector full = a.full_vector(disc.problem(), x);
-  const TetSpace& space = a.space();
+  const TetSpace& space = disc.assembler().space();
   Point3 force = Point3::Zero();
   for (int f = 0; f < mesh.num_faces(); ++f)
     if (mesh.is_boundary_face(f) && mesh.face_group(f) == group)
@@ -154,13 +151,14 @@ int main(int argc, char** argv) {
   const SolverReport report = solve_box_qp(
       disc.problem().qp, o.pdas ? LevelHierarchy{} : disc.build_level_hierarchy(), options, {}, x);
   const TetAssembler& a = disc.assembler();
-  const Point3 force = a.contact_force(a.full_vector(disc.problem(), x));
+  const Vector full = a.full_vector(disc.problem(), x);
+  const Point3 force = a.contact_force(full);
   std::printf("| %s | %d | %d | %d | %s %d%s | %.2f s | %.2f s | %.0f MiB |", argv[1], r,
               disc.meshes().finest().num_tets(), disc.problem().qp.size(), o.pdas ? "pdas" : "mmg",
               report.iterations, report.converged ? "" : " (NOT converged)", assembly_s,
               seconds_since(t1), peak_rss_mib());
   if (o.hertz) {
-    const auto [radius, peak] = contact_radius_and_peak(disc, x);
+    const auto [radius, peak] = contact_radius_and_peak(disc, full);
     const double hertz = testing::hertz_force_3d(lambda, o.delta);
     const double a_f = testing::hertz_radius_3d(lambda, force.z());
     const double p0_f = testing::hertz_peak_3d(lambda, force.z());
@@ -169,7 +167,7 @@ int main(int argc, char** argv) {
         "%.4f, Hertz(F) %.4f, %+.2f %% |",
         force.z(), hertz, 100.0 * (force.z() / hertz - 1.0), radius, a_f,
         100.0 * (radius / a_f - 1.0), peak, p0_f, 100.0 * (peak / p0_f - 1.0));
-    std::printf(" through the top: F_z = %.7f |", force_through_group(disc, x, 0).z());
+    std::printf(" through the top: F_z = %.7f |", force_through_group(disc, full, 0).z());
   }
   if (o.contact || o.hertz)
     std::printf(
@@ -178,7 +176,6 @@ int main(int argc, char** argv) {
         force.z(), report.cycle.galerkin_s, report.cycle.smoothing_s, report.cycle.strip_s,
         report.cycle.coarse_s, report.setup_s);
   std::printf("\n");
-  if (!o.vtu.empty())
-    std::ofstream(o.vtu) << write_tet_vtu(a, disc.problem(), a.full_vector(disc.problem(), x));
+  if (!o.vtu.empty()) std::ofstream(o.vtu) << write_tet_vtu(a, disc.problem(), full);
   return 0;
 }
