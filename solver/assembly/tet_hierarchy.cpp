@@ -218,7 +218,7 @@ LevelHierarchy TetDiscretization::build_level_hierarchy() const {
     level.num_dofs = fine.num_free();
     level.patches = tet_vertex_patches(fine, &level.patch_split);
     level.contact_strip = tet_contact_strip(fine);
-    level.strip_factorization = BlockFactorization::held_rows;
+    level.block_factorization = BlockFactorization::held_rows;
     if (j == 0) continue;
     const TetSpace& coarse = *spaces_[j - 1];
     // In both levels' rotated coordinates (contact frames), like the 2D free_prolongation.

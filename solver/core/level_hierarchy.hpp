@@ -51,8 +51,11 @@ struct Level {
   std::vector<ContactLink> links;
   /// DOFs of the triangles touching the contact boundary: the block of the strip smoother.
   std::vector<int> contact_strip;
-  /// 2D's strips are thin and keep `reduced`; 3D's are slabs (assembly/tet_hierarchy.cpp).
-  BlockFactorization strip_factorization = BlockFactorization::reduced;
+  /// How the level's exact block solvers factorise: its strip smoother's and, on the coarsest
+  /// level, the coarse solve's. 2D's strips and coarse meshes are thin or small and keep
+  /// `reduced`; 3D's strips are slabs and its coarse meshes ordinary 3D sparse matrices
+  /// (assembly/tet_hierarchy.cpp).
+  BlockFactorization block_factorization = BlockFactorization::reduced;
 };
 
 /// Levels coarsest first; the finest level is the one of the BoxQp.

@@ -107,6 +107,13 @@ SparseBoxQpSolver::SparseBoxQpSolver(const SparseMatrix& A, BlockFactorization f
       free_set_(FreeSetSolver::make(A_, factorization)),
       warm_start_(factorization == BlockFactorization::held_rows) {}
 
+bool SparseBoxQpSolver::refactor(const SparseMatrix& A) {
+  if (!free_set_->refactor(A)) return false;
+  std::copy(A.valuePtr(), A.valuePtr() + A.nonZeros(), A_.valuePtr());
+  diagonal_ = A_.diagonal();
+  return true;
+}
+
 void SparseBoxQpSolver::start_from_settled(const Vector& lo, const Vector& hi,
                                            std::vector<signed char>& state) const {
   for (int i = 0; i < static_cast<int>(state.size()); ++i) {

@@ -41,6 +41,10 @@ class SparseBoxQpSolver {
   explicit SparseBoxQpSolver(const SparseMatrix& A,
                              BlockFactorization factorization = BlockFactorization::reduced);
   ~SparseBoxQpSolver();
+  /// The solver for a matrix of A's pattern with new values, reusing the factorisation's
+  /// analysis and the last settled active set as the next solve's start (held_rows only);
+  /// false, with nothing changed, where a new solver is needed. Throws as the constructor.
+  bool refactor(const SparseMatrix& A);
   /// δ = argmin, feasible; returns false if the iteration cap was hit (δ is still a feasible
   /// point with J(δ) ≤ J(0)).
   bool solve(const Vector& r, const Vector& lo, const Vector& hi, Vector& delta);

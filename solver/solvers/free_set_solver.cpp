@@ -2,6 +2,7 @@
 
 #include <Eigen/CholmodSupport>
 #include <Eigen/SparseCholesky>
+#include <algorithm>
 
 #include "core/indefinite_system.hpp"
 
@@ -22,6 +23,15 @@ Vector free_right_hand_side(const SparseMatrix& A, const std::vector<signed char
   Vector rhs(n);
   for (int i = 0; i < n; ++i) rhs[i] = state[i] == 0 ? r[i] - ad[i] : 0.0;
   return rhs;
+}
+
+bool same_pattern(const SparseMatrix& a, const SparseMatrix& b) {
+  if (!a.isCompressed() || !b.isCompressed() || a.rows() != b.rows() ||
+      a.nonZeros() != b.nonZeros())
+    return false;
+  const int n = static_cast<int>(a.outerSize());
+  return std::equal(a.outerIndexPtr(), a.outerIndexPtr() + n + 1, b.outerIndexPtr()) &&
+         std::equal(a.innerIndexPtr(), a.innerIndexPtr() + a.nonZeros(), b.innerIndexPtr());
 }
 
 /// The free block gathered and factorised by Eigen's simplicial LDLᵀ with its own ordering.
@@ -89,6 +99,15 @@ class HeldRowsSolver : public FreeSetSolver {
     full_.compute(A_);
     if (full_.info() != Eigen::Success) throw IndefiniteSystemError(kIndefinite);
     held_.analyzePattern(held_matrix_);
+  }
+
+  bool refactor(const SparseMatrix& A) override {
+    if (!same_pattern(A, A_)) return false;
+    std::copy(A.valuePtr(), A.valuePtr() + A.nonZeros(), A_.valuePtr());
+    full_.factorize(A_);
+    if (full_.info() != Eigen::Success) throw IndefiniteSystemError(kIndefinite);
+    last_free_.clear();
+    return true;
   }
 
   bool solve(const std::vector<signed char>& state, const Vector& r, const Vector& d,

@@ -30,6 +30,15 @@ class FreeSetSolver {
   /// last free set (a cache, which changes no result).
   virtual bool solve(const std::vector<signed char>& state, const Vector& r, const Vector& d,
                      Vector& y) = 0;
+
+  /// The same solver for a matrix of A's pattern with new values, keeping what was computed
+  /// from the pattern alone (held_rows: the ordering and symbolic analysis). False, with nothing
+  /// changed, when the kind keeps nothing or the pattern differs; throws IndefiniteSystemError
+  /// as make does.
+  virtual bool refactor(const SparseMatrix& A) {
+    (void)A;
+    return false;
+  }
 };
 
 }  // namespace fosls

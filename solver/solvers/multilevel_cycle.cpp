@@ -68,7 +68,15 @@ MultilevelCycle::~MultilevelCycle() = default;
 void MultilevelCycle::set_truncation(const std::vector<char>& truncated) {
   const auto t0 = std::chrono::steady_clock::now();
   if (!truncation_.set_truncation(truncated, [this](int j) { make_smoothers(j); })) return;
-  coarse_solver_ = std::make_unique<SparseBoxQpSolver>(truncation_.matrix(0));
+  // A new truncation changes the coarse matrix's values, rarely its pattern: a held-rows solver
+  // keeps its ordering and analysis, which on a large 3D coarse mesh cost as much as the
+  // factorisation (docs/performance.md, "A large coarse mesh was expensive in 3D").
+  const SparseMatrix& coarse = truncation_.matrix(0);
+  if (!coarse_solver_ || !coarse_solver_->refactor(coarse)) {
+    coarse_solver_.reset();  // released before its successor is built
+    coarse_solver_ =
+        std::make_unique<SparseBoxQpSolver>(coarse, hierarchy_.levels[0].block_factorization);
+  }
   ++stats_.galerkin_rebuilds;
   stats_.galerkin_s += seconds_since(t0);
 }
@@ -82,7 +90,7 @@ void MultilevelCycle::make_smoothers(int j) {
   if (s.smoother->double_precision_factors()) ++stats_.double_precision_smoothers;
   s.strip.reset();
   if (options_.strip && !level.contact_strip.empty())
-    s.strip = std::make_unique<StripSmoother>(a, level.contact_strip, level.strip_factorization);
+    s.strip = std::make_unique<StripSmoother>(a, level.contact_strip, level.block_factorization);
 }
 
 void MultilevelCycle::smooth_level(int j, Vector& c, Vector& r, const Vector& lo, const Vector& hi,

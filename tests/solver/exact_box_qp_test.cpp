@@ -7,6 +7,7 @@
 #include <random>
 
 #include "box_qp_enumeration.hpp"
+#include "core/indefinite_system.hpp"
 #include "solvers/exact_box_qp.hpp"
 
 namespace fosls {
@@ -111,6 +112,46 @@ TEST(SparseBoxQpHeldRows, StartsFromTheLastSettledActiveSet) {
     ++repeated;
   }
   EXPECT_GT(repeated, 40);
+}
+
+TEST_P(SparseBoxQp, RefactorsNewValuesOfTheSamePatternAsAFreshSolverWould) {
+  // The coarsest level of a 3D cycle is refactored, not rebuilt, when the truncation changes its
+  // values (held rows): the answer must be a fresh solver's and the exact minimiser, also after
+  // a warm start from the old matrix's settled active set. Reduced solvers keep nothing and
+  // refuse, as does a held-rows solver offered another pattern.
+  std::mt19937 rng(13);
+  for (int trial = 0; trial < 40; ++trial) {
+    const RandomBoxQp p = testing::random_box_qp(rng, 3 + trial % 5);
+    const int n = static_cast<int>(p.r.size());
+    SparseMatrix identity(n, n);
+    identity.setIdentity();
+    SparseMatrix changed = 0.5 * p.A + 0.3 * identity;
+    changed.makeCompressed();
+    const Vector r2 = testing::random_box_qp(rng, n).r;
+    SparseBoxQpSolver solver(p.A, GetParam());
+    Vector first, refactored, fresh;
+    solver.solve(p.r, p.lo, p.hi, first);
+    const bool kept = solver.refactor(changed);
+    EXPECT_EQ(kept, GetParam() == BlockFactorization::held_rows) << "trial " << trial;
+    if (!kept) continue;
+    solver.solve(r2, p.lo, p.hi, refactored);
+    SparseBoxQpSolver(changed, GetParam()).solve(r2, p.lo, p.hi, fresh);
+    EXPECT_LE((refactored - fresh).norm(), 1e-12 * (1.0 + fresh.norm())) << "trial " << trial;
+    const Vector best = testing::enumerate_box_qp(changed, r2, p.lo, p.hi);
+    EXPECT_LE((refactored - best).norm(), 1e-10 * (1.0 + best.norm())) << "trial " << trial;
+    EXPECT_TRUE(testing::within(refactored, p.lo, p.hi)) << "trial " << trial;
+    EXPECT_FALSE(solver.refactor(identity)) << "trial " << trial;  // another pattern
+  }
+}
+
+TEST(SparseBoxQpHeldRows, RefactoringAnIndefiniteMatrixIsReported) {
+  Eigen::MatrixXd a(2, 2);
+  a << 2.0, 1.0, 1.0, 2.0;
+  SparseMatrix definite = a.sparseView();
+  SparseBoxQpSolver solver(definite, BlockFactorization::held_rows);
+  a << 1.0, 2.0, 2.0, 1.0;  // eigenvalues 3 and −1, the same pattern
+  SparseMatrix indefinite = a.sparseView();
+  EXPECT_THROW(solver.refactor(indefinite), IndefiniteSystemError);
 }
 
 INSTANTIATE_TEST_SUITE_P(Factorizations, SparseBoxQp,
