@@ -159,13 +159,18 @@ void TetAssembler::element_kernel(int t, Local& out) const {
 Vector TetAssembler::essential_values() const {
   const TetMesh& mesh = space_.mesh();
   Vector xd = Vector::Zero(space_.num_dofs());
+  std::vector<char> held(mesh.num_vertices(), 0);  ///< by a group prescribing all components
   for (int f = 0; f < mesh.num_faces(); ++f) {
     const int g = mesh.face_group(f);
     if (g < 0) continue;
     const TetProblemData::Group& gd = data_.groups[g];
     const auto& v = mesh.face(f);
     if (gd.role == GroupRole::kDirichlet) {
-      for (int a : v) xd.segment<3>(space_.u_dof(a, 0)) = evaluate(gd.values, mesh.vertex(a), 1.0);
+      if (gd.prescribed != 7) continue;  // rollers, below
+      for (int a : v) {
+        xd.segment<3>(space_.u_dof(a, 0)) = evaluate(gd.values, mesh.vertex(a), 1.0);
+        held[a] = 1;
+      }
     } else {
       // ∫_f t dA by the edge-midpoint rule (exact for degree 2), in units of μ.
       Eigen::Vector3d flux = Eigen::Vector3d::Zero();
@@ -174,9 +179,36 @@ Vector TetAssembler::essential_values() const {
       xd.segment<3>(space_.sigma_dof(f, 0)) = flux * mesh.face_area(f) / 3.0;
     }
   }
+  set_roller_values(held, xd);
   for (int d = 0; d < space_.num_dofs(); ++d)
     if (!space_.fixed(d)) xd[d] = 0.0;
   return xd;
+}
+
+void TetAssembler::set_roller_values(const std::vector<char>& held, Vector& xd) const {
+  const TetMesh& mesh = space_.mesh();
+  for (int f = 0; f < mesh.num_faces(); ++f) {
+    const int g = mesh.face_group(f);
+    if (g < 0 || data_.groups[g].role != GroupRole::kDirichlet || data_.groups[g].prescribed == 7)
+      continue;
+    const TetProblemData::Group& gd = data_.groups[g];
+    for (int a : mesh.face(f)) {
+      if (held[a]) continue;  // a full Dirichlet group's data win
+      const Eigen::Vector3d u = evaluate(gd.values, mesh.vertex(a), 1.0);
+      for (int c = 0; c < 3; ++c) {
+        if (!(gd.prescribed & (1 << c))) continue;
+        if (!space_.is_contact_vertex(a)) {
+          xd[space_.u_dof(a, c)] = u[c];
+          continue;
+        }
+        // On the contact boundary the prescribed axes are the frame's tangents (roller_frame):
+        // the fixed U_tk = t_k·u = t_k[c] u_c.
+        const Eigen::Matrix3d& q = space_.vertex_frame(a);
+        for (int k = 1; k < 3; ++k)
+          if (std::abs(q(c, k)) > 0.5) xd[space_.u_dof(a, k)] = q(c, k) * u[c];
+      }
+    }
+  }
 }
 
 TetAssembledProblem TetAssembler::assemble_system() const {

@@ -22,6 +22,9 @@ struct TetProblemData {
   struct Group {
     GroupRole role = GroupRole::kNeumann;
     std::array<ScalarFunction3, 3> values;
+    /// Dirichlet: the prescribed components (bit c for u_c); the others are free with zero
+    /// traction (a roller or symmetry plane).
+    int prescribed = 7;
     ScalarFunction3 gap;  ///< contact
     /// Contact: the gap at x along the body's unit outward normal n there (a rigid plane's
     /// distance along n); used instead of `gap` when set, with the vertex's averaged normal.
@@ -32,6 +35,11 @@ struct TetProblemData {
     std::vector<GroupRole> r;
     for (const Group& g : groups) r.push_back(g.role);
     return r;
+  }
+  std::vector<int> prescribed() const {
+    std::vector<int> p;
+    for (const Group& g : groups) p.push_back(g.role == GroupRole::kDirichlet ? g.prescribed : 0);
+    return p;
   }
 };
 
@@ -64,6 +72,10 @@ class TetAssembler {
   /// The local matrix and vector in the rotated coordinates of contact vertices and faces.
   void rotate_local(int t, Local& loc) const;
   Vector essential_values() const;
+  /// The fixed u of roller groups (Dirichlet groups prescribing some components) in xd, at
+  /// vertices not `held` by a full Dirichlet group: the Cartesian component, or on the contact
+  /// boundary the tangential U_t along that axis.
+  void set_roller_values(const std::vector<char>& held, Vector& xd) const;
   /// C3 ⟨u·n − g, σ_nn⟩ on face f as (DOF, coefficient of S_n) pairs — u·n linear between the
   /// vertices (U_n at a contact vertex, n_f·u at a Dirichlet one), σ_nn = S_n/|f| — and the
   /// gap's part.

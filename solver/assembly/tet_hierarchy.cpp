@@ -204,7 +204,7 @@ std::vector<int> tet_contact_strip(const TetSpace& space) {
 TetDiscretization::TetDiscretization(TetHierarchy meshes, TetProblemData data)
     : meshes_(std::move(meshes)), data_(std::move(data)) {
   for (const TetMesh& m : meshes_.meshes)
-    spaces_.push_back(std::make_unique<TetSpace>(m, data_.roles()));
+    spaces_.push_back(std::make_unique<TetSpace>(m, data_.roles(), data_.prescribed()));
   assembler_ = std::make_unique<TetAssembler>(*spaces_.back(), data_);
   problem_ = assembler_->assemble_system();
 }

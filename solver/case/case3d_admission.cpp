@@ -9,6 +9,7 @@
 #include "case/early_group_check.hpp"
 #include "case/job_time.hpp"
 #include "case/memory_size.hpp"
+#include "case/rigid_motions3d.hpp"
 #include "case/solver_methods.hpp"
 #include "mesh/mesh_error.hpp"
 #include "mesh/tet_msh_reader.hpp"
@@ -20,9 +21,10 @@ namespace {
 /// A builtin's coarse unknowns before it is built: Kuhn meshes have about T/6 vertices and 2T
 /// faces for T tetrahedra, three unknowns each.
 double builtin_coarse_unknowns(const Mesh3dSpec& m) {
-  const double cubes = m.kind == Mesh3dSpec::Kind::kBox
-                           ? double(m.cells[0]) * m.cells[1] * m.cells[2]
-                           : 4.0 * m.ball.cells * m.ball.cells * m.ball.cells;
+  const double cubes =
+      m.kind == Mesh3dSpec::Kind::kBox
+          ? double(m.cells[0]) * m.cells[1] * m.cells[2]
+          : (m.ball.quarter ? 1.0 : 4.0) * m.ball.cells * m.ball.cells * m.ball.cells;
   return 3.0 * (1.0 / 6.0 + 2.0) * 6.0 * cubes;
 }
 
@@ -76,25 +78,54 @@ int tet_group_index(const TetMesh& mesh, const std::string& name) {
 
 namespace {
 
-/// A gap function must give a number at every vertex of its group: its expression was checked
-/// at three sample points only, and a NaN would leave the vertex silently unconstrained.
-std::optional<CaseError> check_gap_function(const std::string& name, const Obstacle3d& obstacle,
-                                            const TetMesh& mesh, int group) {
+/// Where a function of x, y, z is not a number on a group: an expression was checked at three
+/// sample points only, and a NaN would reach the solve (a gap would leave its vertex silently
+/// unconstrained). Dirichlet data and gaps are evaluated at the group's vertices, tractions at
+/// its faces' edge midpoints, as the assembly does.
+std::optional<CaseError> check_finite_on_group(const std::string& name, const std::string& pointer,
+                                               const std::string& what, const Component3d& fn,
+                                               const TetMesh& mesh, int group, bool midpoints) {
   for (int f = 0; f < mesh.num_faces(); ++f) {
     if (mesh.face_group(f) != group) continue;
-    for (int v : mesh.face(f)) {
-      const Point3& x = mesh.vertex(v);
-      const double g = obstacle.gap(x.x(), x.y(), x.z());
-      if (std::isfinite(g)) continue;
+    const auto& v = mesh.face(f);
+    for (int k = 0; k < 3; ++k) {
+      const Point3 x = midpoints ? Point3(0.5 * (mesh.vertex(v[k]) + mesh.vertex(v[(k + 1) % 3])))
+                                 : mesh.vertex(v[k]);
+      const double value = fn(x.x(), x.y(), x.z());
+      if (std::isfinite(value)) continue;
       std::ostringstream s;
-      s << "the gap g is not finite at (x, y, z) = (" << x.x() << ", " << x.y() << ", " << x.z()
-        << ") (value " << g << "), a vertex of the contact group " << name
-        << "; it must give a number at every vertex of the group";
-      return CaseError{
-          child_pointer(child_pointer(child_pointer("/boundary", name), "obstacle"), "g"), s.str()};
+      s << what << " is not finite at (x, y, z) = (" << x.x() << ", " << x.y() << ", " << x.z()
+        << ") (value " << value << "), a " << (midpoints ? "point" : "vertex") << " of the group "
+        << name << "; it must give a number at every " << (midpoints ? "point" : "vertex")
+        << " of the group";
+      return CaseError{pointer, s.str()};
     }
   }
   return std::nullopt;
+}
+
+/// The expressions of a group's condition, checked on the group.
+void check_condition_values(const std::string& name, const Condition3d& bc, const TetMesh& mesh,
+                            int group, std::vector<CaseError>& errors) {
+  const std::string at = child_pointer("/boundary", name);
+  if (bc.type == Condition3d::Type::kContact) {
+    if (bc.obstacle.kind != Obstacle3d::Kind::kGap) return;
+    if (auto e = check_finite_on_group(name, child_pointer(child_pointer(at, "obstacle"), "g"),
+                                       "the gap g", bc.obstacle.gap, mesh, group, false))
+      errors.push_back(*e);
+    return;
+  }
+  const bool dirichlet = bc.type == Condition3d::Type::kDirichlet;
+  const std::string field = dirichlet ? "displacement" : "traction";
+  for (int c = 0; c < 3; ++c) {
+    if (!bc.values[c]) continue;
+    const std::string what = std::string("the ") + field + "'s " + "xyz"[c] + " component";
+    if (auto e = check_finite_on_group(name, child_pointer(at, field) + "/" + std::to_string(c),
+                                       what, bc.values[c], mesh, group, !dirichlet)) {
+      errors.push_back(*e);
+      return;
+    }
+  }
 }
 
 }  // namespace
@@ -107,11 +138,9 @@ std::vector<CaseError> check_3d_groups(const Case3dSpec& spec, const TetMesh& me
       errors.push_back(unknown_group_problem(name, mesh.group_names()));
       continue;
     }
-    if (bc.type != Condition3d::Type::kContact) continue;
-    if (bc.obstacle.kind == Obstacle3d::Kind::kGap) {
-      if (auto e = check_gap_function(name, bc.obstacle, mesh, g)) errors.push_back(*e);
+    check_condition_values(name, bc, mesh, g, errors);
+    if (bc.type != Condition3d::Type::kContact || bc.obstacle.kind == Obstacle3d::Kind::kGap)
       continue;
-    }
     // A plane's gap along a face's normal that does not point at it is infinite; a sphere's may
     // be, and the face is then unconstrained (as in 2D).
     if (bc.obstacle.kind != Obstacle3d::Kind::kPlane) continue;
@@ -131,6 +160,8 @@ std::vector<CaseError> check_3d_groups(const Case3dSpec& spec, const TetMesh& me
       break;
     }
   }
+  if (errors.empty())
+    if (auto e = check_rigid_motions(spec, mesh)) errors.push_back(*e);
   return errors;
 }
 

@@ -8,6 +8,7 @@
 #include "case/case_sections.hpp"
 #include "case/contact3d_section.hpp"
 #include "case/early_group_check.hpp"
+#include "case/expression.hpp"
 #include "case/rule_checker.hpp"
 
 namespace fosls {
@@ -55,7 +56,10 @@ ObjectRulePtr builtin3d_rule() {
                        "element sizes grow as (distance to the pole)^(grading − 1)"),
         optional_field("contact_fraction", number_value(Range::open(0, 1)), ball.contact_fraction,
                        "sphere faces within contact_fraction · R of the axis form the group "
-                       "contact")},
+                       "contact"),
+        optional_field("quarter", boolean_value(), ball.quarter,
+                       "only the quarter x ≥ 0, y ≥ 0, with the extra groups symmetry_x (x = 0) "
+                       "and symmetry_y (y = 0) for rollers: a quarter of the unknowns")},
        {},
        ""},
   };
@@ -92,24 +96,43 @@ ObjectRulePtr mesh3d_rule(const CaseReadOptions& options) {
   return r;
 }
 
+/// [0, null, null] is a roller; [null, null, null] would prescribe nothing.
+void check_displacement_3d(const json& j, const std::string& pointer, RuleChecker& checker) {
+  if (!j.contains("displacement") || !checker.usable(j, pointer, {"displacement"})) return;
+  const json& u = j["displacement"];
+  if (u[0].is_null() && u[1].is_null() && u[2].is_null())
+    checker.error(child_pointer(pointer, "displacement"),
+                  "all three components are null, which prescribes nothing; a boundary free in "
+                  "every direction is a neumann condition with traction [0, 0, 0]");
+}
+
 ObjectRulePtr condition3d_rule(const CaseReadOptions& options) {
   auto r = std::make_shared<ObjectRule>();
   r->title = "a 3D boundary condition";
   r->anchor = "condition3d";
   r->discriminator = "type";
   r->discriminator_meaning = "dirichlet, neumann or contact";
-  const ValueRule vector = vector3_value("[x, y, z]");
+  const ValueRule component = scalar3_value(options.limits.max_expression_length);
   r->variants = {
       {"dirichlet",
        "a dirichlet condition",
        "prescribed displacement",
-       {required_field("displacement", vector, "the prescribed displacement [u_x, u_y, u_z]")},
-       {},
-       ""},
+       {required_field(
+           "displacement",
+           tuple_value(one_of_value({component, null_value()},
+                                    "a number, an expression of x, y and z, or null"),
+                       3, "an array of 3 numbers, expressions or null"),
+           "the prescribed displacement [u_x, u_y, u_z]; null leaves that component free with "
+           "zero traction (a roller or symmetry plane: [0, null, null] on a plane x = const)")},
+       check_displacement_3d,
+       "not all three components null"},
       {"neumann",
        "a neumann condition",
        "prescribed traction σn",
-       {required_field("traction", vector, "the prescribed traction [t_x, t_y, t_z]")},
+       {required_field("traction",
+                       tuple_value(component, 3, "an array of 3 numbers or expressions"),
+                       "the prescribed traction [t_x, t_y, t_z]: numbers or expressions of x, y "
+                       "and z")},
        {},
        ""},
       contact3d_variant(options),
@@ -136,6 +159,7 @@ Mesh3dSpec read_mesh3d_section(const json& j) {
       m.ball.cells = given.value("cells", m.ball.cells);
       m.ball.grading = given.value("grading", m.ball.grading);
       m.ball.contact_fraction = given.value("contact_fraction", m.ball.contact_fraction);
+      m.ball.quarter = given.value("quarter", m.ball.quarter);
     }
   } else if (const auto it = j.find("msh"); it != j.end()) {
     m.kind = Mesh3dSpec::Kind::kMsh;
@@ -161,7 +185,12 @@ Condition3d read_condition3d(const json& j) {
   }
   c.type = type == "dirichlet" ? Condition3d::Type::kDirichlet : Condition3d::Type::kNeumann;
   const json& v = j[type == "dirichlet" ? "displacement" : "traction"];
-  for (int i = 0; i < 3; ++i) c.values[i] = v[i].get<double>();
+  c.prescribed = 0;
+  for (int i = 0; i < 3; ++i) {
+    if (v[i].is_null()) continue;
+    c.values[i] = compile_scalar_3d(read_scalar(v[i]));
+    c.prescribed |= 1 << i;
+  }
   return c;
 }
 

@@ -88,7 +88,10 @@ TetProblemData problem_data(const Case3dSpec& spec, const TetMesh& mesh) {
     }
     group.role =
         bc.type == Condition3d::Type::kDirichlet ? GroupRole::kDirichlet : GroupRole::kNeumann;
-    for (int i = 0; i < 3; ++i) group.values[i] = [v = bc.values[i]](const Point3&) { return v; };
+    group.prescribed = bc.prescribed;
+    for (int i = 0; i < 3; ++i)
+      if (bc.values[i])
+        group.values[i] = [f = bc.values[i]](const Point3& x) { return f(x.x(), x.y(), x.z()); };
   }
   return d;
 }

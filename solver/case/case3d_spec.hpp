@@ -69,11 +69,17 @@ struct Obstacle3d {
   double gap_from(const Point3& x, const Point3& n, const Point3& shift) const;
 };
 
+/// A component of a 3D case's displacement or traction: a number or an expression of x, y, z.
+using Component3d = std::function<double(double x, double y, double z)>;
+
 struct Condition3d {
   enum class Type { kDirichlet, kNeumann, kContact };
   Type type = Type::kNeumann;
-  std::array<double, 3> values = {0, 0, 0};  ///< displacement (Dirichlet) or traction (Neumann)
-  Obstacle3d obstacle;                       ///< contact
+  /// Displacement (Dirichlet) or traction (Neumann), compiled once when read; a Dirichlet
+  /// component given as null is not prescribed (empty here, its bit clear in `prescribed`).
+  std::array<Component3d, 3> values;
+  int prescribed = 7;   ///< Dirichlet: bit c when u_c is prescribed
+  Obstacle3d obstacle;  ///< contact
   double gap_along(const Point3& x, const Point3& n) const { return obstacle.gap_along(x, n); }
 };
 

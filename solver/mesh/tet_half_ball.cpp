@@ -47,6 +47,26 @@ std::pair<std::vector<Point3>, std::vector<std::array<int, 4>>> outward_kuhn_hal
   return {std::move(points), std::move(tets)};
 }
 
+/// The tetrahedra in x ≥ 0, y ≥ 0 (whole cubes there) and their vertices, renumbered in order.
+void keep_quarter(std::vector<Point3>& points, std::vector<std::array<int, 4>>& tets) {
+  std::vector<int> index(points.size(), -1);
+  std::vector<std::array<int, 4>> kept;
+  for (const auto& t : tets) {
+    bool inside = true;
+    for (int v : t) inside &= points[v].x() >= 0.0 && points[v].y() >= 0.0;
+    if (inside) kept.push_back(t);
+  }
+  for (const auto& t : kept)
+    for (int v : t) index[v] = 0;
+  std::vector<Point3> used;
+  for (std::size_t v = 0; v < points.size(); ++v)
+    if (index[v] == 0) index[v] = static_cast<int>(used.size()), used.push_back(points[v]);
+  for (auto& t : kept)
+    for (int& v : t) v = index[v];
+  points.swap(used);
+  tets.swap(kept);
+}
+
 }  // namespace
 
 TetMesh make_half_ball(const HalfBallSpec& spec) {
@@ -56,27 +76,37 @@ TetMesh make_half_ball(const HalfBallSpec& spec) {
         "make_half_ball: radius > 0, cells 1–64, grading 1–4, "
         "contact_fraction in (0, 1] expected");
   auto [reference, tets] = outward_kuhn_half_cube(spec.cells);
+  if (spec.quarter) keep_quarter(reference, tets);
   std::vector<Point3> vertices;
   for (const Point3& xi : reference)
     vertices.push_back(half_ball_point(xi, spec.grading, spec.radius));
   for (const auto& t : tets)
     if (signed_volume(reference, t) * signed_volume(vertices, t) <= 0)
       throw std::invalid_argument("make_half_ball: the grading folds a tetrahedron");
-  const int top = 0, contact = 1, free = 2;
+  const int top = 0, contact = 1, free = 2, symmetry_x = 3, symmetry_y = 4;
   const TetMesh cube(reference, tets, {}, {});
   std::vector<BoundaryFace> boundary;
   for (int f = 0; f < cube.num_faces(); ++f) {
     if (!cube.is_boundary_face(f)) continue;
-    // The top z = 0 stays flat; the half cube's five other sides go onto the sphere.
+    // The top z = 0 stays flat; the half cube's five other sides go onto the sphere; a quarter's
+    // cut planes x = 0 and y = 0 stay where they are.
     const auto& v = cube.face(f);
     int group = top;
-    if (cube.face_normal(f).z() < 0.5) {
+    if (spec.quarter && cube.face_normal(f).x() < -0.5) {
+      group = symmetry_x;
+    } else if (spec.quarter && cube.face_normal(f).y() < -0.5) {
+      group = symmetry_y;
+    } else if (cube.face_normal(f).z() < 0.5) {
       const Point3 c = (vertices[v[0]] + vertices[v[1]] + vertices[v[2]]) / 3.0;
       group = std::hypot(c.x(), c.y()) <= spec.contact_fraction * spec.radius ? contact : free;
     }
     boundary.push_back({v, group});
   }
   const SphereSurface sphere{Point3::Zero(), spec.radius};
+  if (spec.quarter)
+    return TetMesh(std::move(vertices), std::move(tets), boundary,
+                   {"top", "contact", "free", "symmetry_x", "symmetry_y"},
+                   {SphereSurface{}, sphere, sphere, SphereSurface{}, SphereSurface{}});
   return TetMesh(std::move(vertices), std::move(tets), boundary, {"top", "contact", "free"},
                  {SphereSurface{}, sphere, sphere});
 }

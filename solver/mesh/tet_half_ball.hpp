@@ -11,6 +11,10 @@ struct HalfBallSpec {
   int cells = 4;                  ///< Kuhn cubes along the depth; 2 × cells across
   double grading = 2.0;           ///< element sizes ∝ (distance to the pole)^(grading − 1)
   double contact_fraction = 0.5;  ///< of the radius: the contact group's extent about the axis
+  /// Only the quarter x ≥ 0, y ≥ 0, with the groups symmetry_x (x = 0) and symmetry_y (y = 0):
+  /// exactly the whole mesh's tetrahedra there, which is mirror symmetric, so with rollers on
+  /// the two planes it gives a quarter of the whole ball's solution.
+  bool quarter = false;
 };
 
 /// The half ball {|x| ≤ R, z ≤ 0}: a Kuhn mesh of the half cube [−1, 1]² × [−1, 0] whose cubes'

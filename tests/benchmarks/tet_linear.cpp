@@ -11,7 +11,8 @@
 // (and optionally `pdas`, or `nostrip` for mmg without the contact-strip solves) the problem is the
 // 3D Signorini block of tests/solver/tet_contact_test.cpp instead (stage 2), solved to a relative
 // KKT residual of 1e-8; with `hertz` the half ball of tests/solver/tet_hertz_test.cpp (its mesh
-// and indentation set by cells=N grading=P delta=D), which also prints the force against 3D
+// and indentation set by cells=N grading=P delta=D; `quarter`: its quarter with symmetry rollers,
+// forces printed for the whole ball), which also prints the force against 3D
 // Hertz and the contact radius and peak pressure against Hertz's for that force. vtu=FILE
 // writes the solution for ParaView (post/tet_vtu_writer.hpp).
 #include <algorithm>
@@ -72,6 +73,7 @@ bool parse_word(const std::string& w, Options& o) {
   if (w == "hertz") return o.hertz = true;
   if (w == "pdas") return o.pdas = true;
   if (w == "nostrip") return o.no_strip = true;
+  if (w == "quarter") return o.ball.quarter = true;
   if (w.rfind("cells=", 0) == 0) return (o.ball.cells = std::atoi(w.c_str() + 6)) > 0;
   if (w.rfind("vtu=", 0) == 0) return !(o.vtu = w.substr(4)).empty();
   if (w.rfind("v=", 0) == 0) return (o.volumetric = std::atof(w.c_str() + 2)) > 0;
@@ -85,6 +87,13 @@ TetDiscretization discretization(const Options& o, double lambda, int r) {
                      : o.contact ? testing::signorini_block(lambda)
                                  : problem(lambda);
   p.weights.c2_volumetric = o.volumetric;
+  if (o.hertz && o.ball.quarter) {  // rollers on the symmetry planes x = 0 and y = 0
+    p.groups.resize(5);
+    for (int c = 0; c < 2; ++c) {
+      p.groups[3 + c].role = GroupRole::kDirichlet;
+      p.groups[3 + c].prescribed = 1 << c;
+    }
+  }
   return TetDiscretization(
       build_tet_hierarchy(o.hertz ? make_half_ball(o.ball) : make_box({2, 2, 2}), r), p);
 }
@@ -131,10 +140,10 @@ int main(int argc, char** argv) {
   bool usable = argc >= 3;
   for (int k = 3; k < argc && usable; ++k) usable = parse_word(argv[k], o);
   if (!usable) {
-    std::fprintf(
-        stderr,
-        "usage: fosls-bench-3d --header | fosls-bench-3d LAMBDA REFINEMENTS "
-        "[contact|hertz [cells=N] [grading=P] [delta=D]] [v=V] [pdas|nostrip] [vtu=FILE]\n");
+    std::fprintf(stderr,
+                 "usage: fosls-bench-3d --header | fosls-bench-3d LAMBDA REFINEMENTS "
+                 "[contact|hertz [cells=N] [grading=P] [delta=D] [quarter]] [v=V] [pdas|nostrip] "
+                 "[vtu=FILE]\n");
     return 2;
   }
   const double lambda =
@@ -152,7 +161,9 @@ int main(int argc, char** argv) {
       disc.problem().qp, o.pdas ? LevelHierarchy{} : disc.build_level_hierarchy(), options, {}, x);
   const TetAssembler& a = disc.assembler();
   const Vector full = a.full_vector(disc.problem(), x);
-  const Point3 force = a.contact_force(full);
+  // The quarter ball's forces stand for the whole ball's: four times its z component.
+  const double whole = o.ball.quarter ? 4.0 : 1.0;
+  const Point3 force = whole * a.contact_force(full);
   std::printf("| %s | %d | %d | %d | %s %d%s | %.2f s | %.2f s | %.0f MiB |", argv[1], r,
               disc.meshes().finest().num_tets(), disc.problem().qp.size(), o.pdas ? "pdas" : "mmg",
               report.iterations, report.converged ? "" : " (NOT converged)", assembly_s,
@@ -167,7 +178,7 @@ int main(int argc, char** argv) {
         "%.4f, Hertz(F) %.4f, %+.2f %% |",
         force.z(), hertz, 100.0 * (force.z() / hertz - 1.0), radius, a_f,
         100.0 * (radius / a_f - 1.0), peak, p0_f, 100.0 * (peak / p0_f - 1.0));
-    std::printf(" through the top: F_z = %.7f |", force_through_group(disc, full, 0).z());
+    std::printf(" through the top: F_z = %.7f |", whole * force_through_group(disc, full, 0).z());
   }
   if (o.contact || o.hertz)
     std::printf(
