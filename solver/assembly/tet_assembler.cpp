@@ -174,8 +174,11 @@ Vector TetAssembler::essential_values() const {
     } else {
       // ∫_f t dA by the edge-midpoint rule (exact for degree 2), in units of μ.
       Eigen::Vector3d flux = Eigen::Vector3d::Zero();
-      for (int k = 0; k < 3; ++k)
-        flux += evaluate(gd.values, 0.5 * (mesh.vertex(v[k]) + mesh.vertex(v[(k + 1) % 3])), mu_);
+      for (int k = 0; k < 3; ++k) {
+        const Point3 m = 0.5 * (mesh.vertex(v[k]) + mesh.vertex(v[(k + 1) % 3]));
+        flux += gd.normal_pressure ? Eigen::Vector3d(-gd.values[0](m) / mu_ * mesh.face_normal(f))
+                                   : evaluate(gd.values, m, mu_);
+      }
       xd.segment<3>(space_.sigma_dof(f, 0)) = flux * mesh.face_area(f) / 3.0;
     }
   }

@@ -25,6 +25,8 @@ struct TetProblemData {
     /// Dirichlet: the prescribed components (bit c for u_c); the others are free with zero
     /// traction (a roller or symmetry plane).
     int prescribed = 7;
+    /// Neumann: values[0] is a pressure p, the traction −p n with the face's outward normal.
+    bool normal_pressure = false;
     ScalarFunction3 gap;  ///< contact
     /// Contact: the gap at x along the body's unit outward normal n there (a rigid plane's
     /// distance along n); used instead of `gap` when set, with the vertex's averaged normal.

@@ -115,6 +115,12 @@ void check_condition_values(const std::string& name, const Condition3d& bc, cons
       errors.push_back(*e);
     return;
   }
+  if (bc.type == Condition3d::Type::kPressure) {
+    if (auto e = check_finite_on_group(name, child_pointer(at, "pressure"), "the pressure",
+                                       bc.values[0], mesh, group, true))
+      errors.push_back(*e);
+    return;
+  }
   const bool dirichlet = bc.type == Condition3d::Type::kDirichlet;
   const std::string field = dirichlet ? "displacement" : "traction";
   for (int c = 0; c < 3; ++c) {

@@ -111,7 +111,7 @@ ObjectRulePtr condition3d_rule(const CaseReadOptions& options) {
   r->title = "a 3D boundary condition";
   r->anchor = "condition3d";
   r->discriminator = "type";
-  r->discriminator_meaning = "dirichlet, neumann or contact";
+  r->discriminator_meaning = "dirichlet, neumann, pressure or contact";
   const ValueRule component = scalar3_value(options.limits.max_expression_length);
   r->variants = {
       {"dirichlet",
@@ -133,6 +133,14 @@ ObjectRulePtr condition3d_rule(const CaseReadOptions& options) {
                        tuple_value(component, 3, "an array of 3 numbers or expressions"),
                        "the prescribed traction [t_x, t_y, t_z]: numbers or expressions of x, y "
                        "and z")},
+       {},
+       ""},
+      {"pressure",
+       "a pressure condition",
+       "a normal pressure: the traction t = −p n with the body's outward normal n",
+       {required_field("pressure", component,
+                       "the pressure p: a number or an expression of x, y and z; p > 0 pushes "
+                       "into the body")},
        {},
        ""},
       contact3d_variant(options),
@@ -181,6 +189,11 @@ Condition3d read_condition3d(const json& j) {
   if (type == "contact") {
     c.type = Condition3d::Type::kContact;
     c.obstacle = read_obstacle3d(j);
+    return c;
+  }
+  if (type == "pressure") {
+    c.type = Condition3d::Type::kPressure;
+    c.values[0] = compile_scalar_3d(read_scalar(j["pressure"]));
     return c;
   }
   c.type = type == "dirichlet" ? Condition3d::Type::kDirichlet : Condition3d::Type::kNeumann;

@@ -88,6 +88,7 @@ TetProblemData problem_data(const Case3dSpec& spec, const TetMesh& mesh) {
     }
     group.role =
         bc.type == Condition3d::Type::kDirichlet ? GroupRole::kDirichlet : GroupRole::kNeumann;
+    group.normal_pressure = bc.type == Condition3d::Type::kPressure;
     group.prescribed = bc.prescribed;
     for (int i = 0; i < 3; ++i)
       if (bc.values[i])

@@ -73,10 +73,11 @@ struct Obstacle3d {
 using Component3d = std::function<double(double x, double y, double z)>;
 
 struct Condition3d {
-  enum class Type { kDirichlet, kNeumann, kContact };
+  enum class Type { kDirichlet, kNeumann, kPressure, kContact };
   Type type = Type::kNeumann;
   /// Displacement (Dirichlet) or traction (Neumann), compiled once when read; a Dirichlet
-  /// component given as null is not prescribed (empty here, its bit clear in `prescribed`).
+  /// component given as null is not prescribed (empty here, its bit clear in `prescribed`);
+  /// pressure: p in values[0], the traction −p n with the face's outward normal.
   std::array<Component3d, 3> values;
   int prescribed = 7;   ///< Dirichlet: bit c when u_c is prescribed
   Obstacle3d obstacle;  ///< contact

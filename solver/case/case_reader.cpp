@@ -24,7 +24,7 @@ ObjectRulePtr case_rule(const CaseReadOptions& options) {
                      "declared; the numbers are used as they are either way)"),
       optional_field("dimension", integer_value(Range::closed(2, 3)), 2,
                      "2 for this format (plane strain); 3 for a 3D case, whose own format is "
-                     "described under \"3D cases\" (command line only)"),
+                     "described under \"3D cases\""),
       required_field("mesh", object_value(mesh_rule(options)), "the mesh of the body"),
       required_field("material", object_value(material_rule()),
                      "the material (mu and lambda, or E and nu)"),

@@ -103,10 +103,10 @@ class HeldRowsSolver : public FreeSetSolver {
 
   bool refactor(const SparseMatrix& A) override {
     if (!same_pattern(A, A_)) return false;
+    last_free_.clear();  // first: `held_` holds the old values' factor from here on
     std::copy(A.valuePtr(), A.valuePtr() + A.nonZeros(), A_.valuePtr());
     full_.factorize(A_);
     if (full_.info() != Eigen::Success) throw IndefiniteSystemError(kIndefinite);
-    last_free_.clear();
     return true;
   }
 

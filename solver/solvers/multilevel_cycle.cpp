@@ -72,7 +72,14 @@ void MultilevelCycle::set_truncation(const std::vector<char>& truncated) {
   // keeps its ordering and analysis, which on a large 3D coarse mesh cost as much as the
   // factorisation (docs/performance.md, "A large coarse mesh was expensive in 3D").
   const SparseMatrix& coarse = truncation_.matrix(0);
-  if (!coarse_solver_ || !coarse_solver_->refactor(coarse)) {
+  bool refactored = false;
+  try {
+    refactored = coarse_solver_ && coarse_solver_->refactor(coarse);
+  } catch (...) {
+    coarse_solver_.reset();  // half refactored: no solver is left to be used
+    throw;
+  }
+  if (!refactored) {
     coarse_solver_.reset();  // released before its successor is built
     coarse_solver_ =
         std::make_unique<SparseBoxQpSolver>(coarse, hierarchy_.levels[0].block_factorization);

@@ -1,13 +1,15 @@
-// Rollers and expressions in 3D cases: a dirichlet displacement with null components leaves
-// those free with zero traction (symmetry planes), and displacements and tractions may be
-// expressions of x, y and z. Each checked against an exact answer or the whole problem it
-// stands for; a body the rollers leave free, and every bad value, refused by field.
+// Rollers, pressures and expressions in 3D cases: a dirichlet displacement with null components
+// leaves those free with zero traction (symmetry planes), a pressure is −p n, and displacements,
+// tractions and pressures may be expressions of x, y and z. Each checked against an exact answer or
+// the whole problem it stands for; a body the rollers leave free, and every bad value, refused by
+// field.
 
 #include <gtest/gtest.h>
 
 #include <nlohmann/json.hpp>
 
 #include "../case3d_runs.hpp"
+#include "case/case3d_admission.hpp"
 #include "case/case3d_reader.hpp"
 #include "case/case_error.hpp"
 
@@ -63,6 +65,15 @@ TEST(Case3dRollers, ARollerThroughTheContactZoneKeepsTheContactConstraint) {
     EXPECT_EQ(r["contact"]["faces_in_contact"], r["contact"]["faces"]) << method;
     EXPECT_LT(r["functional"]["total"].get<double>(), 1e-18) << method;
   }
+  // Rollers that move their plane: the same stress plus the translation (0.001, 0.002, 0),
+  // exact, which needs the right tangential values at the contact vertices (at the corner on
+  // both planes t2 = −e_y).
+  json moved = box_with_rollers(kTopPressedDown, plane);
+  moved["boundary"]["left"]["displacement"][0] = 0.001;
+  moved["boundary"]["front"]["displacement"][1] = 0.002;
+  const json r = run_3d(moved);
+  EXPECT_LT(r["functional"]["total"].get<double>(), 1e-18);
+  EXPECT_NEAR(r["contact"]["force"][2].get<double>(), 0.01, 1e-9);
 }
 
 /// The shipped hertz_3d at refinement 1, whole or as its shipped quarter with rollers.
@@ -122,6 +133,34 @@ TEST(Case3dRollers, ATractionExpressionIsTheTractionItSays) {
   EXPECT_EQ(number["iterations"], expression["iterations"]);
 }
 
+TEST(Case3dRollers, APressureIsTheTractionAgainstTheOutwardNormal) {
+  // p = 0.01 on the bar's top (outward normal +z) is the traction [0, 0, −0.01]: the same
+  // uniaxial stress, exact, and as an expression.
+  const json bottom = {{"type", "dirichlet"}, {"displacement", {kNull, kNull, 0}}};
+  const json traction =
+      run_3d(box_with_rollers({{"type", "neumann"}, {"traction", {0, 0, -0.01}}}, bottom));
+  const json pressure =
+      run_3d(box_with_rollers({{"type", "pressure"}, {"pressure", 0.01}}, bottom));
+  const json expression =
+      run_3d(box_with_rollers({{"type", "pressure"}, {"pressure", "0.005 * (2 + 0 * x)"}}, bottom));
+  EXPECT_LT(pressure["functional"]["total"].get<double>(), 1e-18);
+  for (const json* r : {&pressure, &expression}) {
+    EXPECT_EQ((*r)["iterations"], traction["iterations"]);
+    EXPECT_NEAR((*r)["functional"]["total"].get<double>(),
+                traction["functional"]["total"].get<double>(), 1e-20);
+  }
+  // The sign: the bar pressed onto a plane by u_z = −0.01 with p on its side x = 1 (outward +x),
+  // σ_xx = −p: Hooke gives σ_zz = −E δ + ν σ_xx, so F_z = 0.01 + 0.3 p = 0.013 (0.007 had the
+  // pressure pulled).
+  json side = box_with_rollers(kTopPressedDown,
+                               {{"type", "contact"}, {"point", {0, 0, 0}}, {"normal", {0, 0, 1}}});
+  side["boundary"]["right"] = {{"type", "pressure"}, {"pressure", 0.01}};
+  EXPECT_NEAR(run_3d(side)["contact"]["force"][2].get<double>(), 0.013, 1e-9);
+  const CaseError nan = run_3d_problem(box_with_rollers(
+      {{"type", "pressure"}, {"pressure", "0.01 + 0 * sqrt(abs(y - 0.5) - 0.1)"}}, bottom));
+  EXPECT_EQ(nan.pointer, "/boundary/top/pressure") << nan.detail;
+}
+
 TEST(Case3dRollers, ABodyTheRollersLeaveFreeIsRefusedNamingTheMotions) {
   // Only the top's u_z and a plane below: the bar may slide along x and y and turn about z.
   json j = box_with_rollers(kTopPressedDown,
@@ -133,7 +172,8 @@ TEST(Case3dRollers, ABodyTheRollersLeaveFreeIsRefusedNamingTheMotions) {
   for (const char* motion : {"translation along the x axis", "translation along the y axis",
                              "rotation about the z axis"})
     EXPECT_NE(e.detail.find(motion), std::string::npos) << e.detail;
-  // One roller on x = 0 stops the slide along x but not the turn about z: still refused.
+  // A roller on x = 0 also stops the turn about z (v_x = −ω_z y varies over that face), and the
+  // top the turns about x and y: only the slide along y is left, still refused.
   j["boundary"]["left"] = {{"type", "dirichlet"}, {"displacement", {0, kNull, kNull}}};
   const CaseError turn = run_3d_problem(j);
   EXPECT_EQ(turn.pointer, "/boundary");
@@ -168,6 +208,9 @@ TEST(Case3dRollers, TheQuarterBallIsAQuarterOfTheUnknowns) {
   const auto read = read_case_3d(j);
   ASSERT_TRUE(read.errors.empty());
   EXPECT_TRUE(read.spec->mesh.ball.quarter);
+  const double quarter = *builtin_3d_unknowns(read.spec->mesh);
+  const double whole = *builtin_3d_unknowns(read_case_3d(testing::hertz_3d(1)).spec->mesh);
+  EXPECT_DOUBLE_EQ(4.0 * quarter, whole);
   j["mesh"]["builtin"]["quarter"] = "yes";
   EXPECT_EQ(case3d_problems(j), std::vector<std::string>{"/mesh/builtin/quarter"});
 }
