@@ -78,9 +78,9 @@ std::vector<FieldRule> solution3d_fields() {
                        "what the user should know: the messages of warning_details, in order"),
           output_field("warning_details",
                        list_value(object_value(warning_rule()), "one per warning"), "",
-                       "the warnings with their codes: no_contact, initial_penetration and the "
-                       "solver's own as in 2D (not_converged, time_limit, rounding_level, "
-                       "coarse_corrections_shortened)"),
+                       "the warnings with their codes: no_contact, initial_penetration, "
+                       "roller_overrides_contact and the solver's own as in 2D (not_converged, "
+                       "time_limit, rounding_level, coarse_corrections_shortened)"),
           output_field("review_required", boolean_value(), "",
                        "a warning says the answer may be physically empty or wrong although it "
                        "converged; fosls-contact solve then exits with code 4"),
