@@ -84,9 +84,9 @@ namespace {
 /// its faces' edge midpoints, as the assembly does.
 std::optional<CaseError> check_finite_on_group(const std::string& name, const std::string& pointer,
                                                const std::string& what, const Component3d& fn,
-                                               const TetMesh& mesh, int group, bool midpoints) {
-  for (int f = 0; f < mesh.num_faces(); ++f) {
-    if (mesh.face_group(f) != group) continue;
+                                               const TetMesh& mesh, const std::vector<int>& faces,
+                                               bool midpoints) {
+  for (int f : faces) {
     const auto& v = mesh.face(f);
     for (int k = 0; k < 3; ++k) {
       const Point3 x = midpoints ? Point3(0.5 * (mesh.vertex(v[k]) + mesh.vertex(v[(k + 1) % 3])))
@@ -104,20 +104,20 @@ std::optional<CaseError> check_finite_on_group(const std::string& name, const st
   return std::nullopt;
 }
 
-/// The expressions of a group's condition, checked on the group.
+/// The expressions of a group's condition, checked on the group's `faces`.
 void check_condition_values(const std::string& name, const Condition3d& bc, const TetMesh& mesh,
-                            int group, std::vector<CaseError>& errors) {
+                            const std::vector<int>& faces, std::vector<CaseError>& errors) {
   const std::string at = child_pointer("/boundary", name);
   if (bc.type == Condition3d::Type::kContact) {
     if (bc.obstacle.kind != Obstacle3d::Kind::kGap) return;
     if (auto e = check_finite_on_group(name, child_pointer(child_pointer(at, "obstacle"), "g"),
-                                       "the gap g", bc.obstacle.gap, mesh, group, false))
+                                       "the gap g", bc.obstacle.gap, mesh, faces, false))
       errors.push_back(*e);
     return;
   }
   if (bc.type == Condition3d::Type::kPressure) {
     if (auto e = check_finite_on_group(name, child_pointer(at, "pressure"), "the pressure",
-                                       bc.values[0], mesh, group, true))
+                                       bc.values[0], mesh, faces, true))
       errors.push_back(*e);
     return;
   }
@@ -127,31 +127,41 @@ void check_condition_values(const std::string& name, const Condition3d& bc, cons
     if (!bc.values[c]) continue;
     const std::string what = std::string("the ") + field + "'s " + "xyz"[c] + " component";
     if (auto e = check_finite_on_group(name, child_pointer(at, field) + "/" + std::to_string(c),
-                                       what, bc.values[c], mesh, group, !dirichlet)) {
+                                       what, bc.values[c], mesh, faces, !dirichlet)) {
       errors.push_back(*e);
       return;
     }
   }
 }
 
+/// Each group's faces in order, from one pass over the mesh: the checks below then cost the
+/// faces once, not once per group (a case may name thousands).
+std::vector<std::vector<int>> faces_by_group(const TetMesh& mesh) {
+  std::vector<std::vector<int>> faces(mesh.group_names().size());
+  for (int f = 0; f < mesh.num_faces(); ++f)
+    if (const int g = mesh.face_group(f); g >= 0) faces[g].push_back(f);
+  return faces;
+}
+
 }  // namespace
 
 std::vector<CaseError> check_3d_groups(const Case3dSpec& spec, const TetMesh& mesh) {
   std::vector<CaseError> errors;
+  const std::vector<std::vector<int>> faces = faces_by_group(mesh);
   for (const auto& [name, bc] : spec.boundary) {
     const int g = tet_group_index(mesh, name);
     if (g < 0) {
       errors.push_back(unknown_group_problem(name, mesh.group_names()));
       continue;
     }
-    check_condition_values(name, bc, mesh, g, errors);
+    check_condition_values(name, bc, mesh, faces[g], errors);
     if (bc.type != Condition3d::Type::kContact || bc.obstacle.kind == Obstacle3d::Kind::kGap)
       continue;
     // A plane's gap along a face's normal that does not point at it is infinite; a sphere's may
     // be, and the face is then unconstrained (as in 2D).
     if (bc.obstacle.kind != Obstacle3d::Kind::kPlane) continue;
-    for (int f = 0; f < mesh.num_faces(); ++f) {
-      if (mesh.face_group(f) != g || mesh.face_normal(f).dot(bc.obstacle.normal) < 0) continue;
+    for (int f : faces[g]) {
+      if (mesh.face_normal(f).dot(bc.obstacle.normal) < 0) continue;
       const Point3 c = mesh.face_centroid(f);
       std::ostringstream s;
       s << "the face of group " << name << " at (" << c.x() << ", " << c.y() << ", " << c.z()
