@@ -2,6 +2,8 @@
 // and the obstacles of contact conditions. Also the scalars [a, b] that conditions and the body
 // force share.
 
+#include <algorithm>
+
 #include "case/case_sections.hpp"
 #include "case/rule_checker.hpp"
 
@@ -93,15 +95,6 @@ ObjectRulePtr friction_rule(const CaseReadOptions& options) {
   return r;
 }
 
-/// [0, null] is a roller; [null, null] would prescribe nothing.
-void check_displacement(const json& j, const std::string& pointer, RuleChecker& checker) {
-  if (!j.contains("displacement") || !checker.usable(j, pointer, {"displacement"})) return;
-  if (j["displacement"][0].is_null() && j["displacement"][1].is_null())
-    checker.error(child_pointer(pointer, "displacement"),
-                  "both components are null, which prescribes nothing; a boundary free in both "
-                  "directions is a neumann condition with traction [0, 0]");
-}
-
 ObjectRulePtr condition_rule(const CaseReadOptions& options) {
   auto r = std::make_shared<ObjectRule>();
   r->title = "a boundary condition";
@@ -121,7 +114,10 @@ ObjectRulePtr condition_rule(const CaseReadOptions& options) {
                2, "an array of 2 numbers, expressions or null"),
            "the prescribed displacement [u_x, u_y]; null leaves that component free with zero "
            "traction (a roller or symmetry plane: [0, null] on a plane x = const)")},
-       check_displacement,
+       // [0, null] is a roller; [null, null] would prescribe nothing.
+       some_displacement_prescribed(
+           "both components are null, which prescribes nothing; a boundary free in both "
+           "directions is a neumann condition with traction [0, 0]"),
        "not both components null"},
       {"neumann",
        "a neumann condition",
@@ -202,6 +198,15 @@ BoundaryCondition read_condition(const json& j) {
 }
 
 }  // namespace
+
+ObjectHook some_displacement_prescribed(std::string why) {
+  return [why = std::move(why)](const json& j, const std::string& pointer, RuleChecker& checker) {
+    if (!j.contains("displacement") || !checker.usable(j, pointer, {"displacement"})) return;
+    const json& u = j["displacement"];
+    if (std::all_of(u.begin(), u.end(), [](const json& c) { return c.is_null(); }))
+      checker.error(child_pointer(pointer, "displacement"), why);
+  };
+}
 
 ValueRule scalar_pair_value(const CaseReadOptions& options) {
   return tuple_value(scalar_value(options.limits.max_expression_length), 2,

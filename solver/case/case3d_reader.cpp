@@ -96,16 +96,6 @@ ObjectRulePtr mesh3d_rule(const CaseReadOptions& options) {
   return r;
 }
 
-/// [0, null, null] is a roller; [null, null, null] would prescribe nothing.
-void check_displacement_3d(const json& j, const std::string& pointer, RuleChecker& checker) {
-  if (!j.contains("displacement") || !checker.usable(j, pointer, {"displacement"})) return;
-  const json& u = j["displacement"];
-  if (u[0].is_null() && u[1].is_null() && u[2].is_null())
-    checker.error(child_pointer(pointer, "displacement"),
-                  "all three components are null, which prescribes nothing; a boundary free in "
-                  "every direction is a neumann condition with traction [0, 0, 0]");
-}
-
 ObjectRulePtr condition3d_rule(const CaseReadOptions& options) {
   auto r = std::make_shared<ObjectRule>();
   r->title = "a 3D boundary condition";
@@ -124,7 +114,10 @@ ObjectRulePtr condition3d_rule(const CaseReadOptions& options) {
                        3, "an array of 3 numbers, expressions or null"),
            "the prescribed displacement [u_x, u_y, u_z]; null leaves that component free with "
            "zero traction (a roller or symmetry plane: [0, null, null] on a plane x = const)")},
-       check_displacement_3d,
+       // [0, null, null] is a roller; [null, null, null] would prescribe nothing.
+       some_displacement_prescribed(
+           "all three components are null, which prescribes nothing; a boundary free in every "
+           "direction is a neumann condition with traction [0, 0, 0]"),
        "not all three components null"},
       {"neumann",
        "a neumann condition",

@@ -49,6 +49,11 @@ Weights read_weights_section(const nlohmann::json& j);
 ObjectRulePtr solver_rule();
 SolverOptions read_solver_section(const nlohmann::json& j);
 
+/// The hook of a dirichlet condition whose `displacement` may have null (free) components: an
+/// error at the field when every component is null, which prescribes nothing; `why` says so and
+/// what to give instead (2D and 3D, boundary_section.cpp).
+ObjectHook some_displacement_prescribed(std::string why);
+
 /// The rule of a refinement loop's max_dofs (adaptivity, accuracy): 1 up to the case limit.
 ValueRule finest_level_dofs_value(const CaseLimits& limits);
 ObjectRulePtr adaptivity_rule(const CaseReadOptions& options);
