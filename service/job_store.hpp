@@ -42,6 +42,9 @@ struct NewJob {
   std::string case_json;  ///< canonical JSON text of the case
   std::string body_hash;  ///< SHA-256 (hex) of case_json
   std::optional<std::string> idempotency_key;
+  /// Admission's estimate of the solve's time, kept so that the worker derives the job's time
+  /// limit from it instead of reading the case again (none: not estimated).
+  std::optional<double> time_estimate_seconds;
 };
 
 /// What a finished solve leaves to store.
@@ -87,6 +90,7 @@ struct ClaimedJob {
   Job job;  ///< state running, attempts already counted
   std::string case_json;
   Lease lease;
+  std::optional<double> time_estimate_seconds;  ///< as submitted (NewJob)
 };
 
 /// What renewing a lease found.

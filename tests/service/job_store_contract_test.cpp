@@ -147,12 +147,14 @@ TEST_P(JobStoreContract, ProgressStepsRoundTripAndSurviveAnOlderSchema) {
   {
     auto c = db_->connect();
     const auto latest = c->query("SELECT max(version) AS v FROM schema_migrations")[0].int64("v");
+    // Back to the schema before progress steps (and the time estimates that came after).
     c->exec(
         "ALTER TABLE jobs DROP COLUMN progress_step; "
         "ALTER TABLE jobs DROP COLUMN progress_steps; "
-        "DELETE FROM schema_migrations WHERE version = " +
-        std::to_string(latest));
-    if (db_->kind() == "sqlite") c->exec("PRAGMA user_version = " + std::to_string(latest - 1));
+        "ALTER TABLE jobs DROP COLUMN time_estimate_s; "
+        "DELETE FROM schema_migrations WHERE version >= " +
+        std::to_string(latest - 1));
+    if (db_->kind() == "sqlite") c->exec("PRAGMA user_version = " + std::to_string(latest - 2));
   }
   store_ = db_->open();
   const auto migrated = store().find(id);
@@ -163,6 +165,39 @@ TEST_P(JobStoreContract, ProgressStepsRoundTripAndSurviveAnOlderSchema) {
   store().update_progress(lease, JobProgress{2, 0.5, -1.0, 1, 3});
   EXPECT_EQ(job_to_json(*store().find(id))["progress"]["step"], 1);
   EXPECT_TRUE(store().complete_succeeded(lease, "{}", ""));
+}
+
+TEST_P(JobStoreContract, TheTimeEstimateGoesFromSubmitToClaim) {
+  NewJob estimated = make_job(R"({"a":1})");
+  estimated.time_estimate_seconds = 12.5;
+  store().submit(estimated, kUnlimited);
+  store().submit(make_job(R"({"a":2})"), kUnlimited);  // admitted without an estimate
+  const auto first = store().claim_next(claim_as());
+  ASSERT_TRUE(first);
+  EXPECT_EQ(first->time_estimate_seconds, std::optional<double>(12.5));
+  const auto second = store().claim_next(claim_as());
+  ASSERT_TRUE(second);
+  EXPECT_FALSE(second->time_estimate_seconds);
+
+  // A job queued before the column existed is claimed without one.
+  store_.reset();
+  {
+    auto c = db_->connect();
+    const auto latest = c->query("SELECT max(version) AS v FROM schema_migrations")[0].int64("v");
+    c->exec(
+        "ALTER TABLE jobs DROP COLUMN time_estimate_s; "
+        "DELETE FROM schema_migrations WHERE version = " +
+        std::to_string(latest));
+    if (db_->kind() == "sqlite") c->exec("PRAGMA user_version = " + std::to_string(latest - 1));
+    c->exec(
+        "INSERT INTO jobs (name, state, case_json, body_hash, created_at) "
+        "VALUES ('old', 'queued', '{}', 'h', 0)");
+  }
+  store_ = db_->open();
+  const auto old = store().claim_next(claim_as());
+  ASSERT_TRUE(old);
+  EXPECT_EQ(old->case_json, "{}");
+  EXPECT_FALSE(old->time_estimate_seconds);
 }
 
 TEST_P(JobStoreContract, OnlyTheLeaseHolderChangesARunningJob) {
