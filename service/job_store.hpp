@@ -57,6 +57,13 @@ struct SolveRecord {
   std::string error;
 };
 
+/// How a job's VTU is stored: gzip-compressed (every result since SQLite's schema 2) or as
+/// its text (older rows), and its stored size.
+struct StoredVtu {
+  bool gzip = false;
+  std::int64_t bytes = 0;
+};
+
 /// What submit did.
 struct SubmitOutcome {
   enum class Kind {
@@ -153,6 +160,15 @@ class JobStore {
 
   /// VTU text of a succeeded job.
   virtual std::optional<std::string> vtu(std::int64_t id) = 0;
+
+  /// How the VTU of a job with a result is stored; nothing when there is none.
+  virtual std::optional<StoredVtu> stored_vtu(std::int64_t id) = 0;
+
+  /// Up to `length` of the VTU's stored bytes from `offset` (fewer at its end): a response
+  /// streams the VTU in such parts instead of holding all of it per client. Nothing when the
+  /// job or its result is gone (deleted meanwhile).
+  virtual std::optional<std::string> stored_vtu_bytes(std::int64_t id, std::int64_t offset,
+                                                      std::int64_t length) = 0;
 
   /// The case as submitted (canonical JSON text).
   virtual std::optional<std::string> case_json(std::int64_t id) = 0;

@@ -172,6 +172,24 @@ std::optional<std::string> SqlJobStore::vtu(std::int64_t id) {
   return rows[0].text("vtu");
 }
 
+std::optional<StoredVtu> SqlJobStore::stored_vtu(std::int64_t id) {
+  // length() of a blob reads its size, not its bytes (SQLite and PostgreSQL alike).
+  const SqlRows rows = connection()->query(
+      "SELECT vtu_encoding, length(vtu) AS bytes FROM job_results WHERE job_id = ?1", {id});
+  if (rows.empty()) return std::nullopt;
+  return StoredVtu{rows[0].text("vtu_encoding") == "gzip", rows[0].int64("bytes")};
+}
+
+std::optional<std::string> SqlJobStore::stored_vtu_bytes(std::int64_t id, std::int64_t offset,
+                                                         std::int64_t length) {
+  // PostgreSQL reads only the TOAST chunks of the part (the column is stored uncompressed).
+  const SqlRows rows =
+      connection()->query("SELECT substr(vtu, ?2, ?3) AS part FROM job_results WHERE job_id = ?1",
+                          {id, offset + 1, length});
+  if (rows.empty()) return std::nullopt;
+  return rows[0].text("part");
+}
+
 JobPage SqlJobStore::list(const JobListQuery& query) {
   // One statement text per filter combination, so each one uses the right index; parameters
   // are numbered in the order they appear (PostgreSQL needs every number used).

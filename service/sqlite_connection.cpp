@@ -1,5 +1,6 @@
 #include "sqlite_connection.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <string>
 
@@ -37,6 +38,33 @@ void SqliteConnection::exec(const std::string& sql) {
     if ((rc & 0xff) == SQLITE_FULL) fail_disk_full(sql + ": " + text);
     throw StoreError(sql + ": " + text);
   }
+}
+
+std::optional<std::string> SqliteConnection::read_blob(const char* table, const char* column,
+                                                       std::int64_t rowid, std::int64_t offset,
+                                                       std::int64_t length) {
+  sqlite3_blob* raw = nullptr;
+  const int rc = sqlite3_blob_open(db_.get(), "main", table, column, rowid, 0, &raw);
+  std::unique_ptr<sqlite3_blob, int (*)(sqlite3_blob*)> blob(raw, sqlite3_blob_close);
+  if (rc != SQLITE_OK) {
+    const std::string message = sqlite3_errmsg(db_.get());
+    // A row deleted meanwhile is an answer, not an error.
+    if (query(std::string("SELECT 1 AS found FROM ") + table + " WHERE rowid = ?1", {rowid})
+            .empty())
+      return std::nullopt;
+    throw StoreError(std::string("reading ") + table + "." + column + ": " + message +
+                     " (SQLite code " + std::to_string(rc) + ")");
+  }
+  const std::int64_t size = sqlite3_blob_bytes(blob.get());
+  const std::int64_t from = std::clamp<std::int64_t>(offset, 0, size);
+  std::string part(static_cast<std::size_t>(std::clamp<std::int64_t>(length, 0, size - from)),
+                   '\0');
+  if (!part.empty()) {
+    const int read = sqlite3_blob_read(blob.get(), part.data(), static_cast<int>(part.size()),
+                                       static_cast<int>(from));
+    if (read != SQLITE_OK) fail(read, std::string("reading ") + table + "." + column);
+  }
+  return part;
 }
 
 void SqliteConnection::rollback() noexcept {

@@ -123,6 +123,12 @@ void SqliteJobStore::migrate() {
   }
 }
 
+std::optional<std::string> SqliteJobStore::stored_vtu_bytes(std::int64_t id, std::int64_t offset,
+                                                            std::int64_t length) {
+  // job_results.job_id is the table's rowid (INTEGER PRIMARY KEY).
+  return thread_connection().read_blob("job_results", "vtu", id, offset, length);
+}
+
 void SqliteJobStore::after_delete(SqlConnection& c) {
   // Deleted results leave free pages; give them back to the file system now rather than
   // keeping a file as large as its largest day. Best effort: the delete itself is committed.

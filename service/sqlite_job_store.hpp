@@ -22,6 +22,10 @@ class SqliteJobStore final : public SqlJobStore {
   /// version, converting an older file to incremental auto-vacuum. Throws StoreError.
   explicit SqliteJobStore(std::string path, int busy_timeout_ms = 5000);
 
+  /// Reads only the part asked for: SQL's substr would load the whole value for each part.
+  std::optional<std::string> stored_vtu_bytes(std::int64_t id, std::int64_t offset,
+                                              std::int64_t length) override;
+
  protected:
   void after_delete(SqlConnection& c) override;
 

@@ -12,6 +12,7 @@
 #include <thread>
 #include <vector>
 
+#include "gzip.hpp"
 #include "store_test_support.hpp"
 
 namespace fosls::service {
@@ -198,6 +199,33 @@ TEST_P(JobStoreContract, TheTimeEstimateGoesFromSubmitToClaim) {
   ASSERT_TRUE(old);
   EXPECT_EQ(old->case_json, "{}");
   EXPECT_FALSE(old->time_estimate_seconds);
+}
+
+TEST_P(JobStoreContract, TheVtuIsReadInPartsOfItsStoredBytes) {
+  const auto id = submit("{}");
+  const Lease lease = store().claim_next(claim_as())->lease;
+  std::string vtu = "<VTKFile>";
+  for (int i = 0; vtu.size() < 300000; ++i) vtu += std::to_string(i * 0.37) + " ";
+  ASSERT_TRUE(store().complete_succeeded(lease, "{}", vtu + "</VTKFile>"));
+  const auto stored = store().stored_vtu(id);
+  ASSERT_TRUE(stored);
+  EXPECT_TRUE(stored->gzip);
+  EXPECT_GT(stored->bytes, 1000);
+  EXPECT_LT(stored->bytes, static_cast<std::int64_t>(vtu.size()));
+  std::string joined;  // odd part sizes, the last one past the end
+  for (std::int64_t at = 0; at < stored->bytes; at += 7777) {
+    const auto part = store().stored_vtu_bytes(id, at, 7777);
+    ASSERT_TRUE(part);
+    EXPECT_EQ(static_cast<std::int64_t>(part->size()),
+              std::min<std::int64_t>(7777, stored->bytes - at));
+    joined += *part;
+  }
+  EXPECT_EQ(static_cast<std::int64_t>(joined.size()), stored->bytes);
+  EXPECT_EQ(gzip_decompress(joined), vtu + "</VTKFile>");
+  EXPECT_EQ(gzip_recorded_size(joined.substr(joined.size() - 4)), vtu.size() + 10);
+  EXPECT_EQ(store().stored_vtu_bytes(id, stored->bytes, 10), std::optional<std::string>(""));
+  EXPECT_FALSE(store().stored_vtu(id + 1));
+  EXPECT_FALSE(store().stored_vtu_bytes(id + 1, 0, 10));
 }
 
 TEST_P(JobStoreContract, OnlyTheLeaseHolderChangesARunningJob) {
