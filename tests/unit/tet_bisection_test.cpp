@@ -215,6 +215,28 @@ TEST(TetBisection, RedRefinementSharesAreQuarters) {
     }
 }
 
+/// A sphere group far too curved for its face: the midpoint of the face's long edge goes onto the
+/// sphere past a half's opposite face, and the step is refused rather than folding that half.
+TEST(TetBisection, AMidpointThatWouldInvertATetrahedronOnItsSphereIsRefused) {
+  const std::vector<Point3> x = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0, 0, 0.1}};
+  const SphereSurface tight{Point3(0.5, 3.0, 0.0), 3.2}, loose{Point3(0.5, 100.5, 0.0), 100.0};
+  for (const SphereSurface& sphere : {tight, loose}) {
+    const TetMesh one(x, {{0, 1, 2, 3}}, {{{0, 1, 2}, 0}}, {"curved"}, {sphere});
+    const TetBisectionState s = initial_tet_bisection_state(one);
+    std::string outcome = "accepted";
+    try {
+      refine_tets_by_bisection(one, s, {0});
+    } catch (const std::runtime_error& e) {
+      outcome = e.what();
+    }
+    if (sphere.radius < 10) {
+      EXPECT_NE(outcome.find("onto its sphere inverted a tetrahedron"), std::string::npos);
+    } else {
+      EXPECT_EQ(outcome, "accepted");
+    }
+  }
+}
+
 TEST(TetBisection, BadInputIsRefusedWithItsReason) {
   const TetMesh box = make_box({1, 1, 1});
   const TetBisectionState s = initial_tet_bisection_state(box);
