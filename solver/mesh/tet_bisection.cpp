@@ -325,7 +325,7 @@ int refine_finest_tet_level(TetHierarchy& hierarchy, TetBisectionState& state,
         refine_tets_by_bisection_in_part(hierarchy.finest(), state, todo, remaining);
     // Each part cuts at least one edge; the whole step's closure is finite
     // (Arnold–Mukherjee–Pouly).
-    if (step.fine.num_tets() == hierarchy.finest().num_tets())
+    if (!todo.empty() && step.fine.num_tets() == hierarchy.finest().num_tets())
       throw std::runtime_error("tetrahedron bisection: a step made no progress (internal error)");
     hierarchy.meshes.push_back(std::move(step.fine));
     hierarchy.maps.push_back(std::move(step.maps));

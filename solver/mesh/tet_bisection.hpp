@@ -97,7 +97,8 @@ TetBisection refine_tets_by_bisection_in_part(const TetMesh& mesh, const TetBise
 /// (with closure) and appends the result as new finest level, or as a few levels when the step
 /// needs vertices off the edges of the finest mesh (each level nested in the one below, its new
 /// vertices midpoints of that level's edges); `state` belongs to the finest mesh before the call
-/// and to the new one after it. Returns the number of levels appended.
+/// and to the new one after it (nothing marked: one level, the same mesh). Returns the number of
+/// levels appended.
 int refine_finest_tet_level(TetHierarchy& hierarchy, TetBisectionState& state,
                             const std::vector<int>& marked);
 

@@ -151,6 +151,9 @@ TEST(TetBisection, RefineFinestLevelAppendsNestedLevels) {
     for (int t = 0; t < h.finest().num_tets(); t += 11) marked.push_back(t);
     levels += refine_finest_tet_level(h, s, marked);
   }
+  // Nothing marked: one more level, the same mesh (as 2D's refine_finest_level).
+  levels += refine_finest_tet_level(h, s, {});
+  EXPECT_EQ(h.finest().num_tets(), h.meshes[h.num_levels() - 2].num_tets());
   ASSERT_EQ(h.num_levels(), levels + 1);
   ASSERT_EQ(int(s.labels.size()), h.finest().num_tets());
   for (int l = 1; l < h.num_levels(); ++l) {
