@@ -26,9 +26,9 @@ Eigen::SparseMatrix<double> tet_prolongation(const TetMesh& coarse, const TetMes
     }
   for (int f = 0; f < fine.num_faces(); ++f) {
     if (const int parent = maps.parent_face[f]; parent >= 0) {
-      // RT0's normal component is constant on a face: a quarter carries a quarter of the flux.
-      const double share =
-          0.25 * (fine.face_normal(f).dot(coarse.face_normal(parent)) > 0 ? 1 : -1);
+      // RT0's normal component is constant on a face: a fine face carries its share of the flux.
+      const double share = maps.parent_face_share[f] *
+                           (fine.face_normal(f).dot(coarse.face_normal(parent)) > 0 ? 1 : -1);
       for (int i = 0; i < 3; ++i) t.emplace_back(sf(f, i), sc(parent, i), share);
       continue;
     }

@@ -33,10 +33,8 @@ bool group_names(const MeshSpec& mesh, std::vector<std::string>& names) {
 }  // namespace
 
 CaseError unknown_group_problem(const std::string& name, const std::vector<std::string>& groups) {
-  std::string list;
-  for (const auto& g : groups) list += (list.empty() ? "'" : ", '") + g + "'";
   return {child_pointer("/boundary", name),
-          "the mesh has no boundary group '" + name + "'; its groups are " + list};
+          "the mesh has no boundary group '" + name + "'; its groups are " + quoted_names(groups)};
 }
 
 CaseError no_dirichlet_problem() {
