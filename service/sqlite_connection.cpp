@@ -64,6 +64,9 @@ std::optional<std::string> SqliteConnection::read_blob(const char* table, const 
                                        static_cast<int>(from));
     if (read != SQLITE_OK) fail(read, std::string("reading ") + table + "." + column);
   }
+  // The part's pages stay in this connection's page cache (2 MB at most; each HTTP thread has
+  // a connection): give them back, since the next part of a stalled client may be seconds away.
+  sqlite3_db_release_memory(db_.get());
   return part;
 }
 

@@ -26,7 +26,7 @@ endforeach()
 
 # Integration: needs the real solver behind fosls-serve.
 foreach(name service_integration_test service_isolation_test service_convergence_test
-             service_3d_test hostile_http_test)
+             service_3d_test hostile_http_test hostile_probes_test)
   add_executable(${name} ${SERVICE_TEST_DIR}/${name}.cpp)
   target_link_libraries(${name} PRIVATE GTest::gtest_main PkgConfig::HTTPLIB PkgConfig::SQLITE3
                                         nlohmann_json::nlohmann_json)
