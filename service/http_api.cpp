@@ -14,7 +14,7 @@
 #include "problem_catalogue.hpp"
 #include "request_checks.hpp"
 #include "static_files.hpp"
-#include "stored_vtu_body.hpp"
+#include "stored_body.hpp"
 #include "submission.hpp"
 
 namespace fosls::service {
@@ -434,8 +434,8 @@ void HttpApi::get_result(const Request& req, Response& res, std::int64_t id) {
   auto job = store_.find(id);
   if (!job) return not_found(req, res, id);
   if (has_result(*job)) {
-    if (auto text = store_.result_json(id)) {
-      res.set_content(*text, "application/json");
+    if (const auto bytes = store_.result_json_size(id)) {
+      set_stored_result_body(res, store_, id, *bytes);
       return;
     }
   }

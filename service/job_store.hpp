@@ -158,6 +158,14 @@ class JobStore {
   /// Result JSON text of a succeeded job.
   virtual std::optional<std::string> result_json(std::int64_t id) = 0;
 
+  /// The size in bytes of a job's result JSON; nothing when there is none.
+  virtual std::optional<std::int64_t> result_json_size(std::int64_t id) = 0;
+
+  /// Up to `length` bytes of the result JSON from `offset` (fewer at its end), sent in such
+  /// parts as the VTU is (stored_vtu_bytes); nothing when the job or its result is gone.
+  virtual std::optional<std::string> result_json_bytes(std::int64_t id, std::int64_t offset,
+                                                       std::int64_t length) = 0;
+
   /// VTU text of a succeeded job.
   virtual std::optional<std::string> vtu(std::int64_t id) = 0;
 

@@ -40,27 +40,39 @@ void SqliteConnection::exec(const std::string& sql) {
   }
 }
 
+namespace {
+
+using BlobHandle = std::unique_ptr<sqlite3_blob, int (*)(sqlite3_blob*)>;
+
+/// The blob handle of a value (its own short read transaction), nothing when the row is gone.
+std::optional<BlobHandle> open_blob(SqliteConnection& c, sqlite3* db, const char* table,
+                                    const char* column, std::int64_t rowid) {
+  sqlite3_blob* raw = nullptr;
+  const int rc = sqlite3_blob_open(db, "main", table, column, rowid, 0, &raw);
+  BlobHandle blob(raw, sqlite3_blob_close);
+  if (rc == SQLITE_OK) return blob;
+  const std::string message = sqlite3_errmsg(db);
+  // A row deleted meanwhile is an answer, not an error.
+  if (c.query(std::string("SELECT 1 AS found FROM ") + table + " WHERE rowid = ?1", {rowid})
+          .empty())
+    return std::nullopt;
+  throw StoreError(std::string("reading ") + table + "." + column + ": " + message +
+                   " (SQLite code " + std::to_string(rc) + ")");
+}
+
+}  // namespace
+
 std::optional<std::string> SqliteConnection::read_blob(const char* table, const char* column,
                                                        std::int64_t rowid, std::int64_t offset,
                                                        std::int64_t length) {
-  sqlite3_blob* raw = nullptr;
-  const int rc = sqlite3_blob_open(db_.get(), "main", table, column, rowid, 0, &raw);
-  std::unique_ptr<sqlite3_blob, int (*)(sqlite3_blob*)> blob(raw, sqlite3_blob_close);
-  if (rc != SQLITE_OK) {
-    const std::string message = sqlite3_errmsg(db_.get());
-    // A row deleted meanwhile is an answer, not an error.
-    if (query(std::string("SELECT 1 AS found FROM ") + table + " WHERE rowid = ?1", {rowid})
-            .empty())
-      return std::nullopt;
-    throw StoreError(std::string("reading ") + table + "." + column + ": " + message +
-                     " (SQLite code " + std::to_string(rc) + ")");
-  }
-  const std::int64_t size = sqlite3_blob_bytes(blob.get());
+  const auto blob = open_blob(*this, db_.get(), table, column, rowid);
+  if (!blob) return std::nullopt;
+  const std::int64_t size = sqlite3_blob_bytes(blob->get());
   const std::int64_t from = std::clamp<std::int64_t>(offset, 0, size);
   std::string part(static_cast<std::size_t>(std::clamp<std::int64_t>(length, 0, size - from)),
                    '\0');
   if (!part.empty()) {
-    const int read = sqlite3_blob_read(blob.get(), part.data(), static_cast<int>(part.size()),
+    const int read = sqlite3_blob_read(blob->get(), part.data(), static_cast<int>(part.size()),
                                        static_cast<int>(from));
     if (read != SQLITE_OK) fail(read, std::string("reading ") + table + "." + column);
   }
@@ -68,6 +80,13 @@ std::optional<std::string> SqliteConnection::read_blob(const char* table, const 
   // a connection): give them back, since the next part of a stalled client may be seconds away.
   sqlite3_db_release_memory(db_.get());
   return part;
+}
+
+std::optional<std::int64_t> SqliteConnection::blob_size(const char* table, const char* column,
+                                                        std::int64_t rowid) {
+  const auto blob = open_blob(*this, db_.get(), table, column, rowid);
+  if (!blob) return std::nullopt;
+  return sqlite3_blob_bytes(blob->get());
 }
 
 void SqliteConnection::rollback() noexcept {

@@ -37,6 +37,8 @@ class SqliteConnection final : public SqlConnection {
   /// own short read transaction); nothing when the row is gone.
   std::optional<std::string> read_blob(const char* table, const char* column, std::int64_t rowid,
                                        std::int64_t offset, std::int64_t length);
+  /// The size in bytes of that value, read without loading it; nothing when the row is gone.
+  std::optional<std::int64_t> blob_size(const char* table, const char* column, std::int64_t rowid);
 
   /// Throws StoreError naming `what` and SQLite's message.
   [[noreturn]] void fail(int code, std::string_view what) const;

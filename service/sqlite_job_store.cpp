@@ -136,6 +136,15 @@ std::optional<std::string> SqliteJobStore::stored_vtu_bytes(std::int64_t id, std
   return thread_connection().read_blob("job_results", "vtu", id, offset, length);
 }
 
+std::optional<std::int64_t> SqliteJobStore::result_json_size(std::int64_t id) {
+  return thread_connection().blob_size("job_results", "result_json", id);
+}
+
+std::optional<std::string> SqliteJobStore::result_json_bytes(std::int64_t id, std::int64_t offset,
+                                                             std::int64_t length) {
+  return thread_connection().read_blob("job_results", "result_json", id, offset, length);
+}
+
 void SqliteJobStore::after_delete(SqlConnection& c) {
   // Deleted results leave free pages; give them back to the file system now rather than
   // keeping a file as large as its largest day. Best effort: the delete itself is committed.

@@ -110,8 +110,7 @@ void probe_unknown_groups(int dimension) {
   // One group the mesh has holds the body, so that the groups are checked against the mesh.
   c["boundary"][dimension == 3 ? "rest" : "top"] = {{"type", "dirichlet"}, {"displacement", zero}};
   for (int k = 0; k < 6000; ++k)
-    c["boundary"]["nope_" + std::to_string(k)] = {
-        {"type", "neumann"}, {"traction", zero}};
+    c["boundary"]["nope_" + std::to_string(k)] = {{"type", "neumann"}, {"traction", zero}};
   const std::string body = c.dump();
   ServerWatch watch(server.pid(), server.port());
   const auto t0 = Clock::now();
@@ -216,7 +215,7 @@ TEST(HostileProbes, StalledDownloadsOfALargeVtuHoldAPartEachNotTheVtu) {
     stalled.push_back(fd);  // never read
   }
   std::this_thread::sleep_for(std::chrono::seconds(4));  // the server's write timeout is 5 s
-  auto again = server.client().Get(path);  // while they still stall
+  auto again = server.client().Get(path);                // while they still stall
   for (int fd : stalled) close(fd);
   watch.stop(std::chrono::milliseconds(1000));
   ASSERT_TRUE(again);

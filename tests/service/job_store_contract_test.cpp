@@ -228,6 +228,23 @@ TEST_P(JobStoreContract, TheVtuIsReadInPartsOfItsStoredBytes) {
   EXPECT_FALSE(store().stored_vtu_bytes(id + 1, 0, 10));
 }
 
+TEST_P(JobStoreContract, TheResultIsReadInPartsOfItsBytes) {
+  const auto id = submit("{}");
+  const Lease lease = store().claim_next(claim_as())->lease;
+  std::string result = R"({"converged":true,"name":"Prüfung σ ✓","steps":[)";
+  for (int i = 0; result.size() < 100000; ++i) result += R"({"k":)" + std::to_string(i) + "},";
+  result += R"({"k":-1}]})";
+  ASSERT_TRUE(store().complete_succeeded(lease, result, "<VTKFile/>"));
+  EXPECT_EQ(store().result_json_size(id), std::optional<std::int64_t>(result.size()));
+  std::string joined;  // odd part sizes that cut multi-byte characters, the last past the end
+  for (std::int64_t at = 0; at < static_cast<std::int64_t>(result.size()); at += 37)
+    joined += store().result_json_bytes(id, at, 37).value_or("<gone>");
+  EXPECT_EQ(joined, result);
+  EXPECT_EQ(store().result_json_bytes(id, result.size(), 10), std::optional<std::string>(""));
+  EXPECT_FALSE(store().result_json_size(id + 1));
+  EXPECT_FALSE(store().result_json_bytes(id + 1, 0, 10));
+}
+
 TEST_P(JobStoreContract, OnlyTheLeaseHolderChangesARunningJob) {
   const auto id = submit("{}");
   const Lease lease = store().claim_next(claim_as("w1"))->lease;

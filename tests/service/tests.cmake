@@ -2,7 +2,7 @@
 #  - unit: the store, workers and HTTP layer in-process, with a fake solver step (test code).
 #  - integration: the real build/bin/fosls-serve on a free loopback port, driven over HTTP.
 set(SERVICE_TEST_DIR ${CMAKE_CURRENT_LIST_DIR})
-foreach(name request_checks_test sqlite_job_store_test worker_pool_test http_api_test stored_vtu_body_test
+foreach(name request_checks_test sqlite_job_store_test worker_pool_test http_api_test stored_body_test
              job_process_test store_url_test postgres_job_store_test request_head_test
              bounded_http_server_test)
   add_executable(${name} ${SERVICE_TEST_DIR}/${name}.cpp)

@@ -1,9 +1,10 @@
-// set_stored_vtu_body: a stored VTU sent part by part. A browser's Accept-Encoding (gzip,
-// deflate, br) gets the stored gzip bytes, never cpp-httplib's brotli at quality 11 (51 s for
-// an 18.7 MB VTU); a client without gzip gets the text decompressed on the way, byte ranges
-// included. Either way the client reads exactly the VTU, and the store is asked for parts of at
-// most kStoredVtuPart bytes, never for the whole VTU.
-#include "stored_vtu_body.hpp"
+// set_stored_vtu_body and set_stored_result_body: a stored VTU and result sent part by part. A
+// browser's Accept-Encoding (gzip, deflate, br) gets the stored gzip bytes of the VTU, never
+// cpp-httplib's brotli at quality 11 (51 s for an 18.7 MB VTU); a client without gzip gets the
+// text decompressed on the way, byte ranges included. Either way the client reads exactly the
+// VTU and result, and the store is asked for parts of at most kStoredPart bytes, never for the
+// whole VTU or result.
+#include "stored_body.hpp"
 
 #include <gtest/gtest.h>
 #include <sqlite3.h>
@@ -11,6 +12,7 @@
 #include <algorithm>
 #include <atomic>
 #include <chrono>
+#include <nlohmann/json.hpp>
 #include <string>
 #include <thread>
 
@@ -29,6 +31,16 @@ class CountingStore : public testing::ForwardingStore {
     ++whole;
     return ForwardingStore::vtu(id);
   }
+  std::optional<std::string> result_json(std::int64_t id) override {
+    ++whole;
+    return ForwardingStore::result_json(id);
+  }
+  std::optional<std::string> result_json_bytes(std::int64_t id, std::int64_t offset,
+                                               std::int64_t length) override {
+    ++parts;
+    largest = std::max<std::int64_t>(largest, length);
+    return ForwardingStore::result_json_bytes(id, offset, length);
+  }
   std::optional<std::string> stored_vtu_bytes(std::int64_t id, std::int64_t offset,
                                               std::int64_t length) override {
     if (++parts == delete_at_part) remove(id);
@@ -46,14 +58,22 @@ std::string vtu_like_text() {
   return text + "</VTKFile>\n";
 }
 
-/// A SQLite store holding one finished job (id 1) with `vtu`, served at GET /vtu.
+/// A SQLite store holding one finished job (id 1) with `vtu` and `result`, served at GET /vtu
+/// and GET /result.
 class StoredVtuServer {
  public:
-  explicit StoredVtuServer(const std::string& vtu)
+  explicit StoredVtuServer(const std::string& vtu,
+                           const std::string& result = R"({"converged": true})")
       : store_(dir_.file("jobs.db")), counting_(store_) {
     store_.submit(testing::make_job("{}"), testing::kUnlimited);
     const auto claimed = store_.claim_next(testing::claim_as());
-    store_.complete_succeeded(claimed->lease, R"({"converged": true})", vtu);
+    store_.complete_succeeded(claimed->lease, result, vtu);
+    server_.Get("/result", [this](const httplib::Request&, httplib::Response& res) {
+      if (const auto bytes = counting_.result_json_size(1))
+        set_stored_result_body(res, counting_, 1, *bytes);
+      else
+        res.status = 404;
+    });
     server_.Get("/vtu", [this](const httplib::Request& req, httplib::Response& res) {
       if (const auto stored = counting_.stored_vtu(1))
         set_stored_vtu_body(req, res, counting_, 1, *stored, "application/xml");
@@ -68,11 +88,11 @@ class StoredVtuServer {
     server_.stop();
     thread_.join();
   }
-  /// GET /vtu with these headers, the body left encoded as sent.
-  httplib::Result get(const httplib::Headers& headers) {
+  /// GET `path` with these headers, the body left encoded as sent.
+  httplib::Result get(const httplib::Headers& headers, const std::string& path = "/vtu") {
     httplib::Client cli("127.0.0.1", port_);
     cli.set_decompress(false);
-    return cli.Get("/vtu", headers);
+    return cli.Get(path, headers);
   }
   CountingStore& counted() { return counting_; }
   std::string db() const { return dir_.file("jobs.db"); }
@@ -99,12 +119,12 @@ TEST(StoredVtuBody, ABrowserGetsTheStoredGzipNotBrotli) {
   EXPECT_EQ(gzip_decompress(res->body), text);
   EXPECT_EQ(server.counted().whole, 0);
   EXPECT_GT(server.counted().parts, 1) << "sent in one part: the test's VTU is too small";
-  EXPECT_LE(server.counted().largest, kStoredVtuPart);
+  EXPECT_LE(server.counted().largest, kStoredPart);
 }
 
 TEST(StoredVtuBody, WithoutGzipTheTextIsDecompressedOnTheWay) {
   const std::string text = vtu_like_text();
-  ASSERT_GT(text.size(), 8u * kStoredVtuPart);
+  ASSERT_GT(text.size(), 8u * kStoredPart);
   StoredVtuServer server(text);
   for (const char* accept : {"br", "identity", ""}) {
     auto res = server.get({{"Accept-Encoding", accept}});
@@ -114,7 +134,7 @@ TEST(StoredVtuBody, WithoutGzipTheTextIsDecompressedOnTheWay) {
     EXPECT_TRUE(res->body == text) << accept << ": " << res->body.size() << " bytes";
   }
   EXPECT_EQ(server.counted().whole, 0);
-  EXPECT_LE(server.counted().largest, kStoredVtuPart);
+  EXPECT_LE(server.counted().largest, kStoredPart);
 }
 
 TEST(StoredVtuBody, ByteRangesOfTheTextAndOfTheGzip) {
@@ -123,7 +143,7 @@ TEST(StoredVtuBody, ByteRangesOfTheTextAndOfTheGzip) {
   const std::size_t far = text.size() - 1000;  // beyond the first parts: decompressed up to it
   for (const auto& [from, to] : {std::pair<std::size_t, std::size_t>{far, far + 99},
                                  {10, 4009},
-                                 {kStoredVtuPart - 5, kStoredVtuPart + 5}}) {
+                                 {kStoredPart - 5, kStoredPart + 5}}) {
     auto res = server.get({{"Range", "bytes=" + std::to_string(from) + "-" + std::to_string(to)}});
     ASSERT_TRUE(res);
     EXPECT_EQ(res->status, 206);
@@ -134,6 +154,30 @@ TEST(StoredVtuBody, ByteRangesOfTheTextAndOfTheGzip) {
   ASSERT_TRUE(whole && head);
   EXPECT_EQ(head->status, 206);
   EXPECT_EQ(head->body, whole->body.substr(0, 100));
+}
+
+TEST(StoredVtuBody, TheResultIsSentAsStoredInParts) {
+  // Over 256 KiB of JSON with text that is not ASCII: parts are bytes, not characters.
+  nlohmann::json result = {{"converged", true}, {"name", "Kontakt – Prüfung ✓"}, {"steps", {}}};
+  for (int k = 0; result.dump().size() < 3 * kStoredPart; ++k)
+    result["steps"].push_back({{"step", k}, {"force", k * 0.125}, {"note", "Über σ = 1"}});
+  const std::string text = result.dump();
+  StoredVtuServer server("<VTKFile/>", text);
+  for (const char* accept : {"gzip, deflate, br", ""}) {
+    auto res = server.get({{"Accept-Encoding", accept}}, "/result");
+    ASSERT_TRUE(res);
+    EXPECT_EQ(res->status, 200);
+    EXPECT_FALSE(res->has_header("Content-Encoding")) << accept;  // never brotli at quality 11
+    EXPECT_EQ(res->get_header_value("Content-Type"), "application/json");
+    EXPECT_EQ(res->get_header_value("Content-Length"), std::to_string(text.size()));
+    EXPECT_TRUE(res->body == text) << accept;
+  }
+  auto range = server.get({{"Range", "bytes=300000-300099"}}, "/result");
+  ASSERT_TRUE(range);
+  EXPECT_EQ(range->body, text.substr(300000, 100));
+  EXPECT_EQ(server.counted().whole, 0);
+  EXPECT_GT(server.counted().parts, 2);
+  EXPECT_LE(server.counted().largest, kStoredPart);
 }
 
 TEST(StoredVtuBody, ARowFromBeforeCompressionIsSentAsItIs) {

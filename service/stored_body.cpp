@@ -1,7 +1,9 @@
-#include "stored_vtu_body.hpp"
+#include "stored_body.hpp"
 
 #include <algorithm>
+#include <functional>
 #include <memory>
+#include <optional>
 #include <string>
 
 #include "gzip.hpp"
@@ -10,17 +12,21 @@ namespace fosls::service {
 
 namespace {
 
+/// Reads up to `length` stored bytes from `offset`; nothing when they are gone.
+using PartReader =
+    std::function<std::optional<std::string>(std::int64_t offset, std::int64_t length)>;
+
 /// The stored bytes as they are, read at the offsets the server asks for.
-httplib::ContentProvider stored_bytes(JobStore& store, std::int64_t id) {
-  return [&store, id](std::size_t offset, std::size_t length, httplib::DataSink& sink) {
-    const auto part = store.stored_vtu_bytes(id, static_cast<std::int64_t>(offset),
-                                             std::min<std::int64_t>(length, kStoredVtuPart));
+httplib::ContentProvider stored_bytes(PartReader read) {
+  return [read = std::move(read)](std::size_t offset, std::size_t length, httplib::DataSink& sink) {
+    const auto part =
+        read(static_cast<std::int64_t>(offset), std::min<std::int64_t>(length, kStoredPart));
     if (!part || part->empty()) return false;  // deleted meanwhile: the connection ends
     return sink.write(part->data(), part->size());
   };
 }
 
-/// The decompressed text, one window of kStoredVtuPart bytes at a time. Sequential reads
+/// The decompressed text, one window of kStoredPart bytes at a time. Sequential reads
 /// continue the stream; an offset before the window (a second byte range) starts it again.
 class InflatingReader {
  public:
@@ -30,7 +36,7 @@ class InflatingReader {
     if (offset < window_at_) restart();
     while (offset >= window_at_ + window_.size()) {
       window_at_ += window_.size();
-      window_.resize(static_cast<std::size_t>(kStoredVtuPart));
+      window_.resize(static_cast<std::size_t>(kStoredPart));
       window_.resize(produce(window_.data(), window_.size()));
       if (window_.empty()) return false;  // shorter than its trailer said, or deleted
     }
@@ -50,7 +56,7 @@ class InflatingReader {
   std::size_t produce(char* out, std::size_t capacity) {
     while (!inflater_->finished()) {
       if (inflater_->needs_input()) {
-        auto part = store_.stored_vtu_bytes(id_, read_, kStoredVtuPart);
+        auto part = store_.stored_vtu_bytes(id_, read_, kStoredPart);
         if (!part || part->empty()) return 0;
         read_ += static_cast<std::int64_t>(part->size());
         inflater_->feed(std::move(*part));
@@ -79,7 +85,9 @@ void set_stored_vtu_body(const httplib::Request& req, httplib::Response& res, Jo
   if (!stored.gzip || takes_gzip) {
     if (stored.gzip) res.set_header("Content-Encoding", "gzip");
     res.set_content_provider(static_cast<std::size_t>(stored.bytes), content_type,
-                             stored_bytes(store, id));
+                             stored_bytes([&store, id](std::int64_t offset, std::int64_t length) {
+                               return store.stored_vtu_bytes(id, offset, length);
+                             }));
     return;
   }
   const auto trailer = store.stored_vtu_bytes(id, stored.bytes - 4, 4);
@@ -90,6 +98,14 @@ void set_stored_vtu_body(const httplib::Request& req, httplib::Response& res, Jo
       [reader](std::size_t offset, std::size_t length, httplib::DataSink& sink) {
         return reader->provide(offset, length, sink);
       });
+}
+
+void set_stored_result_body(httplib::Response& res, JobStore& store, std::int64_t id,
+                            std::int64_t bytes) {
+  res.set_content_provider(static_cast<std::size_t>(bytes), "application/json",
+                           stored_bytes([&store, id](std::int64_t offset, std::int64_t length) {
+                             return store.result_json_bytes(id, offset, length);
+                           }));
 }
 
 }  // namespace fosls::service
