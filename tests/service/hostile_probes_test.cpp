@@ -110,7 +110,8 @@ void probe_unknown_groups(int dimension) {
   // One group the mesh has holds the body, so that the groups are checked against the mesh.
   c["boundary"][dimension == 3 ? "rest" : "top"] = {{"type", "dirichlet"}, {"displacement", zero}};
   for (int k = 0; k < 6000; ++k)
-    c["boundary"]["nope_" + std::to_string(k)] = {{"type", "neumann"}, {"traction", zero}};
+    c["boundary"]["no_such_boundary_group_" + std::to_string(k)] = {{"type", "neumann"},
+                                                                    {"traction", zero}};
   const std::string body = c.dump();
   ServerWatch watch(server.pid(), server.port());
   const auto t0 = Clock::now();
