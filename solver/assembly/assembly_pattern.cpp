@@ -8,7 +8,7 @@
 
 namespace fosls {
 
-std::array<int, 12> triangle_dofs(const FoslsSpace& space, int t) {
+std::array<int, 12> triangle_dofs(const FoslsSpace<2>& space, int t) {
   const Mesh& mesh = space.mesh();
   std::array<int, 12> d;
   for (int k = 0; k < 3; ++k)
@@ -26,7 +26,7 @@ struct DofTriangles {
   std::vector<int> offset, triangles;
 };
 
-DofTriangles dof_triangles(const FoslsSpace& space) {
+DofTriangles dof_triangles(const FoslsSpace<2>& space) {
   const int n = space.num_free(), nt = space.mesh().num_triangles();
   DofTriangles out;
   out.offset.assign(n + 1, 0);
@@ -44,7 +44,8 @@ DofTriangles dof_triangles(const FoslsSpace& space) {
 
 }  // namespace
 
-AssemblyPattern assembly_pattern(const FoslsSpace& space, int threads, const Deadline& deadline) {
+AssemblyPattern assembly_pattern(const FoslsSpace<2>& space, int threads,
+                                 const Deadline& deadline) {
   const int n = space.num_free(), nt = space.mesh().num_triangles();
   // Each pass over the mesh takes as long as a part of the element loop: checked between them,
   // and in the column passes every so many columns (an OpenMP loop cannot be left: the columns

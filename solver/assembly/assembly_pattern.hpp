@@ -14,7 +14,7 @@
 namespace fosls {
 
 /// The 12 local DOFs of triangle t (u: 2k + c, σ: 6 + 2k + i) in the space's full numbering.
-std::array<int, 12> triangle_dofs(const FoslsSpace& space, int t);
+std::array<int, 12> triangle_dofs(const FoslsSpace<2>& space, int t);
 
 /// Which triangles each thread of a parallel assembly visits. Thread t owns the columns (and
 /// the right-hand side entries) of the free DOFs whose lowest-numbered triangle lies in its
@@ -35,7 +35,7 @@ struct AssemblyPattern {
   AssemblyPartition partition;
 };
 /// Throws TimeLimitReached between its passes once `deadline` has passed.
-AssemblyPattern assembly_pattern(const FoslsSpace& space, int threads,
+AssemblyPattern assembly_pattern(const FoslsSpace<2>& space, int threads,
                                  const Deadline& deadline = {});
 
 /// The matrix of `n` free DOFs with a stored (zero) entry wherever two free DOFs share a cell,

@@ -9,7 +9,7 @@
 #include <stdexcept>
 
 #include "assembly/assembly_pattern.hpp"
-#include "fem/element_geometry.hpp"
+#include "fem/simplex_element.hpp"
 
 namespace fosls {
 
@@ -32,7 +32,7 @@ struct PointOperators {
   Row12 asymmetry;                            ///< σ_01 − σ_10
 };
 
-PointOperators point_operators(const ElementGeometry& g, const Point& x, double kappa) {
+PointOperators point_operators(const SimplexElement<2>& g, const Point& x, double kappa) {
   PointOperators op;
   op.constitutive.setZero();
   op.asymmetry.setZero();
@@ -65,7 +65,7 @@ Row12 volumetric_row(const PointOperators& op) {
 }
 
 /// div σ_i as a function of the local DOFs (constant on the triangle).
-Eigen::Matrix<double, 2, 12> divergence_operator(const ElementGeometry& g) {
+Eigen::Matrix<double, 2, 12> divergence_operator(const SimplexElement<2>& g) {
   Eigen::Matrix<double, 2, 12> d;
   d.setZero();
   for (int k = 0; k < 3; ++k)
@@ -104,7 +104,7 @@ std::vector<Point> obstacle_vertex_normals(const Mesh& mesh, const ProblemData& 
   return normals;
 }
 
-FoslsAssembler::FoslsAssembler(const FoslsSpace& space, const ProblemData& data)
+FoslsAssembler::FoslsAssembler(const FoslsSpace<2>& space, const ProblemData& data)
     : space_(space), data_(data) {
   const Mesh& mesh = space.mesh();
   mu_ = data.material.mu;
@@ -116,9 +116,10 @@ FoslsAssembler::FoslsAssembler(const FoslsSpace& space, const ProblemData& data)
   // code").
   if (data.body_force[0] || data.body_force[1]) body_force_.resize(mesh.num_triangles());
   for (int t = 0; t < static_cast<int>(body_force_.size()); ++t) {
-    ElementGeometry g(mesh, t);
+    const SimplexElement<2> g(mesh, t);
+    const auto points = g.quadrature_points();
     for (int q = 0; q < 3; ++q) {
-      Point x = g.edge_midpoint(q);
+      Point x = points[q];
       for (int i = 0; i < 2; ++i)
         body_force_[t][2 * q + i] =
             data.body_force[i] ? data.body_force[i](x.x(), x.y()) / mu_ : 0.0;
@@ -152,14 +153,15 @@ FoslsAssembler::FoslsAssembler(const FoslsSpace& space, const ProblemData& data)
 
 void FoslsAssembler::element_kernel(int t, Local& out) const {
   const FunctionalWeights& w = data_.weights;
-  ElementGeometry g(space_.mesh(), t);
-  const double wq = g.area / 3.0;  // edge-midpoint rule, exact for degree 2
+  const SimplexElement<2> g(space_.mesh(), t);
+  const auto points = g.quadrature_points();
+  const double wq = g.measure / 3.0;  // edge-midpoint rule, exact for degree 2
   const auto div = divergence_operator(g);
   out.K.setZero();
   out.b.setZero();
   out.c = 0.0;
   for (int q = 0; q < 3; ++q) {
-    const PointOperators op = point_operators(g, g.edge_midpoint(q), kappa_);
+    const PointOperators op = point_operators(g, points[q], kappa_);
     out.K.noalias() += (2.0 * w.c2 * wq) * op.constitutive.transpose() * op.constitutive;
     if (w.c2_volumetric != 1.0) {
       const auto trace = volumetric_row(op);
@@ -170,7 +172,7 @@ void FoslsAssembler::element_kernel(int t, Local& out) const {
     out.b.noalias() -= (2.0 * w.c1 * wq) * div.transpose() * f;
     out.c += w.c1 * wq * f.squaredNorm();
   }
-  out.K.noalias() += (2.0 * w.c1 * g.area) * div.transpose() * div;
+  out.K.noalias() += (2.0 * w.c1 * g.measure) * div.transpose() * div;
 }
 
 void FoslsAssembler::rotate_local(int t, Local& loc) const {
@@ -237,7 +239,7 @@ Vector FoslsAssembler::essential_values() const {
     if (g < 0) continue;
     const GroupData& gd = data_.groups[g];
     const auto& pq = mesh.edge(e);
-    if (const int prescribed = prescribed_components(gd.role)) {
+    if (const int prescribed = gd.role == GroupRole::kDirichlet ? gd.prescribed & 3 : 0) {
       for (int v : pq)
         for (int c = 0; c < 2; ++c) {
           if (!(prescribed & (1 << c))) continue;
@@ -422,15 +424,16 @@ FunctionalParts FoslsAssembler::functional(const Vector& x_full) const {
   double mom = 0, con = 0, asym = 0;
 #pragma omp parallel for reduction(+ : mom, con, asym) schedule(static)
   for (int t = 0; t < mesh.num_triangles(); ++t) {
-    ElementGeometry g(mesh, t);
+    const SimplexElement<2> g(mesh, t);
+    const auto points = g.quadrature_points();
     const auto dofs = triangle_dofs(space_, t);
     Vec12 xl;
     for (int i = 0; i < 12; ++i) xl[i] = x_cart[dofs[i]];
-    const double wq = g.area / 3.0;
+    const double wq = g.measure / 3.0;
     const Eigen::Vector2d div = divergence_operator(g) * xl;
     double m = 0, c = 0, a = 0;
     for (int q = 0; q < 3; ++q) {
-      const PointOperators op = point_operators(g, g.edge_midpoint(q), kappa_);
+      const PointOperators op = point_operators(g, points[q], kappa_);
       const Eigen::Vector2d f = body_force(t, q);
       m += w.c1 * wq * (div + f).squaredNorm();
       c += w.c2 * wq * (op.constitutive * xl).squaredNorm();

@@ -46,7 +46,7 @@ struct FunctionalParts {
 class FoslsAssembler {
  public:
   /// Evaluates the data (not thread-safe functions) once, sequentially.
-  FoslsAssembler(const FoslsSpace& space, const ProblemData& data);
+  FoslsAssembler(const FoslsSpace<2>& space, const ProblemData& data);
 
   /// A, b, bounds and constant of J on the free DOFs; O(N), element loop on both cores. The
   /// element loop polls `deadline` and throws TimeLimitReached once it has passed.
@@ -63,7 +63,7 @@ class FoslsAssembler {
   /// The functional and its element-wise split at a full DOF vector.
   FunctionalParts functional(const Vector& x_full) const;
 
-  const FoslsSpace& space() const { return space_; }
+  const FoslsSpace<2>& space() const { return space_; }
   const ProblemData& data() const { return data_; }
 
  private:
@@ -83,7 +83,7 @@ class FoslsAssembler {
   /// U_n ≤ g at contact vertices, S_n ≤ 0 on contact edges.
   void set_contact_bounds(Vector& upper) const;
 
-  const FoslsSpace& space_;
+  const FoslsSpace<2>& space_;
   const ProblemData& data_;
   double mu_ = 1.0;
   double kappa_ = 0.5;  ///< λ / (2λ + 2μ), → ½ as λ → ∞

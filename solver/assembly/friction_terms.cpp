@@ -43,19 +43,19 @@ double reference_slip_origin(const ProblemData& data, int v, const Point& tangen
   return tangent.dot(data.reference_displacement[v]);
 }
 
-Point slip_tangent(const FoslsSpace& space, int e, int v) {
+Point slip_tangent(const FoslsSpace<2>& space, int e, int v) {
   const Point n = space.is_contact_vertex(v) ? space.vertex_normal(v) : space.mesh().edge_normal(e);
   return Point(-n.y(), n.x());
 }
 
-double tangential_displacement(const FoslsSpace& space, const Vector& x_full, int v,
+double tangential_displacement(const FoslsSpace<2>& space, const Vector& x_full, int v,
                                const Point& t) {
   if (space.is_contact_vertex(v)) return x_full[space.u_dof(v, 1)];
   return t.x() * x_full[space.u_dof(v, 0)] + t.y() * x_full[space.u_dof(v, 1)];
 }
 
-FrictionLayout friction_layout(const FoslsSpace& space, const ProblemData& data, const Vector& xd,
-                               Kinks& kinks) {
+FrictionLayout friction_layout(const FoslsSpace<2>& space, const ProblemData& data,
+                               const Vector& xd, Kinks& kinks) {
   const Mesh& mesh = space.mesh();
   FrictionLayout layout;
   layout.c3 = data.weights.c3;

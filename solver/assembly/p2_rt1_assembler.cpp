@@ -232,7 +232,7 @@ Vector P2Rt1Assembler::essential_values() const {
     const int g = mesh.edge_group(e);
     if (g < 0) continue;
     const GroupData& gd = data_.groups[g];
-    if (const int prescribed = prescribed_components(gd.role)) {
+    if (const int prescribed = gd.role == GroupRole::kDirichlet ? gd.prescribed & 3 : 0) {
       for (int a : {mesh.edge(e)[0], mesh.edge(e)[1], space_.midpoint_node(e)}) {
         const Point x = space_.node_position(a);
         for (int c = 0; c < 2; ++c) {

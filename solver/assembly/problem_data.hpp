@@ -67,6 +67,9 @@ struct ContactData {
 /// Boundary condition of one mesh group.
 struct GroupData {
   GroupRole role = GroupRole::kNeumann;
+  /// kDirichlet: the components prescribed, bit c for u_c (a roller or symmetry plane
+  /// prescribes some; BoundaryRole::prescribed).
+  int prescribed = kEveryComponent;
   std::array<ScalarFunction, 2> values;  ///< u_D (Dirichlet) or t_N (Neumann), Cartesian
   /// Neumann: values[0] is a normal pressure p, the traction t = −p n (n the outward normal).
   bool normal_pressure = false;
@@ -83,17 +86,13 @@ struct ProblemData {
   /// state a load step starts from (empty: zero).
   std::vector<Point> reference_displacement;
 
-  std::vector<GroupRole> roles() const {
-    std::vector<GroupRole> r;
-    for (const auto& g : groups) r.push_back(g.role);
-    return r;
-  }
-  /// 1 for each frictional contact group.
-  std::vector<char> frictional_groups() const {
-    std::vector<char> f;
+  /// What each group makes of the DOFs on it (FoslsSpace).
+  std::vector<BoundaryRole> boundary_roles() const {
+    std::vector<BoundaryRole> r;
     for (const auto& g : groups)
-      f.push_back(g.role == GroupRole::kContact && g.contact.friction.frictional());
-    return f;
+      r.push_back(
+          {g.role, g.prescribed, g.role == GroupRole::kContact && g.contact.friction.frictional()});
+    return r;
   }
 };
 

@@ -5,7 +5,8 @@
 #include <stdexcept>
 
 #include "assembly/assembly_pattern.hpp"
-#include "fem/tet_element.hpp"
+#include "fem/contact_frame.hpp"
+#include "fem/simplex_element.hpp"
 
 namespace fosls {
 
@@ -28,7 +29,7 @@ struct PointOperators {
   Eigen::Matrix<double, 3, 24> asymmetry;     ///< σ_01 − σ_10, σ_02 − σ_20, σ_12 − σ_21
 };
 
-PointOperators point_operators(const TetElement& e, const Point3& x, double kappa) {
+PointOperators point_operators(const SimplexElement<3>& e, const Point3& x, double kappa) {
   PointOperators op;
   op.constitutive.setZero();
   op.asymmetry.setZero();
@@ -54,7 +55,7 @@ PointOperators point_operators(const TetElement& e, const Point3& x, double kapp
   return op;
 }
 
-Eigen::Matrix<double, 3, 24> divergence_operator(const TetElement& e) {
+Eigen::Matrix<double, 3, 24> divergence_operator(const SimplexElement<3>& e) {
   Eigen::Matrix<double, 3, 24> d = Eigen::Matrix<double, 3, 24>::Zero();
   for (int k = 0; k < 4; ++k)
     for (int i = 0; i < 3; ++i) d(i, 12 + 3 * k + i) = e.rt0_div(k);
@@ -69,7 +70,7 @@ Eigen::Vector3d evaluate(const std::array<ScalarFunction3, 3>& f, const Point3& 
 
 }  // namespace
 
-TetAssembler::TetAssembler(const TetSpace& space, const TetProblemData& data)
+TetAssembler::TetAssembler(const FoslsSpace<3>& space, const TetProblemData& data)
     : space_(space), data_(data) {
   mu_ = data.material.mu;
   if (!(mu_ > 0)) throw std::invalid_argument("mu must be positive");
@@ -81,7 +82,7 @@ TetAssembler::TetAssembler(const TetSpace& space, const TetProblemData& data)
   const double far = 10.0 * mesh.diameter();
   vertex_gap_.assign(mesh.num_vertices(), std::numeric_limits<double>::infinity());
   for (int f = 0; f < mesh.num_faces(); ++f) {
-    if (!space.is_contact_face(f)) continue;
+    if (!space.is_contact_facet(f)) continue;
     const TetProblemData::Group& group = data.groups[mesh.face_group(f)];
     for (int v : mesh.face(f)) {
       double g = group.gap ? group.gap(mesh.vertex(v)) : 0.0;
@@ -106,8 +107,8 @@ void TetAssembler::rotate_local(int t, Local& loc) const {
   for (int k = 0; k < 4; ++k) {
     if (const int v = mesh.tet(t)[k]; space_.is_contact_vertex(v))
       rotate(3 * k, space_.vertex_frame(v));
-    if (const int f = mesh.tet_face(t, k); space_.is_contact_face(f))
-      rotate(12 + 3 * k, normal_frame(mesh.face_normal(f)));
+    if (const int f = mesh.tet_face(t, k); space_.is_contact_facet(f))
+      rotate(12 + 3 * k, normal_frame<3>(mesh.face_normal(f)));
   }
 }
 
@@ -133,13 +134,13 @@ double TetAssembler::contact_gap_term(int f) const {
 
 void TetAssembler::element_kernel(int t, Local& out) const {
   const FunctionalWeights& w = data_.weights;
-  const TetElement e(space_.mesh(), t);
+  const SimplexElement<3> e(space_.mesh(), t);
   const auto div = divergence_operator(e);
-  const double wq = 0.25 * e.volume;
+  const double wq = 0.25 * e.measure;
   out.K.setZero();
   out.b.setZero();
   out.c = 0.0;
-  for (const Point3& x : tet_quadrature_points(e)) {
+  for (const Point3& x : e.quadrature_points()) {
     const PointOperators op = point_operators(e, x, kappa_);
     out.K.noalias() += (2.0 * w.c2 * wq) * op.constitutive.transpose() * op.constitutive;
     if (w.c2_volumetric != 1.0) {
@@ -153,7 +154,7 @@ void TetAssembler::element_kernel(int t, Local& out) const {
     out.b.noalias() -= (2.0 * w.c1 * wq) * div.transpose() * f;
     out.c += w.c1 * wq * f.squaredNorm();
   }
-  out.K.noalias() += (2.0 * w.c1 * e.volume) * div.transpose() * div;
+  out.K.noalias() += (2.0 * w.c1 * e.measure) * div.transpose() * div;
 }
 
 Vector TetAssembler::essential_values() const {
@@ -224,7 +225,7 @@ TetAssembledProblem TetAssembler::assemble_system() const {
   // within the contact face's tetrahedron, so in the pattern.
   SparseMatrix a = cell_pattern(n, mesh.num_tets(), [this](int t) {
     std::array<int, 24> free;
-    const auto dofs = space_.tet_dofs(t);
+    const auto dofs = space_.cell_dofs(t);
     for (int i = 0; i < 24; ++i) free[i] = space_.free_index(dofs[i]);
     return free;
   });
@@ -235,7 +236,7 @@ TetAssembledProblem TetAssembler::assemble_system() const {
   for (int t = 0; t < mesh.num_tets(); ++t) {
     element_kernel(t, loc);
     rotate_local(t, loc);
-    const auto dofs = space_.tet_dofs(t);
+    const auto dofs = space_.cell_dofs(t);
     c += loc.c;
     for (int i = 0; i < 24; ++i) {
       const int fi = space_.free_index(dofs[i]);
@@ -258,7 +259,7 @@ TetAssembledProblem TetAssembler::assemble_system() const {
     }
   }
   for (int f = 0; f < mesh.num_faces(); ++f) {
-    if (!space_.is_contact_face(f)) continue;
+    if (!space_.is_contact_facet(f)) continue;
     const int s = space_.free_index(space_.sigma_dof(f, 0));
     b[s] += contact_gap_term(f);
     for (const auto& [dof, value] : contact_couplings(f)) {
@@ -295,15 +296,15 @@ FunctionalParts TetAssembler::functional(const Vector& x_full) const {
   FunctionalParts parts;
   parts.element.assign(mesh.num_tets(), 0.0);
   for (int t = 0; t < mesh.num_tets(); ++t) {
-    const TetElement e(mesh, t);
-    const auto dofs = space_.tet_dofs(t);
+    const SimplexElement<3> e(mesh, t);
+    const auto dofs = space_.cell_dofs(t);
     Vec24 xl;
     for (int i = 0; i < 24; ++i) xl[i] = x_cart[dofs[i]];
     const Eigen::Vector3d div = divergence_operator(e) * xl;
     double m = 0, c = 0, as = 0;
-    for (const Point3& x : tet_quadrature_points(e)) {
+    for (const Point3& x : e.quadrature_points()) {
       const PointOperators op = point_operators(e, x, kappa_);
-      const double wq = 0.25 * e.volume;
+      const double wq = 0.25 * e.measure;
       m += w.c1 * wq * (div + evaluate(data_.body_force, x, mu_)).squaredNorm();
       const Eigen::Matrix<double, 9, 1> r = op.constitutive * xl;
       c += w.c2 * wq * r.squaredNorm();
@@ -315,7 +316,7 @@ FunctionalParts TetAssembler::functional(const Vector& x_full) const {
     parts.momentum += m, parts.constitutive += c, parts.asymmetry += as;
   }
   for (int f = 0; f < mesh.num_faces(); ++f) {
-    if (!space_.is_contact_face(f)) continue;
+    if (!space_.is_contact_facet(f)) continue;
     const double sn = x_full[space_.sigma_dof(f, 0)];
     double term = -contact_gap_term(f) * sn;
     for (const auto& [dof, value] : contact_couplings(f)) term += value * x_full[dof] * sn;
@@ -329,8 +330,8 @@ Point3 TetAssembler::contact_force(const Vector& x_full) const {
   const TetMesh& mesh = space_.mesh();
   Point3 force = Point3::Zero();
   for (int f = 0; f < mesh.num_faces(); ++f)
-    if (space_.is_contact_face(f))
-      force += normal_frame(mesh.face_normal(f)) * x_full.segment<3>(space_.sigma_dof(f, 0));
+    if (space_.is_contact_facet(f))
+      force += normal_frame<3>(mesh.face_normal(f)) * x_full.segment<3>(space_.sigma_dof(f, 0));
   return mu_ * force;
 }
 
@@ -338,7 +339,8 @@ std::vector<double> TetAssembler::contact_pressure(const Vector& x_full) const {
   const TetMesh& mesh = space_.mesh();
   std::vector<double> p(mesh.num_faces(), 0.0);
   for (int f = 0; f < mesh.num_faces(); ++f)
-    if (space_.is_contact_face(f)) p[f] = -mu_ * x_full[space_.sigma_dof(f, 0)] / mesh.face_area(f);
+    if (space_.is_contact_facet(f))
+      p[f] = -mu_ * x_full[space_.sigma_dof(f, 0)] / mesh.face_area(f);
   return p;
 }
 

@@ -7,7 +7,7 @@
 
 #include "assembly/fosls_assembler.hpp"
 #include "core/box_qp.hpp"
-#include "fem/tet_space.hpp"
+#include "fem/fosls_space.hpp"
 
 namespace fosls {
 
@@ -33,15 +33,10 @@ struct TetProblemData {
     std::function<double(const Point3& x, const Point3& n)> gap_along_normal;
   };
   std::vector<Group> groups;  ///< indexed like TetMesh::group_names()
-  std::vector<GroupRole> roles() const {
-    std::vector<GroupRole> r;
-    for (const Group& g : groups) r.push_back(g.role);
+  std::vector<BoundaryRole> boundary_roles() const {
+    std::vector<BoundaryRole> r;
+    for (const Group& g : groups) r.push_back({g.role, g.prescribed});
     return r;
-  }
-  std::vector<int> prescribed() const {
-    std::vector<int> p;
-    for (const Group& g : groups) p.push_back(g.role == GroupRole::kDirichlet ? g.prescribed : 0);
-    return p;
   }
 };
 
@@ -53,9 +48,9 @@ struct TetAssembledProblem {
 
 class TetAssembler {
  public:
-  TetAssembler(const TetSpace& space, const TetProblemData& data);
+  TetAssembler(const FoslsSpace<3>& space, const TetProblemData& data);
 
-  const TetSpace& space() const { return space_; }
+  const FoslsSpace<3>& space() const { return space_; }
   const TetProblemData& data() const { return data_; }
   TetAssembledProblem assemble_system() const;
   Vector full_vector(const TetAssembledProblem& p, const Vector& x_free) const;
@@ -84,7 +79,7 @@ class TetAssembler {
   std::vector<std::pair<int, double>> contact_couplings(int f) const;
   double contact_gap_term(int f) const;
 
-  const TetSpace& space_;
+  const FoslsSpace<3>& space_;
   const TetProblemData& data_;
   double mu_ = 1.0;
   double kappa_ = 1.0 / 3.0;        ///< λ / (3λ + 2μ), → ⅓ as λ → ∞

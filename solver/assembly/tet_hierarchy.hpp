@@ -21,7 +21,7 @@ Eigen::SparseMatrix<double> tet_prolongation(const TetMesh& coarse, const TetMes
 /// The vertex patches of a space in its free numbering: the vertex's u DOFs and the σ DOFs of
 /// every face through it (the Arnold–Falk–Winther star), in two_vertex_blocks' order; `split`,
 /// when given, receives the ends of the two blocks a sweep may run on two threads.
-std::vector<std::vector<int>> tet_vertex_patches(const TetSpace& space,
+std::vector<std::vector<int>> tet_vertex_patches(const FoslsSpace<3>& space,
                                                  std::array<int, 2>* split = nullptr);
 
 /// A case's 3D discretisation on all levels: spaces, the finest level's QP and the hierarchy.
@@ -31,7 +31,7 @@ class TetDiscretization {
   TetDiscretization(const TetDiscretization&) = delete;  // the assembler refers to data_
   TetDiscretization& operator=(const TetDiscretization&) = delete;
   const TetHierarchy& meshes() const { return meshes_; }
-  const TetSpace& finest_space() const { return *spaces_.back(); }
+  const FoslsSpace<3>& finest_space() const { return *spaces_.back(); }
   const TetAssembler& assembler() const { return *assembler_; }
   const TetAssembledProblem& problem() const { return problem_; }
   LevelHierarchy build_level_hierarchy() const;
@@ -39,7 +39,7 @@ class TetDiscretization {
  private:
   TetHierarchy meshes_;
   TetProblemData data_;
-  std::vector<std::unique_ptr<TetSpace>> spaces_;
+  std::vector<std::unique_ptr<FoslsSpace<3>>> spaces_;
   std::unique_ptr<TetAssembler> assembler_;
   TetAssembledProblem problem_;
 };

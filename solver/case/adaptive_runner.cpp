@@ -198,7 +198,7 @@ CaseSolution solve_case_levels(MeshHierarchy meshes, const ProblemData& data, co
     const Discretization& disc = *solution.disc;
     solution.order2.reset();
     if (spec.mesh.order == 2)
-      solution.order2 = std::make_unique<P2Rt1Space>(disc.meshes().finest(), data.roles());
+      solution.order2 = std::make_unique<P2Rt1Space>(disc.meshes().finest(), data.boundary_roles());
     solution.dofs = solution.order2 ? solution.order2->num_free() : disc.problem().qp.size();
     solution.dofs_total =
         solution.order2 ? solution.order2->num_dofs() : disc.finest_space().num_dofs();

@@ -31,7 +31,7 @@ ContactSummary contact_summary(const TetDiscretization& disc, const Vector& x_fu
   ContactSummary s;
   s.force = a.contact_force(x_full);
   for (int f = 0; f < mesh.num_faces(); ++f) {
-    if (!disc.finest_space().is_contact_face(f)) continue;
+    if (!disc.finest_space().is_contact_facet(f)) continue;
     ++s.faces;
     s.max_pressure = std::max(s.max_pressure, p[f]);
     if (p[f] > 0) {
@@ -120,13 +120,13 @@ std::vector<ResultWarning> contact_warnings(const Case3dSpec& spec, const TetMes
 /// Contact vertices whose obstacle constraint a roller displaced: the roller's axis was more
 /// than 30° from the contact's tangent plane (roller_frame), so its data won and the vertex
 /// may cross the obstacle. A documented rule, but the answer is not what the case says there.
-std::vector<ResultWarning> roller_warnings(const TetSpace& space) {
+std::vector<ResultWarning> roller_warnings(const FoslsSpace<3>& space) {
   const TetMesh& mesh = space.mesh();
   std::vector<char> seen(mesh.num_vertices(), 0);
   int count = 0;
   Point3 first = Point3::Zero();
   for (int f = 0; f < mesh.num_faces(); ++f) {
-    if (!space.is_contact_face(f)) continue;
+    if (!space.is_contact_facet(f)) continue;
     for (int v : mesh.face(f)) {
       if (seen[v] || space.is_contact_vertex(v)) continue;
       seen[v] = 1;

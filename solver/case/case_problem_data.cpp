@@ -38,9 +38,8 @@ ProblemData problem_data(const CaseSpec& spec, const Mesh& mesh) {
     GroupData& g = d.groups[mesh.group_index(name)];
     switch (bc.type) {
       case BoundaryCondition::Type::kDirichlet:
-        g.role = !bc.prescribed[1]   ? GroupRole::kDirichletX
-                 : !bc.prescribed[0] ? GroupRole::kDirichletY
-                                     : GroupRole::kDirichlet;
+        g.role = GroupRole::kDirichlet;
+        g.prescribed = (bc.prescribed[0] ? 1 : 0) | (bc.prescribed[1] ? 2 : 0);
         break;
       case BoundaryCondition::Type::kNeumann:
         g.role = GroupRole::kNeumann;

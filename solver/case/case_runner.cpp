@@ -107,7 +107,7 @@ std::vector<CaseError> validate_case(const nlohmann::json& j, const CaseReadOpti
 namespace {
 
 /// u at every vertex from a full (rotated) DOF vector.
-std::vector<Point> vertex_displacements(const FoslsSpace& space, const Vector& x_full) {
+std::vector<Point> vertex_displacements(const FoslsSpace<2>& space, const Vector& x_full) {
   const Vector cartesian = space.rotation() * x_full;
   std::vector<Point> u(space.mesh().num_vertices());
   for (int v = 0; v < static_cast<int>(u.size()); ++v)

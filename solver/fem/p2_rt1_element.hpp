@@ -2,7 +2,7 @@
 // P2 and RT1 on one triangle: the local basis of the order-2 space (docs/method.md §10).
 //
 // Triangle T with counter-clockwise vertices a_0, a_1, a_2, edge e_k opposite a_k, as in
-// element_geometry.hpp.
+// simplex_element.hpp.
 // P2 (6 functions): node k < 3 the vertex a_k, λ_k(2λ_k − 1); node 3 + k the midpoint of e_k,
 //     4 λ_{k+1} λ_{k+2}.
 // RT1 (8 functions, each of degree 2 with a linear normal component on every edge and a linear

@@ -8,7 +8,7 @@ namespace fosls {
 
 namespace {
 /// Contact edges in chain order: each chain starts at an end vertex (used by one contact edge).
-std::vector<int> chain_order(const FoslsSpace& space) {
+std::vector<int> chain_order(const FoslsSpace<2>& space) {
   const Mesh& mesh = space.mesh();
   std::map<int, std::vector<int>> at_vertex;
   std::vector<int> edges;
@@ -46,7 +46,7 @@ std::vector<int> chain_order(const FoslsSpace& space) {
 /// Shear, slip and state of contact edge r.edge.
 void set_friction_state(const FoslsAssembler& assembler, const AssembledProblem& problem,
                         const Vector& x_full, double largest_bound, ContactEdgeResult& r) {
-  const FoslsSpace& space = assembler.space();
+  const FoslsSpace<2>& space = assembler.space();
   const Mesh& mesh = space.mesh();
   const int e = r.edge;
   for (int v : mesh.edge(e)) {
@@ -83,7 +83,7 @@ const char* state_name(ContactEdgeResult::State state) {
 
 ContactResult contact_output(const FoslsAssembler& assembler, const AssembledProblem& problem,
                              const Vector& x_full) {
-  const FoslsSpace& space = assembler.space();
+  const FoslsSpace<2>& space = assembler.space();
   const Mesh& mesh = space.mesh();
   ContactResult out;
   double s = 0.0;

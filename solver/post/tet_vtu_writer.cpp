@@ -4,7 +4,7 @@
 #include <sstream>
 #include <stdexcept>
 
-#include "fem/tet_element.hpp"
+#include "fem/simplex_element.hpp"
 
 namespace fosls {
 
@@ -63,9 +63,10 @@ double von_mises(const Eigen::Matrix3d& sigma) {
 }
 
 /// The stress of tetrahedron t at x from Cartesian DOFs: row i is Σ_k S_{f_k, i} ψ_k(x).
-Eigen::Matrix3d stress_at(const TetSpace& space, const Vector& cartesian, int t, const Point3& x) {
+Eigen::Matrix3d stress_at(const FoslsSpace<3>& space, const Vector& cartesian, int t,
+                          const Point3& x) {
   const TetMesh& mesh = space.mesh();
-  const TetElement e(mesh, t);
+  const SimplexElement<3> e(mesh, t);
   Eigen::Matrix3d sigma = Eigen::Matrix3d::Zero();
   for (int k = 0; k < 4; ++k) {
     const Point3 psi = e.rt0(k, x);
@@ -81,7 +82,7 @@ std::span<const VtuArray> tet_vtu_arrays() { return array_table(); }
 
 std::string write_tet_vtu(const TetAssembler& assembler, const TetAssembledProblem& problem,
                           const Vector& x_full, VtuEncoding encoding) {
-  const TetSpace& space = assembler.space();
+  const FoslsSpace<3>& space = assembler.space();
   const TetMesh& mesh = space.mesh();
   const Vector cartesian = space.rotation() * x_full;  // contact frames back to x, y, z
   const int nv = mesh.num_vertices(), nt = mesh.num_tets();
@@ -94,7 +95,7 @@ std::string write_tet_vtu(const TetAssembler& assembler, const TetAssembledProbl
   const std::vector<double> face_pressure = assembler.contact_pressure(x_full);
   std::vector<int> faces(nv, 0);
   for (int f = 0; f < mesh.num_faces(); ++f)
-    if (space.is_contact_face(f))
+    if (space.is_contact_facet(f))
       for (int v : mesh.face(f)) {
         on_contact[v] = 1.0;
         pressure[v] += face_pressure[f];

@@ -157,7 +157,7 @@ std::string write_vtu(const FoslsAssembler& assembler, const AssembledProblem& p
                       const Vector& x_full, const FunctionalParts& functional,
                       const ContactResult& contact, const std::vector<int>& generation,
                       VtuEncoding encoding) {
-  const FoslsSpace& space = assembler.space();
+  const FoslsSpace<2>& space = assembler.space();
   const Mesh& mesh = space.mesh();
   const FeField field(space, x_full, problem.stress_scale);
   const ElasticMaterial& mat = assembler.data().material;

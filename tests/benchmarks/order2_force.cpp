@@ -60,7 +60,7 @@ int main(int argc, char** argv) {
   if (spec.weights.c3_auto)
     data.weights.c3 = automatic_contact_weight(contact_weight_limit(meshes, data));
   const Discretization lowest(std::move(meshes), data);
-  const P2Rt1Space space(lowest.meshes().finest(), data.roles());
+  const P2Rt1Space space(lowest.meshes().finest(), data.boundary_roles());
   const P2Rt1Assembler assembler(space, data);
   const AssembledProblem problem = assembler.assemble_system();
   const double assembly_s = seconds_since(t0);

@@ -119,7 +119,7 @@ std::array<double, 2> contact_radius_and_peak(const TetDiscretization& disc, con
 /// body exerts there; μ = 1 in these problems, and σ's rows are Cartesian off the contact).
 Point3 force_through_group(const TetDiscretization& disc, const Vector& full, int group) {
   const TetMesh& mesh = disc.meshes().finest();
-  const TetSpace& space = disc.assembler().space();
+  const FoslsSpace<3>& space = disc.assembler().space();
   Point3 force = Point3::Zero();
   for (int f = 0; f < mesh.num_faces(); ++f)
     if (mesh.is_boundary_face(f) && mesh.face_group(f) == group)

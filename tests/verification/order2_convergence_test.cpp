@@ -62,7 +62,7 @@ std::vector<Row> convergence_table(double lambda) {
   for (int r = 0; r <= 4; ++r) {
     const MeshHierarchy meshes = build_mesh_hierarchy(make_square({.size = 0.5}), r);
     const ProblemData data = sol.problem(lambda);
-    const P2Rt1Space space(meshes.finest(), data.roles());
+    const P2Rt1Space space(meshes.finest(), data.boundary_roles());
     const P2Rt1Assembler assembler(space, data);
     const AssembledProblem p = assembler.assemble_system();
     Eigen::CholmodSupernodalLLT<SparseMatrix> llt(p.qp.A);

@@ -10,7 +10,7 @@
 #include <limits>
 
 #include "assembly/tet_hierarchy.hpp"
-#include "fem/tet_element.hpp"
+#include "fem/simplex_element.hpp"
 #include "solvers/solve_loop.hpp"
 
 namespace fosls {
@@ -64,12 +64,12 @@ struct Row {
 };
 
 /// ‖u − u_h‖_H1 and ‖σ − σ_h‖_H(div) by the four-point rule.
-std::pair<double, double> error_norms(const TetSpace& space, const Vector& x, double scale) {
+std::pair<double, double> error_norms(const FoslsSpace<3>& space, const Vector& x, double scale) {
   double eu = 0, es = 0;
   const TetMesh& mesh = space.mesh();
   for (int t = 0; t < mesh.num_tets(); ++t) {
-    const TetElement e(mesh, t);
-    const auto dofs = space.tet_dofs(t);
+    const SimplexElement<3> e(mesh, t);
+    const auto dofs = space.cell_dofs(t);
     Eigen::Matrix3d grad = Eigen::Matrix3d::Zero();
     Point3 div = Point3::Zero();
     for (int k = 0; k < 4; ++k)
@@ -77,7 +77,7 @@ std::pair<double, double> error_norms(const TetSpace& space, const Vector& x, do
         grad.row(c) += x[dofs[3 * k + c]] * e.grad[k].transpose();
         div[c] += scale * x[dofs[12 + 3 * k + c]] * e.rt0_div(k);
       }
-    for (const Point3& q : tet_quadrature_points(e)) {
+    for (const Point3& q : e.quadrature_points()) {
       Point3 u = Point3::Zero();
       Eigen::Matrix3d sigma = Eigen::Matrix3d::Zero();
       for (int k = 0; k < 4; ++k)
@@ -85,7 +85,7 @@ std::pair<double, double> error_norms(const TetSpace& space, const Vector& x, do
           u[c] += e.p1(k, q) * x[dofs[3 * k + c]];
           sigma.row(c) += scale * x[dofs[12 + 3 * k + c]] * e.rt0(k, q).transpose();
         }
-      const double w = 0.25 * e.volume;
+      const double w = 0.25 * e.measure;
       eu += w * ((u - SmoothSolution3::u(q)).squaredNorm() +
                  (grad - SmoothSolution3::grad_u(q)).squaredNorm());
       es += w * ((sigma - SmoothSolution3::sigma(q)).squaredNorm() +
