@@ -8,14 +8,14 @@
 
 namespace fosls {
 
-Discretization::Discretization(MeshHierarchy meshes, ProblemData data, const Deadline& deadline)
+Discretization::Discretization(MeshHierarchy meshes, ProblemData<2> data, const Deadline& deadline)
     : meshes_(std::move(meshes)), data_(std::move(data)) {
   const auto roles = data_.boundary_roles();
   for (const Mesh& m : meshes_.meshes) {
     deadline.check("building the finite element spaces");
     spaces_.push_back(std::make_unique<FoslsSpace<2>>(m, roles, obstacle_vertex_normals(m, data_)));
   }
-  assembler_ = std::make_unique<FoslsAssembler>(*spaces_.back(), data_);
+  assembler_ = std::make_unique<FoslsAssembler<2>>(*spaces_.back(), data_);
   // Eigen 3.4's SparseMatrix has no move assignment: the matrix is swapped in, not copied.
   AssembledProblem assembled = assembler_->assemble_system(deadline);
   SparseMatrix a;

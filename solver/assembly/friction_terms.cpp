@@ -36,7 +36,7 @@ bool FrictionLayout::coulomb() const {
                      [](const FrictionEdge& f) { return f.coefficient > 0.0; });
 }
 
-double reference_slip_origin(const ProblemData& data, int v, const Point& tangent) {
+double reference_slip_origin(const ProblemData<2>& data, int v, const Point& tangent) {
   // Only the finest level has a reference; the coarser ones the c3 limit assembles need only
   // the matrix, which the reference does not change.
   if (v >= static_cast<int>(data.reference_displacement.size())) return 0.0;
@@ -54,7 +54,7 @@ double tangential_displacement(const FoslsSpace<2>& space, const Vector& x_full,
   return t.x() * x_full[space.u_dof(v, 0)] + t.y() * x_full[space.u_dof(v, 1)];
 }
 
-FrictionLayout friction_layout(const FoslsSpace<2>& space, const ProblemData& data,
+FrictionLayout friction_layout(const FoslsSpace<2>& space, const ProblemData<2>& data,
                                const Vector& xd, Kinks& kinks) {
   const Mesh& mesh = space.mesh();
   FrictionLayout layout;
@@ -64,7 +64,7 @@ FrictionLayout friction_layout(const FoslsSpace<2>& space, const ProblemData& da
   for (int e = 0; e < mesh.num_edges(); ++e) {
     if (!space.is_contact_edge(e) || space.role(space.sigma_dof(e, 1)) != DofRole::kTangentialS)
       continue;
-    const FrictionData& friction = data.groups[mesh.edge_group(e)].contact.friction;
+    const FrictionData<2>& friction = data.groups[mesh.edge_group(e)].contact.friction;
     FrictionEdge f;
     f.edge = e;
     f.st = space.free_index(space.sigma_dof(e, 1));

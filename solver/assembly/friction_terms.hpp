@@ -33,7 +33,7 @@ struct FrictionLayout {
 };
 
 /// The tangential displacement t·u_ref(v) of the reference state at vertex v (0 without one).
-double reference_slip_origin(const ProblemData& data, int v, const Point& tangent);
+double reference_slip_origin(const ProblemData<2>& data, int v, const Point& tangent);
 
 /// The slip direction t = (−n_y, n_x) at vertex v of contact edge e: n is the vertex's contact
 /// normal where its displacement is rotated into (n, t), else the edge's normal.
@@ -46,7 +46,7 @@ double tangential_displacement(const FoslsSpace<2>& space, const Vector& x_full,
 /// The frictional edges of `space`, their kinks in `kinks` (DOFs and origins; weights zero) and
 /// Tresca's s̄_e. `xd` holds the fixed DOFs' values. A negative Tresca bound throws
 /// std::domain_error naming the point.
-FrictionLayout friction_layout(const FoslsSpace<2>& space, const ProblemData& data,
+FrictionLayout friction_layout(const FoslsSpace<2>& space, const ProblemData<2>& data,
                                const Vector& xd, Kinks& kinks);
 
 /// s̄_e of edge f at x (free DOFs; S_n read for Coulomb).

@@ -124,7 +124,7 @@ std::vector<int> order2_contact_strip(const P2Rt1Space& space) {
   std::vector<int> strip;
   for (int t = 0; t < mesh.num_triangles(); ++t)
     if (touches(t))
-      for (int dof : space.triangle_dofs(t))
+      for (int dof : space.cell_dofs(t))
         if (const int f = space.free_index(dof); f >= 0) strip.push_back(f);
   std::sort(strip.begin(), strip.end());
   strip.erase(std::unique(strip.begin(), strip.end()), strip.end());

@@ -202,11 +202,11 @@ std::vector<int> tet_contact_strip(const FoslsSpace<3>& space) {
 
 }  // namespace
 
-TetDiscretization::TetDiscretization(TetHierarchy meshes, TetProblemData data)
+TetDiscretization::TetDiscretization(TetHierarchy meshes, ProblemData<3> data)
     : meshes_(std::move(meshes)), data_(std::move(data)) {
   for (const TetMesh& m : meshes_.meshes)
     spaces_.push_back(std::make_unique<FoslsSpace<3>>(m, data_.boundary_roles()));
-  assembler_ = std::make_unique<TetAssembler>(*spaces_.back(), data_);
+  assembler_ = std::make_unique<FoslsAssembler<3>>(*spaces_.back(), data_);
   problem_ = assembler_->assemble_system();
 }
 

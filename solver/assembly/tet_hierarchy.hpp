@@ -6,7 +6,7 @@
 #include <memory>
 #include <vector>
 
-#include "assembly/tet_assembler.hpp"
+#include "assembly/fosls_assembler.hpp"
 #include "core/level_hierarchy.hpp"
 #include "mesh/tet_refinement.hpp"
 
@@ -27,21 +27,21 @@ std::vector<std::vector<int>> tet_vertex_patches(const FoslsSpace<3>& space,
 /// A case's 3D discretisation on all levels: spaces, the finest level's QP and the hierarchy.
 class TetDiscretization {
  public:
-  TetDiscretization(TetHierarchy meshes, TetProblemData data);
+  TetDiscretization(TetHierarchy meshes, ProblemData<3> data);
   TetDiscretization(const TetDiscretization&) = delete;  // the assembler refers to data_
   TetDiscretization& operator=(const TetDiscretization&) = delete;
   const TetHierarchy& meshes() const { return meshes_; }
   const FoslsSpace<3>& finest_space() const { return *spaces_.back(); }
-  const TetAssembler& assembler() const { return *assembler_; }
-  const TetAssembledProblem& problem() const { return problem_; }
+  const FoslsAssembler<3>& assembler() const { return *assembler_; }
+  const AssembledProblem& problem() const { return problem_; }
   LevelHierarchy build_level_hierarchy() const;
 
  private:
   TetHierarchy meshes_;
-  TetProblemData data_;
+  ProblemData<3> data_;
   std::vector<std::unique_ptr<FoslsSpace<3>>> spaces_;
-  std::unique_ptr<TetAssembler> assembler_;
-  TetAssembledProblem problem_;
+  std::unique_ptr<FoslsAssembler<3>> assembler_;
+  AssembledProblem problem_;
 };
 
 }  // namespace fosls

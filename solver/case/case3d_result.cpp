@@ -9,6 +9,7 @@
 #include "case/result_json.hpp"
 #include "case/result_warnings.hpp"
 #include "case/solver_methods.hpp"
+#include "post/contact_force.hpp"
 
 namespace fosls {
 
@@ -25,11 +26,12 @@ struct ContactSummary {
 };
 
 ContactSummary contact_summary(const TetDiscretization& disc, const Vector& x_full) {
-  const TetAssembler& a = disc.assembler();
+  const FoslsSpace<3>& space = disc.finest_space();
   const TetMesh& mesh = disc.meshes().finest();
-  const std::vector<double> p = a.contact_pressure(x_full);
+  const double scale = disc.problem().stress_scale;
+  const std::vector<double> p = contact_pressure(space, x_full, scale);
   ContactSummary s;
-  s.force = a.contact_force(x_full);
+  s.force = contact_force(space, x_full, scale);
   for (int f = 0; f < mesh.num_faces(); ++f) {
     if (!disc.finest_space().is_contact_facet(f)) continue;
     ++s.faces;
@@ -151,7 +153,7 @@ std::vector<ResultWarning> roller_warnings(const FoslsSpace<3>& space) {
 
 json case3d_result(const Case3dSpec& spec, const TetDiscretization& disc, const Vector& x_free,
                    const SolverReport& report) {
-  const TetAssembler& a = disc.assembler();
+  const FoslsAssembler<3>& a = disc.assembler();
   const Vector x_full = a.full_vector(disc.problem(), x_free);
   const TetMesh& mesh = disc.meshes().finest();
   const ContactSummary c = contact_summary(disc, x_full);

@@ -16,6 +16,7 @@
 #include <Eigen/Core>
 #include <array>
 
+#include "fem/facet_quadrature.hpp"
 #include "mesh/mesh.hpp"
 
 namespace fosls {
@@ -63,9 +64,5 @@ struct TrianglePoint {
 /// Seven points, exact for degree 5 (Strang–Fix / Dunavant): the order-2 integrands have
 /// degree 4.
 extern const std::array<TrianglePoint, 7> kTriangleDegree5;
-
-/// Gauss–Legendre on [0, 1], three points, exact for degree 5.
-constexpr std::array<double, 3> kEdgeGaussX = {0.1127016653792583, 0.5, 0.8872983346207417};
-constexpr std::array<double, 3> kEdgeGaussW = {5.0 / 18.0, 8.0 / 18.0, 5.0 / 18.0};
 
 }  // namespace fosls

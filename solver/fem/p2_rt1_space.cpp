@@ -101,7 +101,7 @@ Point P2Rt1Space::node_position(int node) const {
                    : mesh_->curves()[curve].project(mesh_->edge_midpoint(e));
 }
 
-std::array<int, 28> P2Rt1Space::triangle_dofs(int t) const {
+std::array<int, P2Rt1Space::kCellDofs> P2Rt1Space::cell_dofs(int t) const {
   std::array<int, 28> d;
   const auto& tri = mesh_->triangle(t);
   for (int k = 0; k < 3; ++k) {

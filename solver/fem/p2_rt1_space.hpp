@@ -32,7 +32,8 @@ class P2Rt1Space {
   }
   /// The 28 DOFs of triangle t in the element's order: u of its six P2 nodes (2n + c), then
   /// σ of its eight RT1 functions (12 + 2m + i).
-  std::array<int, 28> triangle_dofs(int t) const;
+  static constexpr int kCellDofs = 28;
+  std::array<int, kCellDofs> cell_dofs(int t) const;
 
   DofRole role(int dof) const { return roles_[dof]; }
   bool is_contact_node(int node) const { return contact_node_[node] != 0; }

@@ -5,6 +5,7 @@
 #include <stdexcept>
 
 #include "fem/simplex_element.hpp"
+#include "post/contact_force.hpp"
 
 namespace fosls {
 
@@ -80,7 +81,7 @@ Eigen::Matrix3d stress_at(const FoslsSpace<3>& space, const Vector& cartesian, i
 
 std::span<const VtuArray> tet_vtu_arrays() { return array_table(); }
 
-std::string write_tet_vtu(const TetAssembler& assembler, const TetAssembledProblem& problem,
+std::string write_tet_vtu(const FoslsAssembler<3>& assembler, const AssembledProblem& problem,
                           const Vector& x_full, VtuEncoding encoding) {
   const FoslsSpace<3>& space = assembler.space();
   const TetMesh& mesh = space.mesh();
@@ -92,7 +93,7 @@ std::string write_tet_vtu(const TetAssembler& assembler, const TetAssembledProbl
       points[3 * v + c] = mesh.vertex(v)[c];
       u[3 * v + c] = cartesian[space.u_dof(v, c)];
     }
-  const std::vector<double> face_pressure = assembler.contact_pressure(x_full);
+  const std::vector<double> face_pressure = contact_pressure(space, x_full, problem.stress_scale);
   std::vector<int> faces(nv, 0);
   for (int f = 0; f < mesh.num_faces(); ++f)
     if (space.is_contact_facet(f))

@@ -153,7 +153,7 @@ StressArrays stress_arrays(const Mesh& mesh, const FeField& field, double kappa)
 
 std::span<const VtuArray> vtu_arrays() { return array_table(); }
 
-std::string write_vtu(const FoslsAssembler& assembler, const AssembledProblem& problem,
+std::string write_vtu(const FoslsAssembler<2>& assembler, const AssembledProblem& problem,
                       const Vector& x_full, const FunctionalParts& functional,
                       const ContactResult& contact, const std::vector<int>& generation,
                       VtuEncoding encoding) {

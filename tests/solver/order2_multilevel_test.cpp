@@ -27,7 +27,7 @@ class Order2Multilevel : public ::testing::TestWithParam<Case> {
  protected:
   void SetUp() override {
     const Case& c = GetParam();
-    const ProblemData data =
+    const ProblemData<2> data =
         c.hertz ? testing::hertz(c.lambda) : testing::signorini_square(c.lambda);
     lowest_ = std::make_unique<Discretization>(
         build_mesh_hierarchy(c.hertz ? make_hertz({.size = 0.1}) : make_square({.size = 0.25}), 2),

@@ -9,6 +9,7 @@
 #include <cstdio>
 #include <limits>
 
+#include "../tet_problems.hpp"
 #include "assembly/tet_hierarchy.hpp"
 #include "fem/simplex_element.hpp"
 #include "solvers/solve_loop.hpp"
@@ -38,10 +39,11 @@ struct SmoothSolution3 {
   static Point3 f(const Point3& p) { return 2.0 * M_PI * M_PI * u(p); }
 
   /// Dirichlet on left, front and bottom, Neumann (t = σn) on right, back and top.
-  static TetProblemData problem(double lambda) {
-    TetProblemData d;
+  static ProblemData<3> problem(double lambda) {
+    ProblemData<3> d;
     d.material = {.mu = 1.0, .lambda = lambda};
-    for (int i = 0; i < 3; ++i) d.body_force[i] = [i](const Point3& x) { return f(x)[i]; };
+    for (int i = 0; i < 3; ++i)
+      d.body_force[i] = testing::of_point([i](const Point3& x) { return f(x)[i]; });
     d.groups.resize(6);  // left, right, front, back, bottom, top
     for (int g = 0; g < 6; ++g) {
       const bool dirichlet = g % 2 == 0;
@@ -50,8 +52,8 @@ struct SmoothSolution3 {
       d.groups[g].role = dirichlet ? GroupRole::kDirichlet : GroupRole::kNeumann;
       for (int i = 0; i < 3; ++i)
         d.groups[g].values[i] =
-            dirichlet ? ScalarFunction3([i](const Point3& x) { return u(x)[i]; })
-                      : ScalarFunction3([i, n](const Point3& x) { return (sigma(x) * n)[i]; });
+            dirichlet ? testing::of_point([i](const Point3& x) { return u(x)[i]; })
+                      : testing::of_point([i, n](const Point3& x) { return (sigma(x) * n)[i]; });
     }
     return d;
   }
@@ -100,7 +102,7 @@ std::vector<Row> convergence_table(double lambda, int finest) {
   for (int r = 1; r <= finest; ++r) {
     const TetDiscretization disc(build_tet_hierarchy(make_box({2, 2, 2}), r),
                                  SmoothSolution3::problem(lambda));
-    const TetAssembledProblem& p = disc.problem();
+    const AssembledProblem& p = disc.problem();
     Eigen::CholmodSupernodalLLT<SparseMatrix> llt(p.qp.A);
     EXPECT_EQ(llt.info(), Eigen::Success);
     const Vector exact = llt.solve(p.qp.b);
