@@ -64,6 +64,25 @@ void check_size(double coarse_unknowns, const Case3dSpec& spec, const CaseLimits
   if (!errors.empty()) throw CaseException(std::move(errors));
 }
 
+/// The obstacle where its displacement puts it, in the assembly layer's terms.
+RigidObstacle<3> rigid_obstacle(const Obstacle3d& o) {
+  RigidObstacle<3> r;
+  switch (o.kind) {
+    case Obstacle3d::Kind::kPlane:
+      r.kind = RigidObstacle<3>::Kind::kPlane;
+      r.point = o.point + o.displacement, r.normal = o.normal;
+      break;
+    case Obstacle3d::Kind::kSphere:
+      r.kind = RigidObstacle<3>::Kind::kBall;
+      r.center = o.center + o.displacement, r.radius = o.radius;
+      break;
+    case Obstacle3d::Kind::kGap:
+      r.kind = RigidObstacle<3>::Kind::kGap;
+      break;
+  }
+  return r;
+}
+
 /// Step 3: every named group is one of the mesh's, and every contact face faces its plane.
 void check_groups(const Case3dSpec& spec, const TetMesh& mesh) {
   std::vector<CaseError> errors = check_3d_groups(spec, mesh);
@@ -71,29 +90,26 @@ void check_groups(const Case3dSpec& spec, const TetMesh& mesh) {
 }
 
 /// Step 4: the problem data on the mesh's groups.
-TetProblemData problem_data(const Case3dSpec& spec, const TetMesh& mesh) {
-  TetProblemData d;
+ProblemData<3> problem_data(const Case3dSpec& spec, const TetMesh& mesh) {
+  ProblemData<3> d;
   d.material = {.mu = spec.material.mu, .lambda = spec.material.lambda};
   for (int i = 0; i < 3; ++i)
     if (spec.body_force[i] != 0.0)
-      d.body_force[i] = [v = spec.body_force[i]](const Point3&) { return v; };
+      d.body_force[i] = [v = spec.body_force[i]](double, double, double) { return v; };
   d.groups.resize(mesh.group_names().size());
   for (const auto& [name, bc] : spec.boundary) {
-    TetProblemData::Group& group = d.groups[tet_group_index(mesh, name)];
+    GroupData<3>& group = d.groups[tet_group_index(mesh, name)];
     if (bc.type == Condition3d::Type::kContact) {
       group.role = GroupRole::kContact;
-      group.gap_along_normal = [plane = bc](const Point3& x, const Point3& n) {
-        return plane.gap_along(x, n);
-      };
+      group.contact.obstacle = rigid_obstacle(bc.obstacle);
+      if (bc.obstacle.kind == Obstacle3d::Kind::kGap) group.contact.gap = bc.obstacle.gap;
       continue;
     }
     group.role =
         bc.type == Condition3d::Type::kDirichlet ? GroupRole::kDirichlet : GroupRole::kNeumann;
     group.normal_pressure = bc.type == Condition3d::Type::kPressure;
     group.prescribed = bc.prescribed;
-    for (int i = 0; i < 3; ++i)
-      if (bc.values[i])
-        group.values[i] = [f = bc.values[i]](const Point3& x) { return f(x.x(), x.y(), x.z()); };
+    group.values = bc.values;
   }
   return d;
 }
@@ -112,7 +128,7 @@ Run3dOutput run_case_3d(const Case3dSpec& spec, const Run3dControl& control,
   const double mesh_s = seconds_since(t0);
 
   const auto t1 = Clock::now();
-  TetProblemData data = problem_data(spec, meshes.finest());
+  ProblemData<3> data = problem_data(spec, meshes.finest());
   const TetDiscretization disc(std::move(meshes), std::move(data));
   const double assembly_s = seconds_since(t1);
 
@@ -144,7 +160,7 @@ Run3dOutput run_case_3d(const Case3dSpec& spec, const Run3dControl& control,
                           {"solve_s", solve_s},
                           {"total_s", seconds_since(t0)}};
   if (control.want_vtu) {
-    const TetAssembler& a = disc.assembler();
+    const FoslsAssembler<3>& a = disc.assembler();
     out.vtu = write_tet_vtu(a, disc.problem(), a.full_vector(disc.problem(), x),
                             control.vtu_ascii ? VtuEncoding::kAscii : VtuEncoding::kBinary);
   }

@@ -168,6 +168,15 @@ std::vector<std::vector<int>> Mesh::vertex_edges() const {
   return out;
 }
 
+double Mesh::diameter() const {
+  double lo_x = 1e300, hi_x = -1e300, lo_y = 1e300, hi_y = -1e300;
+  for (const auto& p : vertices_) {
+    lo_x = std::min(lo_x, p.x()), hi_x = std::max(hi_x, p.x());
+    lo_y = std::min(lo_y, p.y()), hi_y = std::max(hi_y, p.y());
+  }
+  return std::hypot(hi_x - lo_x, hi_y - lo_y);
+}
+
 std::pair<double, double> Mesh::edge_length_range() const {
   double lo = std::numeric_limits<double>::max(), hi = 0.0;
   for (int e = 0; e < num_edges(); ++e) {

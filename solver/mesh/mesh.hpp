@@ -82,6 +82,29 @@ class Mesh {
   std::vector<std::vector<int>> vertex_edges() const;
   /// Smallest and largest edge length.
   std::pair<double, double> edge_length_range() const;
+  /// The length of the bounding box's diagonal: the body's size.
+  double diameter() const;
+
+  // The vocabulary TetMesh shares (mesh/simplex_mesh.hpp), so that the layers written once for
+  // both dimensions as `template <int dim>` see one interface: a cell is a triangle, a facet
+  // an edge, a facet's measure its length.
+  static constexpr int kDimension = 2;
+  int num_cells() const { return num_triangles(); }
+  const std::array<int, 3>& cell(int t) const { return triangles_[t]; }
+  /// Facet k of cell t: the edge opposite its vertex k.
+  int cell_facet(int t, int k) const { return triangle_edges_[t][k]; }
+  /// +1 when the global normal of facet k of cell t is the cell's outward normal, else −1.
+  int cell_facet_sign(int t, int k) const { return triangle_edge_signs_[t][k]; }
+  double cell_measure(int t) const { return triangle_area(t); }
+  int num_facets() const { return num_edges(); }
+  const std::array<int, 2>& facet(int f) const { return edges_[f]; }
+  Point facet_normal(int f) const { return edge_normal(f); }
+  double facet_measure(int f) const { return edge_length(f); }
+  Point facet_centroid(int f) const { return edge_midpoint(f); }
+  int facet_group(int f) const { return edge_group_[f]; }
+  const std::array<int, 2>& facet_cells(int f) const { return edge_triangles_[f]; }
+  bool is_boundary_facet(int f) const { return edge_triangles_[f][1] < 0; }
+  std::vector<std::vector<int>> vertex_facets() const { return vertex_edges(); }
 
  private:
   void build_topology(const std::vector<BoundarySegment>& segments);

@@ -77,6 +77,11 @@ double TetMesh::tet_volume(int t) const {
   return std::abs(a.dot(b.cross(c))) / 6.0;
 }
 
+int TetMesh::cell_facet_sign(int t, int k) const {
+  const int f = tet_faces_[t][k];
+  return face_normals_[f].dot(face_centroid(f) - vertices_[tets_[t][k]]) > 0 ? 1 : -1;
+}
+
 int TetMesh::group_index(const std::string& name) const {
   return group_index_.find(group_names_, name);
 }
