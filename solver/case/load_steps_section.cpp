@@ -3,6 +3,7 @@
 // friction acting on the slip of the step (docs/case-format.md, "Load steps").
 
 #include <algorithm>
+#include <utility>
 
 #include "case/case_reader.hpp"
 #include "case/case_sections.hpp"
@@ -76,8 +77,12 @@ void apply_step(const json& step, std::size_t k, json& state, std::vector<CaseEr
 
 ValueRule load_steps_rule(const CaseReadOptions& options) {
   const std::size_t n = options.limits.max_expression_length;
-  ValueRule item = one_of_value({scalar_value(n), null_value()}, "a number, string or null");
-  ValueRule value = one_of_value({scalar_value(n), boolean_value(), null_value(),
+  // A string is any text here (an expression, a method name, ...): the field it lands in
+  // decides, when the step's state is read as a case.
+  ValueRule scalar =
+      one_of_value({number_value(), string_value(n, "a string")}, "a number or string");
+  ValueRule item = one_of_value({scalar, null_value()}, "a number, string or null");
+  ValueRule value = one_of_value({scalar, boolean_value(), null_value(),
                                   list_value(item, "an array of numbers, strings or null")},
                                  "a number, string, boolean, null or an array of them");
   ValueRule step =
@@ -111,6 +116,11 @@ void read_load_steps_section(const json& case_json, const CaseReadOptions& optio
           {"/load_steps/" + std::to_string(k),
            "after this step, " + (e.pointer.empty() ? "/" : e.pointer) + ": " + e.detail});
     if (step.spec) {
+      // Steps cannot change the mesh: the case keeps it once (the runner gives it back to each
+      // step), so a large mesh is not held once per step.
+      // (Swapped out, not assigned: assigning an empty string keeps the text's buffer.)
+      MeshSpec none;
+      std::swap(step.spec->mesh, none);
       spec.load_step_changes.push_back(steps[k]);
       spec.load_step_points.push_back(std::move(*step.spec));
     }

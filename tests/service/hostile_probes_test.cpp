@@ -230,9 +230,8 @@ TEST(HostileProbes, StalledDownloadsOfALargeVtuHoldAPartEachNotTheVtu) {
 }
 
 /// Item 6: a 4 MB case (its mesh) with 100 load steps, posted twice. Before: the server grew by
-/// 1.2 GB per post (a copy of the case per step). Pending in docs/service.md until item 6 (the
-/// case layer's admission of load steps) is fixed: enable it then.
-TEST(HostileProbes, DISABLED_ALoadStepCaseOfFourMegabytesIsAdmittedWithoutACopyPerStep) {
+/// 1.2 GB per post (a copy of the case per step). Now the case keeps its mesh once.
+TEST(HostileProbes, ALoadStepCaseOfFourMegabytesIsAdmittedWithoutACopyPerStep) {
   ProbedServer server;
   json c = square_case({{"msh", testing::grid_msh(235)}, {"refinements", 0}});
   c["load_steps"] = json::array();
