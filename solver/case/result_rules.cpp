@@ -213,13 +213,26 @@ ObjectRulePtr load_step_rule(const std::vector<FieldRule>& result_fields) {
   return object_rule("a load step", "load_step", std::move(fields));
 }
 
+ObjectRulePtr stopped_before_rule() {
+  return object_rule(
+      "where load steps stopped", "stopped_before",
+      {output_field("step", count(), "1", "the first step not solved"),
+       output_field("reason", choice_value({"time_limit", "step_failed"}), "",
+                    "time_limit: solver.time_limit_s, which bounds the whole run, ran out; "
+                    "step_failed: the step's state could not be solved (the message says why)")});
+}
+
 ObjectRulePtr load_steps_result_rule(const std::vector<FieldRule>& result_fields) {
   return object_rule(
       "the load steps", "load_steps",
       {output_field("count", count(), "1", "steps solved, the case as given included"),
        output_field("steps",
                     list_value(object_value(load_step_rule(result_fields)), "one per step"), "",
-                    "each step's result (as a result without load steps, without its history)")});
+                    "each step's result (as a result without load steps, without its history)"),
+       optional_field("stopped_before", object_value(stopped_before_rule()), nullptr,
+                      "the run stopped before this step could be solved: the steps solved before "
+                      "it are kept, the result is marked not converged with warning "
+                      "load_steps_partial")});
 }
 
 ObjectRulePtr stick_zone_rule() {
@@ -404,10 +417,12 @@ std::vector<FieldRule> outcome_fields(const std::vector<std::string>& reasons) {
                    "initial_kkt_residual or, with solver.tolerance \"discretisation\", the "
                    "estimated algebraic error ≤ fraction · J^½, or the KKT residual reached its "
                    "rounding level first (stopping.converged_by says which)"),
-      output_field("stop_reason", choice_value(reasons), "",
-                   "why the iteration stopped: converged, max_iterations (solver.max_iterations "
-                   "reached first), time_limit (solver.time_limit_s ran out first; the result "
-                   "is the last iterate) or cancelled"),
+      output_field(
+          "stop_reason", choice_value(reasons), "",
+          "why the iteration stopped: converged, max_iterations (solver.max_iterations "
+          "reached first), time_limit (solver.time_limit_s ran out first; the result "
+          "is the last iterate), cancelled, or step_failed (a load step could not be solved: "
+          "load_steps.stopped_before)"),
       output_field("cancelled", boolean_value(), "", "the job was cancelled while solving"),
       output_field("iterations", count(), "1",
                    "iterations on the finest level (the nested iteration's are in "
@@ -493,6 +508,7 @@ std::vector<std::string> result_parts::stop_reason_names() {
   for (const auto reason : {StopReason::kConverged, StopReason::kMaxIterations,
                             StopReason::kTimeLimit, StopReason::kCancelled})
     reasons.push_back(stop_reason_name(reason));
+  reasons.push_back("step_failed");  // a load step could not be solved (load_steps.stopped_before)
   return reasons;
 }
 

@@ -184,6 +184,7 @@ std::vector<std::string> warning_codes() {
           "roller_overrides_contact",
           "sweep_point_not_converged",
           "load_step_not_converged",
+          "load_steps_partial",
           "accuracy_not_reached"};
 }
 
