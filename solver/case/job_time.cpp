@@ -25,9 +25,27 @@ double solve_seconds(const SolverOptions& solver, long long unknowns) {
          solver.max_iterations * pgs_seconds_per_iteration(unknowns);
 }
 
+/// Iterations behind the fitted estimates (mmg's are flat at about this many).
+constexpr double kFittedIterations = 14.0;
+
+/// How friction multiplies a solve's time (docs/performance.md, "Friction"). Tresca's iterations
+/// grow slowly and cost a little more: about twice a frictionless solve. Coulomb's are not flat
+/// under refinement (from refinement 5 on it does not converge), so its solve is priced at every
+/// iteration solver.max_iterations allows, each half as dear again as a frictionless one.
+double friction_factor(const CaseSpec& point) {
+  bool coulomb = false;
+  bool tresca = false;
+  for (const auto& [name, condition] : point.boundary) {
+    coulomb |= condition.friction_coefficient > 0.0;
+    tresca |= condition.friction_bound.has_value();
+  }
+  if (coulomb) return std::max(1.0, 1.5 * point.solver.max_iterations / kFittedIterations);
+  return tresca ? 2.0 : 1.0;
+}
+
 /// One sweep point (or the case without a sweep): its solves, bounded by its time limit.
 double point_seconds(const CaseSpec& point, long long unknowns, bool& bounded) {
-  double seconds = solve_seconds(point.solver, unknowns);
+  double seconds = solve_seconds(point.solver, unknowns) * friction_factor(point);
   if (point.adaptivity && point.adaptivity->steps > 0) {
     const long long largest = std::max(unknowns, point.adaptivity->max_dofs);
     seconds = solve_seconds(point.solver, largest) *
@@ -140,6 +158,12 @@ CaseTimeEstimate estimate_case_time(const CaseSpec& spec, long long unknowns) {
     all_bounded &= bounded;
   }
   e.bounded_by_time_limit = all_bounded;
+  // solver.time_limit_s bounds the whole run of load steps (load_step_runner.cpp).
+  const double limit = spec.solver.time_limit_s;
+  if (!spec.load_step_points.empty() && limit > 0 && e.seconds > limit) {
+    e.seconds = limit;
+    e.bounded_by_time_limit = true;
+  }
   const bool adaptive_size =
       spec.adaptivity && spec.adaptivity->steps > 0 && spec.adaptivity->max_dofs > unknowns;
   const bool accuracy_size =

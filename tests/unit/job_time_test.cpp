@@ -54,6 +54,42 @@ TEST(JobTime, PgsIsBoundedByItsIterationsAndASweepByItsPoints) {
   EXPECT_LT(sweep.time->seconds / p.time->seconds, 100.0 * 100.0);
 }
 
+// Issue 50, item 9: a Coulomb case with max_iterations 10^5 was admitted at 9 s and killed at
+// 90 s. Friction now multiplies the solve: Tresca by 2, Coulomb by every iteration it may take.
+TEST(JobTime, FrictionAndCoulombsIterationsCount) {
+  json plain = testing::load_shipped_example("cattaneo_mindlin");
+  plain["boundary"]["contact"].erase("friction");
+  json tresca = plain;
+  tresca["boundary"]["contact"]["friction"] = {{"bound", 0.01}};
+  json coulomb = plain;
+  coulomb["boundary"]["contact"]["friction"] = {{"coefficient", 10}};
+  json many = coulomb;
+  many["solver"]["max_iterations"] = 100000;
+  const double t0 = admit_case(plain).time->seconds;
+  EXPECT_DOUBLE_EQ(admit_case(tresca).time->seconds, 2 * t0);
+  const double tc = admit_case(coulomb).time->seconds;
+  const double tm = admit_case(many).time->seconds;
+  EXPECT_GT(tc, 2 * t0);
+  EXPECT_NEAR(tm / tc, 100000.0 / admit_case(coulomb).spec->solver.max_iterations, 1e-9);
+  // With a time limit the case says what it will take at most.
+  many["solver"]["time_limit_s"] = 30;
+  EXPECT_DOUBLE_EQ(admit_case(many).time->seconds, 30);
+}
+
+// solver.time_limit_s bounds a run of load steps as a whole (load_step_runner.cpp), so the
+// estimate of 100 steps is at most that limit, not 100 times it.
+TEST(JobTime, TheTimeLimitBoundsLoadStepsAsAWhole) {
+  json j = testing::load_shipped_example("cattaneo_mindlin");
+  j["solver"]["time_limit_s"] = 0.8;
+  j["load_steps"] = json::array();
+  for (int k = 1; k <= 100; ++k)
+    j["load_steps"].push_back({{"/boundary/top/displacement/0", 1e-4 * k}});
+  const CaseAdmission a = admit_case(j);
+  ASSERT_TRUE(a.time);
+  EXPECT_DOUBLE_EQ(a.time->seconds, 0.8);
+  EXPECT_TRUE(a.time->bounded_by_time_limit);
+}
+
 TEST(JobTime, TheCasesOwnTimeLimitBoundsIt) {
   json j = pgs_sweep();
   j["solver"]["time_limit_s"] = 2.0;
