@@ -75,6 +75,18 @@ ObjectRulePtr obstacle_rule(const CaseReadOptions& options) {
   return r;
 }
 
+/// Tresca's bound: a number must be >= 0 now; an expression is checked where it is evaluated.
+ValueRule slip_bound_value(std::size_t max_expression_length) {
+  ValueRule v = scalar_value(max_expression_length);
+  v.hook = [](const json& value, const std::string& pointer, RuleChecker& checker) {
+    if (!value.is_number() || value.get<double>() >= 0.0) return true;
+    checker.error(pointer, "the slip bound is " + value.dump() + "; it must be >= 0");
+    return false;
+  };
+  v.notes = "a number must be >= 0";
+  return v;
+}
+
 ObjectRulePtr friction_rule(const CaseReadOptions& options) {
   auto r = std::make_shared<ObjectRule>();
   r->title = "the friction law";
@@ -82,7 +94,7 @@ ObjectRulePtr friction_rule(const CaseReadOptions& options) {
   r->fields = {
       optional_field("coefficient", number_value(Range::closed(0, 10)), nullptr,
                      "Coulomb's coefficient 𝔣: |σ_nt| ≤ 𝔣 |σ_nn|; 0 is frictionless"),
-      optional_field("bound", scalar_value(options.limits.max_expression_length), nullptr,
+      optional_field("bound", slip_bound_value(options.limits.max_expression_length), nullptr,
                      "Tresca's slip bound s ≥ 0 in stress units, a number or an expression of "
                      "x and y: |σ_nt| ≤ s"),
   };

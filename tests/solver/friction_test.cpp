@@ -138,6 +138,13 @@ TEST(Friction, UnsupportedCombinationsAndBadBoundsAreNamed) {
   ASSERT_FALSE(read_case(both).errors.empty());
   EXPECT_EQ(read_case(both).errors[0].pointer, "/boundary/contact/friction");
 
+  // A constant negative bound is the case's alone: refused when it is read, not when it runs.
+  const auto constant = read_case(hertz({{"bound", -0.5}}, 0.0, 1)).errors;
+  ASSERT_EQ(constant.size(), 1u);
+  EXPECT_EQ(constant[0].pointer, "/boundary/contact/friction/bound");
+  EXPECT_NE(constant[0].detail.find(">= 0"), std::string::npos) << constant[0].detail;
+  EXPECT_TRUE(read_case(hertz({{"bound", 0}}, 0.0, 1)).errors.empty());
+
   const CaseReadResult below = read_case(hertz({{"bound", "x"}}, 0.0, 1));
   ASSERT_TRUE(below.spec);
   try {
