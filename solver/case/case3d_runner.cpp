@@ -11,6 +11,7 @@
 #include "case/case3d_result.hpp"
 #include "case/case_error.hpp"
 #include "case/early_group_check.hpp"
+#include "core/non_finite.hpp"
 #include "mesh/gmsh_mesh.hpp"
 #include "mesh/mesh_error.hpp"
 #include "mesh/tet_msh_reader.hpp"
@@ -139,8 +140,13 @@ Run3dOutput run_case_3d(const Case3dSpec& spec, const Run3dControl& control,
   if (control.cancel)
     observer.cancelled = [&control] { return control.cancel->load(std::memory_order_relaxed); };
   const bool multilevel = spec.solver.method == SolverMethod::kMmg;
-  const SolverReport report = solve_box_qp(
-      qp, multilevel ? disc.build_level_hierarchy() : LevelHierarchy{}, spec.solver, observer, x);
+  SolverReport report;
+  try {
+    report = solve_box_qp(qp, multilevel ? disc.build_level_hierarchy() : LevelHierarchy{},
+                          spec.solver, observer, x);
+  } catch (const NonFiniteError& e) {
+    throw CaseException({non_finite_problem(e.what())});
+  }
   const double solve_s = seconds_since(t2);
 
   Run3dOutput out;

@@ -10,6 +10,7 @@
 #include "case/time_estimate.hpp"
 #include "mesh/coarse_mesh_estimate.hpp"
 #include "mesh/geometry_checks.hpp"
+#include "mesh/group_name_index.hpp"
 
 namespace fosls {
 
@@ -35,8 +36,9 @@ std::vector<CaseError> group_problems(const CaseSpec& spec,
   std::vector<CaseError> errors;
   bool dirichlet = false;
   std::array<bool, 2> held = {false, false};  // some group prescribes u_x, u_y
+  const GroupNameIndex known(group_names);
   for (const auto& [name, bc] : spec.boundary) {
-    if (std::find(group_names.begin(), group_names.end(), name) == group_names.end())
+    if (known.find(group_names, name) < 0)
       errors.push_back(unknown_group_problem(name, group_names));
     dirichlet |= bc.type == BoundaryCondition::Type::kDirichlet;
     for (int c = 0; c < 2; ++c)

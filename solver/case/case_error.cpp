@@ -5,10 +5,13 @@ namespace fosls {
 namespace {
 std::string summary(const std::vector<CaseError>& errors) {
   std::string s;
-  for (const auto& e : errors) {
+  for (std::size_t k = 0; k < errors.size() && k < kSummaryErrors; ++k) {
+    const CaseError& e = errors[k];
     if (!s.empty()) s += "; ";
     s += (e.pointer.empty() ? std::string("/") : e.pointer) + ": " + e.detail;
   }
+  if (errors.size() > kSummaryErrors)
+    s += "; and " + std::to_string(errors.size() - kSummaryErrors) + " more problems";
   return s;
 }
 }  // namespace
@@ -29,6 +32,21 @@ std::string child_pointer(const std::string& pointer, const std::string& key) {
 
 std::string child_pointer(const std::string& pointer, std::size_t index) {
   return pointer + "/" + std::to_string(index);
+}
+
+std::string quoted_names(const std::vector<std::string>& names, std::size_t shown) {
+  std::string list;
+  for (std::size_t k = 0; k < names.size() && k < shown; ++k)
+    list += (list.empty() ? "'" : ", '") + names[k] + "'";
+  if (names.size() > shown) list += " and " + std::to_string(names.size() - shown) + " more";
+  return list;
+}
+
+CaseError non_finite_problem(const std::string& what) {
+  return {"", what +
+                  ": the case's data overflow double precision; give displacements, tractions, "
+                  "pressures and the body force of a physical size (a value such as 1e300 "
+                  "cannot be squared)"};
 }
 
 CaseException::CaseException(std::vector<CaseError> errors)

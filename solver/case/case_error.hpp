@@ -21,6 +21,18 @@ std::string child_pointer(const std::string& pointer, const std::string& key);
 /// The pointer of entry `index` of the array at `pointer`.
 std::string child_pointer(const std::string& pointer, std::size_t index);
 
+/// Names for a message, quoted and bounded: the first `shown`, then "and N more". A list in an
+/// error grows with the input (a mesh may have 10⁵ groups), and one such list per error made a
+/// hostile request's answer quadratic in its size (docs/service.md, "Hostile use").
+std::string quoted_names(const std::vector<std::string>& names, std::size_t shown = 8);
+
+/// At most this many problems are spelt out in a CaseException's message (all stay in errors()).
+constexpr std::size_t kSummaryErrors = 20;
+
+/// The problem of a solve whose numbers became infinite or NaN (core/non_finite.hpp): said
+/// against the case's data, which is where such numbers come from.
+CaseError non_finite_problem(const std::string& what);
+
 class CaseException : public std::runtime_error {
  public:
   explicit CaseException(std::vector<CaseError> errors);

@@ -17,6 +17,7 @@
 #include "case/result_json.hpp"
 #include "case/solver_methods.hpp"
 #include "core/indefinite_system.hpp"
+#include "core/non_finite.hpp"
 #include "core/peak_memory.hpp"
 #include "mesh/length_scale.hpp"
 #include "post/vtu_writer.hpp"
@@ -229,6 +230,8 @@ RunOutput run_case(const CaseSpec& spec, const RunControl& control, const CaseLi
     });
   } catch (const TimeLimitReached& e) {
     throw TimeLimitReached(e.stage(), time_limit_message(spec, e.stage()));
+  } catch (const NonFiniteError& e) {
+    throw CaseException({non_finite_problem(e.what())});
   }
 }
 

@@ -5,6 +5,7 @@
 #include "case/case_sections.hpp"
 #include "case/mesh_factory.hpp"
 #include "case/rule_checker.hpp"
+#include "mesh/group_name_index.hpp"
 
 namespace fosls {
 
@@ -32,10 +33,8 @@ bool group_names(const MeshSpec& mesh, std::vector<std::string>& names) {
 }  // namespace
 
 CaseError unknown_group_problem(const std::string& name, const std::vector<std::string>& groups) {
-  std::string list;
-  for (const auto& g : groups) list += (list.empty() ? "'" : ", '") + g + "'";
   return {child_pointer("/boundary", name),
-          "the mesh has no boundary group '" + name + "'; its groups are " + list};
+          "the mesh has no boundary group '" + name + "'; its groups are " + quoted_names(groups)};
 }
 
 CaseError no_dirichlet_problem() {
@@ -57,9 +56,9 @@ void add_unknown_group_problems(const nlohmann::json& j, const CaseReadOptions& 
   if (!checker.check_object(j["mesh"], *mesh_rule(options), "/mesh")) return;
   std::vector<std::string> groups;
   if (!group_names(read_mesh_section(j["mesh"]), groups)) return;
+  const GroupNameIndex known(groups);
   for (const auto& [name, condition] : j["boundary"].items())
-    if (std::find(groups.begin(), groups.end(), name) == groups.end())
-      errors.push_back(unknown_group_problem(name, groups));
+    if (known.find(groups, name) < 0) errors.push_back(unknown_group_problem(name, groups));
 }
 
 }  // namespace fosls

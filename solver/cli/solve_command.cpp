@@ -206,6 +206,15 @@ int run_solve(const SolveOptions& o) {
     progress.finish();
     std::cerr << "error: " << e.what() << '\n';
     return kExitNotConverged;
+  } catch (const std::bad_alloc&) {
+    // A failed allocation (CHOLMOD's included: solvers/cholmod_checks.hpp) is the machine's
+    // limit, not a bug: said as such, so that nobody takes a partial run for an answer.
+    progress.finish();
+    std::cerr << "error: the solve ran out of memory; a direct factorisation (pdas's, or mmg's "
+                 "on its coarsest level) needs the most: use a coarser mesh with more "
+                 "refinements, or fewer refinements (fosls-contact estimate tells what a case "
+                 "needs)\n";
+    return kExitInternal;
   } catch (const std::exception& e) {
     progress.finish();
     std::cerr << "error: " << e.what() << '\n';

@@ -15,7 +15,10 @@ double parent_facet_share(const Mesh& fine, const RefinementMaps& maps, int f) {
   return pq[0] < maps.num_coarse_vertices && pq[1] < maps.num_coarse_vertices ? 1.0 : 0.5;
 }
 
-double parent_facet_share(const TetMesh&, const TetRefinementMaps&, int) { return 0.25; }
+double parent_facet_share(const TetMesh&, const TetRefinementMaps& maps, int f) {
+  // Exact from the refinement (¼ under red refinement; ½, ¼, … or 1 under bisection).
+  return maps.parent_face_share[f];
+}
 
 namespace {
 

@@ -33,8 +33,8 @@ Eigen::SparseMatrix<double> cartesian_prolongation(const SimplexMesh<dim>& coars
                                                    const SimplexRefinementMaps<dim>& maps);
 
 /// The share of its parent's flux that fine facet f (inside a coarse facet) carries: ½ for a
-/// half of an edge, 1 for a kept edge, ¼ for a quarter of a face (the exact fraction of the
-/// parent's measure).
+/// half of an edge, 1 for a kept edge; in 3D the exact fraction of the parent face's area that the
+/// refinement maps hold (¼ for red refinement's quarters; ½, ¼, … or 1 under bisection).
 double parent_facet_share(const Mesh& fine, const RefinementMaps& maps, int f);
 double parent_facet_share(const TetMesh& fine, const TetRefinementMaps& maps, int f);
 

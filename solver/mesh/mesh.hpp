@@ -6,6 +6,8 @@
 #include <string>
 #include <vector>
 
+#include "mesh/group_name_index.hpp"
+
 namespace fosls {
 
 using Point = Eigen::Vector2d;
@@ -72,7 +74,7 @@ class Mesh {
   const std::array<int, 2>& edge_triangles(int e) const { return edge_triangles_[e]; }
 
   const std::vector<std::string>& group_names() const { return group_names_; }
-  /// Index of a group by name, -1 when absent.
+  /// Index of a group by name, -1 when absent (O(log G): group_name_index.hpp).
   int group_index(const std::string& name) const;
   const std::vector<BoundaryCurve>& curves() const { return curves_; }
 
@@ -116,6 +118,7 @@ class Mesh {
   std::vector<int> edge_group_;
   std::vector<int> edge_curve_;
   std::vector<std::string> group_names_;
+  GroupNameIndex group_index_;
   std::vector<BoundaryCurve> curves_;
 };
 

@@ -7,6 +7,8 @@
 #include <string>
 #include <vector>
 
+#include "mesh/group_name_index.hpp"
+
 namespace fosls {
 
 using Point3 = Eigen::Vector3d;
@@ -61,6 +63,7 @@ class TetMesh {
   int face_group(int f) const { return face_group_[f]; }
   bool is_boundary_face(int f) const { return face_tets_[f][1] < 0; }
   const std::vector<std::string>& group_names() const { return group_names_; }
+  /// Index of a group by name, −1 when absent (O(log G): group_name_index.hpp).
   int group_index(const std::string& name) const;
   /// The sphere group g lies on (not curved() for flat groups).
   SphereSurface group_surface(int g) const {
@@ -103,6 +106,7 @@ class TetMesh {
   std::vector<std::array<int, 2>> face_tets_;
   std::vector<int> face_group_;
   std::vector<std::string> group_names_;
+  GroupNameIndex group_index_;
   std::vector<SphereSurface> group_surfaces_;
 };
 

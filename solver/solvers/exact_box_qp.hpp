@@ -45,8 +45,9 @@ class SparseBoxQpSolver {
   /// analysis and the last settled active set as the next solve's start (held_rows only);
   /// false, with nothing changed, where a new solver is needed. Throws as the constructor.
   bool refactor(const SparseMatrix& A);
-  /// δ = argmin, feasible; returns false if the iteration cap was hit (δ is still a feasible
-  /// point with J(δ) ≤ J(0)).
+  /// δ = argmin, feasible (after the iteration cap: a feasible point with J(δ) ≤ J(0)); false
+  /// when a free block was not positive definite, which callers must not take for a solution.
+  /// Throws std::bad_alloc when a factorisation runs out of memory (solvers/cholmod_checks.hpp).
   bool solve(const Vector& r, const Vector& lo, const Vector& hi, Vector& delta);
 
   /// Primal–dual steps taken and how many solves ended by them (the rest by the primal method).

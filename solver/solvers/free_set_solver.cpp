@@ -5,6 +5,7 @@
 #include <algorithm>
 
 #include "core/indefinite_system.hpp"
+#include "solvers/cholmod_checks.hpp"
 
 namespace fosls {
 
@@ -96,17 +97,15 @@ class ReducedSolver : public FreeSetSolver {
 class HeldRowsSolver : public FreeSetSolver {
  public:
   explicit HeldRowsSolver(const SparseMatrix& A) : A_(A), held_matrix_(A) {
-    full_.compute(A_);
-    if (full_.info() != Eigen::Success) throw IndefiniteSystemError(kIndefinite);
-    held_.analyzePattern(held_matrix_);
+    if (!compute_checked(full_, A_)) throw IndefiniteSystemError(kIndefinite);
+    analyse_checked(held_, held_matrix_);
   }
 
   bool refactor(const SparseMatrix& A) override {
     if (!same_pattern(A, A_)) return false;
     last_free_.clear();  // first: `held_` holds the old values' factor from here on
     std::copy(A.valuePtr(), A.valuePtr() + A.nonZeros(), A_.valuePtr());
-    full_.factorize(A_);
-    if (full_.info() != Eigen::Success) throw IndefiniteSystemError(kIndefinite);
+    if (!factorize_checked(full_, A_)) throw IndefiniteSystemError(kIndefinite);
     return true;
   }
 
@@ -118,13 +117,13 @@ class HeldRowsSolver : public FreeSetSolver {
     for (int i = 0; i < n; ++i) num_free += state[i] == 0;
     if (num_free == 0) return true;
     if (num_free == n) {
-      y = full_.solve(r);
+      y = solve_checked(full_, r);
       return true;
     }
     std::vector<char> free(n);
     for (int i = 0; i < n; ++i) free[i] = state[i] == 0;
     if (last_free_ != free && !factorise(free)) return false;
-    const Vector sol = held_.solve(free_right_hand_side(A_, state, r, d));
+    const Vector sol = solve_checked(held_, free_right_hand_side(A_, state, r, d));
     for (int i = 0; i < n; ++i)
       if (state[i] == 0) y[i] = sol[i];
     return true;
@@ -139,9 +138,10 @@ class HeldRowsSolver : public FreeSetSolver {
         const int i = A_.innerIndexPtr()[k];
         h[k] = (free[i] && free[j]) || i == j ? a[k] : 0.0;
       }
-    held_.factorize(held_matrix_);
+    last_free_.clear();  // first: a throw below leaves no stale claim on `held_`
+    const bool definite = factorize_checked(held_, held_matrix_);
     last_free_ = free;
-    if (held_.info() == Eigen::Success) return true;
+    if (definite) return true;
     last_free_.clear();
     return false;
   }

@@ -3,6 +3,7 @@
 #include <Eigen/CholmodSupport>
 #include <algorithm>
 
+#include "solvers/cholmod_checks.hpp"
 #include "solvers/galerkin_product.hpp"
 
 namespace fosls {
@@ -24,8 +25,8 @@ bool chain_is_definite(const SparseMatrix& A, const GalerkinChain& chain, int ma
   for (const SparseMatrix& m : chain.matrices)
     if (m.rows() <= max_dofs) checked = &m;
   if (A.rows() <= max_dofs) checked = &A;
-  Eigen::CholmodSupernodalLLT<SparseMatrix> llt(*checked);
-  return llt.info() == Eigen::Success;
+  Eigen::CholmodSupernodalLLT<SparseMatrix> llt;
+  return compute_checked(llt, *checked);
 }
 
 }  // namespace fosls

@@ -1,11 +1,11 @@
 #include "solvers/multilevel_cycle.hpp"
 
-#include "solvers/row_obstacle.hpp"
-
 #include <algorithm>
 #include <chrono>
 
 #include "core/fosls_assert.hpp"
+#include "core/indefinite_system.hpp"
+#include "solvers/row_obstacle.hpp"
 
 namespace fosls {
 
@@ -142,7 +142,11 @@ void MultilevelCycle::solve_coarsest(Vector& c, Vector& r, const Vector& lo, con
     dlo[i] = std::min(0.0, lo[i] - c[i]);
     dhi[i] = std::max(0.0, hi[i] - c[i]);
   }
-  coarse_solver_->solve(r, dlo, dhi, delta);
+  // A free block that is not definite (the matrix is, so only rounding gets here) must not
+  // pass as a zero correction: the cycle would stop moving and look converged.
+  if (!coarse_solver_->solve(r, dlo, dhi, delta))
+    throw IndefiniteSystemError(
+        "the coarsest level's matrix is not positive definite on a free set");
   step_within_bounds(c, 1.0, delta, lo, hi);  // delta becomes the change of c
   r -= truncation_.matrix(0) * delta;
   stats_.coarse_s += seconds_since(t0);

@@ -1,15 +1,12 @@
 #include "solvers/pdas_step.hpp"
 
-#include <stdexcept>
-
 #include "core/indefinite_system.hpp"
+#include "solvers/cholmod_checks.hpp"
 
 namespace fosls {
 
 PdasStep::PdasStep(const BoxQp& qp) : qp_(qp), m_(qp.A), diagonal_(qp.A.diagonal()) {
-  llt_.analyzePattern(m_);
-  if (llt_.info() != Eigen::Success)
-    throw std::runtime_error("CHOLMOD could not analyse the matrix");
+  analyse_checked(llt_, m_);
 }
 
 std::vector<char> PdasStep::next_active_set(const Vector& x, const Vector& r) {
@@ -58,10 +55,9 @@ void PdasStep::iterate(Vector& x, Vector& r) {
   symmetric_multiply(qp_.A, psi, apsi);
   for (int i = 0; i < n; ++i) rhs[i] = active[i] ? psi[i] : rhs[i] - apsi[i];
   hold_active_rows(active);
-  llt_.factorize(m_);
-  if (llt_.info() != Eigen::Success)
+  if (!factorize_checked(llt_, m_))
     throw IndefiniteSystemError("CHOLMOD: the matrix is not positive definite");
-  x = llt_.solve(rhs);
+  x = solve_checked(llt_, rhs);
   for (int i = 0; i < n; ++i)
     if (active[i]) x[i] = bound(active[i], i);
   Vector ax;

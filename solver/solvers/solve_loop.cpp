@@ -5,10 +5,13 @@
 #include <cmath>
 #include <limits>
 #include <memory>
+#include <sstream>
 #include <stdexcept>
+#include <string>
 
 #include "core/fosls_assert.hpp"
 #include "core/indefinite_system.hpp"
+#include "core/non_finite.hpp"
 #include "core/peak_memory.hpp"
 #include "solvers/algebraic_error.hpp"
 #include "solvers/algebraic_error_stop.hpp"
@@ -71,6 +74,15 @@ std::vector<std::unique_ptr<StoppingCriterion>> stopping_criteria(const BoxQp& q
     criteria.push_back(std::make_unique<AlgebraicErrorStop>(options.discretisation_fraction));
   criteria.push_back(std::make_unique<RoundingLevelStop>(qp, x));
   return criteria;
+}
+
+/// What became non-finite at iteration k (0: the initial iterate, from the assembled data).
+std::string non_finite_message(int k, const IterationRecord& rec) {
+  std::ostringstream m;
+  m << "the solve produced numbers that are not finite (KKT residual " << rec.kkt_residual
+    << ", energy " << rec.energy << (k == 0 ? " at the start" : " at iteration ")
+    << (k == 0 ? std::string() : std::to_string(k)) << ")";
+  return m.str();
 }
 
 /// The iterations of one solve: a step, the residual, the acceleration, the records and the
@@ -193,6 +205,9 @@ class IterationLoop {
       rec.energy += sides_->energy_offset();
       rec.kkt_residual = sides_->kkt_residual(x_, r_, rec.kkt_residual);
     }
+    // A NaN compares false with every tolerance and would pass a stopping test as met.
+    if (!std::isfinite(rec.kkt_residual) || !std::isfinite(rec.energy))
+      throw NonFiniteError(non_finite_message(k, rec));
     rec.active = static_cast<int>(std::count(active_.begin(), active_.end(), 1));
     rec.changed = changed;
     rec.time_s = seconds_since(t0_);

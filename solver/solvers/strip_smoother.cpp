@@ -2,6 +2,7 @@
 
 #include <algorithm>
 
+#include "core/indefinite_system.hpp"
 #include "solvers/exact_box_qp.hpp"
 
 namespace fosls {
@@ -31,7 +32,9 @@ void StripSmoother::sweep(Vector& x, Vector& r, const Vector& lo, const Vector& 
     dlo[a] = std::min(0.0, lo[i] - x[i]);
     dhi[a] = std::max(0.0, hi[i] - x[i]);
   }
-  solver_->solve(rl, dlo, dhi, delta);
+  if (!solver_->solve(rl, dlo, dhi, delta))
+    throw IndefiniteSystemError(
+        "the contact strip's matrix is not positive definite on a free set");
   for (int a = 0; a < m; ++a) {
     if (delta[a] == 0.0) continue;
     const int j = strip_[a];

@@ -107,6 +107,17 @@ TEST(Cli3d, ABadCaseExitsTwoNamingTheFieldAndNoContactExitsFourWithReview) {
   EXPECT_NE(empty.err.find("REVIEW"), std::string::npos) << empty.err;
 }
 
+TEST(Cli3d, DataThatOverflowIsAFailureNamingItsCauseNotAConvergedAnswer) {
+  json j = json::parse(fosls_contact({"example", "hertz_3d"}).out);
+  j["mesh"]["refinements"] = 0;
+  j["boundary"]["top"]["displacement"][2] = "-0.01*(1+1e300*(x>0.7))";
+  const CliRun r = fosls_contact({"solve", "-", "-q"}, j.dump());
+  EXPECT_EQ(r.exit_code, 2) << r.err;
+  EXPECT_NE(r.err.find("not finite"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("overflow double precision"), std::string::npos) << r.err;
+  EXPECT_TRUE(r.out.empty()) << r.out.substr(0, 200);
+}
+
 TEST(Cli3d, BenchSolvesA3dCaseOnEachLevelByMmgAndPdas) {
   // The shipped example by name, refinements 0 and 1: a row per level and method, the same
   // force from both methods, the contact area in the width's column and no memory split.

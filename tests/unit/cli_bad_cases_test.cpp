@@ -200,6 +200,12 @@ std::vector<BadCase> bad_cases() {
       {"unknown_group_in_boundary",
        set("/boundary/sides", {{"type", "neumann"}, {"traction", {0, 0}}}), "", "/boundary/sides",
        "group"},
+      // Finite where the reader samples them, but beyond double precision once squared: the
+      // solve's numbers stop being numbers, which must not pass as "converged".
+      {"displacement_overflows", set("/boundary/top/displacement/1", "-0.05*(1+1e300*(x>0.7))"), "",
+       "/", "overflow double precision"},
+      {"pressure_overflows", set("/boundary/left", {{"type", "pressure"}, {"pressure", 1e300}}), "",
+       "/", "overflow double precision"},
   };
 }
 
