@@ -101,8 +101,7 @@ std::vector<std::vector<int>> interior_sigma_dofs(const FoslsSpace<3>& coarse,
   for (int f = 0; f < fine.mesh().num_faces(); ++f)
     if (const int t = maps.parent_tet_of_face[f]; t >= 0 && under_contact[t])
       for (int i = 0; i < 3; ++i)
-        if (const int dof = fine.free_index(fine.sigma_dof(f, i)); dof >= 0)
-          dofs[t].push_back(dof);
+        if (const int dof = fine.free_index(fine.sigma_dof(f, i)); dof >= 0) dofs[t].push_back(dof);
   return dofs;
 }
 

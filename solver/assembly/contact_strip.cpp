@@ -31,7 +31,8 @@ std::vector<int> contact_strip(const Space& space, int layers) {
   for (int t = 0; t < mesh.num_cells(); ++t)
     if (touches(t))
       for (int dof : space.cell_dofs(t))
-        if (const int f = space.free_index(dof); f >= 0 && !taken[f]) taken[f] = 1, strip.push_back(f);
+        if (const int f = space.free_index(dof); f >= 0 && !taken[f])
+          taken[f] = 1, strip.push_back(f);
   std::sort(strip.begin(), strip.end());
   return strip;
 }

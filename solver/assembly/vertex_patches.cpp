@@ -63,14 +63,11 @@ template std::vector<std::vector<int>> ordered_patches<2>(
 template std::vector<std::vector<int>> ordered_patches<3>(
     const TetMesh&, const std::function<void(int, std::vector<int>&)>&, std::array<int, 2>*,
     const std::vector<char>&);
-template std::vector<std::vector<int>> vertex_patches<2>(const FoslsSpace<2>&,
-                                                         std::array<int, 2>*,
+template std::vector<std::vector<int>> vertex_patches<2>(const FoslsSpace<2>&, std::array<int, 2>*,
                                                          const std::vector<char>&);
-template std::vector<std::vector<int>> vertex_patches<3>(const FoslsSpace<3>&,
-                                                         std::array<int, 2>*,
+template std::vector<std::vector<int>> vertex_patches<3>(const FoslsSpace<3>&, std::array<int, 2>*,
                                                          const std::vector<char>&);
 template std::vector<char> new_vertices_and_neighbours<2>(const Mesh&, const RefinementMaps&);
-template std::vector<char> new_vertices_and_neighbours<3>(const TetMesh&,
-                                                          const TetRefinementMaps&);
+template std::vector<char> new_vertices_and_neighbours<3>(const TetMesh&, const TetRefinementMaps&);
 
 }  // namespace fosls
