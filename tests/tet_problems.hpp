@@ -3,7 +3,7 @@
 #include <cmath>
 #include <limits>
 
-#include "assembly/tet_hierarchy.hpp"
+#include "assembly/discretization.hpp"
 #include "post/contact_force.hpp"
 #include "solvers/solve_loop.hpp"
 
@@ -77,7 +77,7 @@ struct MmgAndPdas {
   Point3 force, pdas_force;
 };
 
-inline MmgAndPdas solve_with_mmg_and_pdas(const TetDiscretization& disc, const LevelHierarchy& h) {
+inline MmgAndPdas solve_with_mmg_and_pdas(const Discretization<3>& disc, const LevelHierarchy& h) {
   const BoxQp& qp = disc.problem().qp;
   const FoslsAssembler<3>& a = disc.assembler();
   const double scale = disc.problem().stress_scale;

@@ -2,8 +2,11 @@
 
 #include <algorithm>
 
-#include "assembly/patch_blocks.hpp"
+#include "assembly/contact_strip.hpp"
+#include "assembly/discretization.hpp"
+#include "assembly/vertex_patches.hpp"
 #include "fem/simplex_element.hpp"
+#include "fem/transfer.hpp"
 
 namespace fosls {
 
@@ -52,40 +55,27 @@ Vector lowest_order_interpolant(const FoslsSpace<2>& lowest, const P2Rt1Space& o
 
 namespace {
 
-/// The embedding between the free DOFs of both spaces in their rotated coordinates.
+/// The embedding between the free DOFs of both spaces in their rotated coordinates (every
+/// nonzero kept: the embedding is exact).
 SparseMatrix free_embedding(const FoslsSpace<2>& lowest, const P2Rt1Space& order2) {
   const Eigen::SparseMatrix<double> rotated =
       order2.rotation().transpose() * order2_embedding(lowest, order2) * lowest.rotation();
-  std::vector<Eigen::Triplet<double>> t;
-  for (int col = 0; col < rotated.outerSize(); ++col) {
-    const int fc = lowest.free_index(col);
-    if (fc < 0) continue;
-    for (Eigen::SparseMatrix<double>::InnerIterator it(rotated, col); it; ++it) {
-      const int fr = order2.free_index(static_cast<int>(it.row()));
-      if (fr >= 0 && it.value() != 0.0) t.emplace_back(fr, fc, it.value());
-    }
-  }
+  const std::vector<Eigen::Triplet<double>> t = free_triplets(rotated, order2, lowest, 0.0);
   SparseMatrix p(order2.num_free(), lowest.num_free());
   p.setFromTriplets(t.begin(), t.end());
   return p;
 }
 
-/// Free DOFs of the vertex patches in two_vertex_blocks' order (the same stars as the lowest
-/// order's patches, so its two blocks are independent here too).
+/// Free DOFs of the vertex stars in ordered_patches' order: the vertex's node, the midpoints and
+/// σ DOFs of its edges and the σ means of its triangles (the lowest order's stars, so its two
+/// blocks are independent here too).
 std::vector<std::vector<int>> order2_patches(const P2Rt1Space& space, std::array<int, 2>& split) {
   const Mesh& mesh = space.mesh();
   const auto vertex_edges = mesh.vertex_edges();
   std::vector<std::vector<int>> vertex_triangles(mesh.num_vertices());
   for (int t = 0; t < mesh.num_triangles(); ++t)
     for (int v : mesh.triangle(t)) vertex_triangles[v].push_back(t);
-  const VertexBlocks blocks = two_vertex_blocks(mesh);
-  std::vector<std::vector<int>> patches;
-  split = {0, 0};
-  for (int k = 0; k < mesh.num_vertices(); ++k) {
-    for (int b = 0; b < 2; ++b)
-      if (k == blocks.ends[b]) split[b] = static_cast<int>(patches.size());
-    const int v = blocks.order[k];
-    std::vector<int> p;
+  auto star = [&](int v, std::vector<int>& p) {
     auto take = [&](int dof) {
       if (const int f = space.free_index(dof); f >= 0) p.push_back(f);
     };
@@ -98,37 +88,9 @@ std::vector<std::vector<int>> order2_patches(const P2Rt1Space& space, std::array
     for (int t : vertex_triangles[v])
       for (int m = 0; m < 2; ++m)
         for (int i = 0; i < 2; ++i) take(space.sigma_mean_dof(t, m, i));
-    if (!p.empty()) patches.push_back(std::move(p));
-  }
-  for (int b = 0; b < 2; ++b)
-    if (blocks.ends[b] == mesh.num_vertices()) split[b] = static_cast<int>(patches.size());
-  return patches;
-}
-
-/// Free DOFs of the triangles within two layers of the contact boundary, sorted.
-std::vector<int> order2_contact_strip(const P2Rt1Space& space) {
-  const Mesh& mesh = space.mesh();
-  std::vector<char> near(mesh.num_vertices(), 0);
-  for (int e = 0; e < mesh.num_edges(); ++e)
-    if (space.is_contact_edge(e))
-      for (int v : mesh.edge(e)) near[v] = 1;
-  auto touches = [&](int t) {
-    const auto& tri = mesh.triangle(t);
-    return near[tri[0]] || near[tri[1]] || near[tri[2]];
   };
-  std::vector<char> second = near;
-  for (int t = 0; t < mesh.num_triangles(); ++t)
-    if (touches(t))
-      for (int v : mesh.triangle(t)) second[v] = 1;
-  near = second;
-  std::vector<int> strip;
-  for (int t = 0; t < mesh.num_triangles(); ++t)
-    if (touches(t))
-      for (int dof : space.cell_dofs(t))
-        if (const int f = space.free_index(dof); f >= 0) strip.push_back(f);
-  std::sort(strip.begin(), strip.end());
-  strip.erase(std::unique(strip.begin(), strip.end()), strip.end());
-  return strip;
+  split = {0, 0};
+  return ordered_patches<2>(mesh, star, &split);
 }
 
 /// Contact edge e's link: its lowest-order U_n and S_n with the order-2 ones. Moving S_n from
@@ -172,7 +134,7 @@ Level order2_level(const FoslsSpace<2>& lowest, const P2Rt1Space& order2) {
   level.num_dofs = order2.num_free();
   level.prolongation = free_embedding(lowest, order2);
   level.patches = order2_patches(order2, level.patch_split);
-  level.contact_strip = order2_contact_strip(order2);
+  level.contact_strip = contact_strip(order2, Discretization<2>::kStripLayers);
   for (int e = 0; e < lowest.mesh().num_edges(); ++e)
     if (lowest.is_contact_edge(e))
       level.links.push_back(order2_link(lowest, order2, level.prolongation, e));

@@ -14,6 +14,23 @@ VertexBlocks two_vertex_blocks(const Mesh& mesh) {
   return two_vertex_blocks(points, edges);
 }
 
+VertexBlocks two_vertex_blocks(const TetMesh& mesh) {
+  // The vertex pairs of the tetrahedra, sorted: a tetrahedral mesh keeps no edge list.
+  std::vector<std::array<int, 2>> edges;
+  edges.reserve(6 * mesh.num_tets());
+  for (int t = 0; t < mesh.num_tets(); ++t)
+    for (int i = 0; i < 4; ++i)
+      for (int j = i + 1; j < 4; ++j)
+        edges.push_back(
+            {std::min(mesh.tet(t)[i], mesh.tet(t)[j]), std::max(mesh.tet(t)[i], mesh.tet(t)[j])});
+  std::sort(edges.begin(), edges.end());
+  edges.erase(std::unique(edges.begin(), edges.end()), edges.end());
+  std::vector<Eigen::VectorXd> points;
+  points.reserve(mesh.num_vertices());
+  for (int v = 0; v < mesh.num_vertices(); ++v) points.emplace_back(mesh.vertex(v));
+  return two_vertex_blocks(points, edges);
+}
+
 VertexBlocks two_vertex_blocks(const std::vector<Eigen::VectorXd>& points,
                                const std::vector<std::array<int, 2>>& edges) {
   const int nv = static_cast<int>(points.size());

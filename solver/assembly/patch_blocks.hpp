@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "mesh/mesh.hpp"
+#include "mesh/tet_mesh.hpp"
 
 namespace fosls {
 
@@ -20,9 +21,11 @@ struct VertexBlocks {
   std::array<int, 2> ends{};  ///< end of block 0 and of block 1 in `order`
 };
 
-/// Splits the vertices at the median of the coordinate with the larger extent and moves the
-/// vertices of the upper half within two edges of the lower half into the separator.
+/// Splits the vertices at the median of the coordinate with the largest extent and moves the
+/// vertices of the upper half within two edges of the lower half into the separator: on the
+/// triangles' edges, or on the tetrahedra's vertex pairs.
 VertexBlocks two_vertex_blocks(const Mesh& mesh);
+VertexBlocks two_vertex_blocks(const TetMesh& mesh);
 
 /// The same for any mesh: vertex v at `points[v]` (2 or 3 coordinates), `edges` the pairs of
 /// vertices that share a cell, in a fixed order (the tetrahedral meshes' vertex stars).

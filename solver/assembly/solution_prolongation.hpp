@@ -13,6 +13,7 @@ namespace fosls {
 /// here: the solve loop projects its initial iterate onto them (a midpoint's interpolated U_n
 /// can exceed a curved gap). Throws std::invalid_argument when `disc` has one level or
 /// full_coarse has the wrong size.
-Vector prolongate_to_finest(const Discretization& disc, const Vector& full_coarse);
+template <int dim>
+Vector prolongate_to_finest(const Discretization<dim>& disc, const Vector& full_coarse);
 
 }  // namespace fosls

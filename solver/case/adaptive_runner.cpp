@@ -43,7 +43,7 @@ long long dofs_total(const Mesh& mesh, int order) {
 void solve_finest_order2(CaseSolution& solution, const SolverOptions& options,
                          const CaseSolveObserver& observer) {
   const auto t0 = Clock::now();
-  const Discretization& disc = *solution.disc;
+  const Discretization<2>& disc = *solution.disc;
   Order2Solution s = solve_order2(disc, *solution.order2, options, observer.solver);
   solution.assembly_s += s.assembly_s;
   solution.solve_s += seconds(t0, Clock::now()) - s.assembly_s;
@@ -61,7 +61,7 @@ void solve_finest_order2(CaseSolution& solution, const SolverOptions& options,
 void solve_finest(CaseSolution& solution, const CaseSpec& spec, bool from_start, bool first_step,
                   const CaseSolveObserver& observer) {
   const auto t0 = Clock::now();
-  const Discretization& disc = *solution.disc;
+  const Discretization<2>& disc = *solution.disc;
   const AssembledProblem& problem = disc.problem();
   if (has_contact(disc.data()) && !contact_layer_is_definite(disc.finest_space(), problem.qp))
     throw IndefiniteSystemError("the contact layer of the FOSLS matrix is not definite");
@@ -113,7 +113,7 @@ std::string stop_before_refining(const CaseSolution& s, const AdaptivitySpec& a,
 }
 
 AdaptiveStepRecord step_record(const CaseSolution& solution, int step) {
-  const Discretization& disc = *solution.disc;
+  const Discretization<2>& disc = *solution.disc;
   AdaptiveStepRecord record;
   record.step = step;
   record.levels = disc.num_levels();
@@ -192,11 +192,11 @@ CaseSolution solve_case_levels(MeshHierarchy meshes, const ProblemData<2>& data,
     const auto t0 = Clock::now();
     solution.disc.reset();  // one level set in memory at a time
     // Only the first step has no iterate to stop at (a later one has the prolongated solution).
-    solution.disc = std::make_unique<Discretization>(std::move(meshes), data,
-                                                     step == 0 ? observer.deadline : Deadline{});
+    solution.disc = std::make_unique<Discretization<2>>(std::move(meshes), data,
+                                                        step == 0 ? observer.deadline : Deadline{});
     solution.assembly_s += seconds(t0, Clock::now());
     solution.assembly_mib = peak_rss_mib();
-    const Discretization& disc = *solution.disc;
+    const Discretization<2>& disc = *solution.disc;
     solution.order2.reset();
     if (spec.mesh.order == 2)
       solution.order2 = std::make_unique<P2Rt1Space>(disc.meshes().finest(), data.boundary_roles());

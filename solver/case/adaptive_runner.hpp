@@ -43,7 +43,7 @@ struct AdaptiveStepRecord {
 
 /// The solution on the finest level, and how it was reached.
 struct CaseSolution {
-  std::unique_ptr<Discretization> disc;
+  std::unique_ptr<Discretization<2>> disc;
   /// mesh.order 2: the order-2 space on disc's finest mesh (docs/method.md §10); then x is its
   /// free DOFs, and full the lowest-order interpolant that the output is written from.
   std::unique_ptr<P2Rt1Space> order2;

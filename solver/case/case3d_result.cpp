@@ -25,7 +25,7 @@ struct ContactSummary {
   int faces_in_contact = 0;
 };
 
-ContactSummary contact_summary(const TetDiscretization& disc, const Vector& x_full) {
+ContactSummary contact_summary(const Discretization<3>& disc, const Vector& x_full) {
   const FoslsSpace<3>& space = disc.finest_space();
   const TetMesh& mesh = disc.meshes().finest();
   const double scale = disc.problem().stress_scale;
@@ -151,7 +151,7 @@ std::vector<ResultWarning> roller_warnings(const FoslsSpace<3>& space) {
 
 }  // namespace
 
-json case3d_result(const Case3dSpec& spec, const TetDiscretization& disc, const Vector& x_free,
+json case3d_result(const Case3dSpec& spec, const Discretization<3>& disc, const Vector& x_free,
                    const SolverReport& report) {
   const FoslsAssembler<3>& a = disc.assembler();
   const Vector x_full = a.full_vector(disc.problem(), x_free);

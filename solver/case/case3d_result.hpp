@@ -5,14 +5,14 @@
 
 #include <nlohmann/json.hpp>
 
-#include "assembly/tet_hierarchy.hpp"
+#include "assembly/discretization.hpp"
 #include "case/case3d_spec.hpp"
 #include "solvers/solve_loop.hpp"
 
 namespace fosls {
 
 /// Everything but `timing`, which the runner adds.
-nlohmann::json case3d_result(const Case3dSpec& spec, const TetDiscretization& disc,
+nlohmann::json case3d_result(const Case3dSpec& spec, const Discretization<3>& disc,
                              const Vector& x_free, const SolverReport& report);
 
 }  // namespace fosls

@@ -6,7 +6,7 @@
 
 #include <chrono>
 
-#include "assembly/tet_hierarchy.hpp"
+#include "assembly/discretization.hpp"
 #include "case/case3d_admission.hpp"
 #include "case/case3d_result.hpp"
 #include "case/case_error.hpp"
@@ -129,7 +129,7 @@ Run3dOutput run_case_3d(const Case3dSpec& spec, const Run3dControl& control,
 
   const auto t1 = Clock::now();
   ProblemData<3> data = problem_data(spec, meshes.finest());
-  const TetDiscretization disc(std::move(meshes), std::move(data));
+  const Discretization<3> disc(std::move(meshes), std::move(data));
   const double assembly_s = seconds_since(t1);
 
   const auto t2 = Clock::now();

@@ -163,7 +163,7 @@ RunOutput run_point(const CaseSpec& spec, const RunControl& control, const CaseL
   }
   memory.assembly_mib = solution.assembly_mib;
   memory.hierarchy_mib = solution.hierarchy_mib;
-  const Discretization& disc = *solution.disc;
+  const Discretization<2>& disc = *solution.disc;
   const AssembledProblem& problem = disc.problem();
   const auto t_solve = Clock::now();
 

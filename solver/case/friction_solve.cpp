@@ -2,7 +2,7 @@
 
 namespace fosls {
 
-SolverReport solve_frictional(Discretization& disc, const LevelHierarchy& hierarchy,
+SolverReport solve_frictional(Discretization<2>& disc, const LevelHierarchy& hierarchy,
                               const SolverOptions& options, const SolverObserver& observer,
                               Vector& x) {
   AssembledProblem& problem = disc.mutable_problem();

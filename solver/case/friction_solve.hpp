@@ -10,7 +10,7 @@ namespace fosls {
 /// Solves the finest level of `disc` with its friction (Coulomb: to options.friction_tolerance).
 /// The bounds of the last update stay in the problem (the results' stick/slip states read
 /// them).
-SolverReport solve_frictional(Discretization& disc, const LevelHierarchy& hierarchy,
+SolverReport solve_frictional(Discretization<2>& disc, const LevelHierarchy& hierarchy,
                               const SolverOptions& options, const SolverObserver& observer,
                               Vector& x);
 

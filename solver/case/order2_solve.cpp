@@ -9,7 +9,7 @@
 
 namespace fosls {
 
-Order2Solution solve_order2(const Discretization& lowest, const P2Rt1Space& space,
+Order2Solution solve_order2(const Discretization<2>& lowest, const P2Rt1Space& space,
                             const SolverOptions& options, const SolverObserver& observer) {
   using Clock = std::chrono::steady_clock;
   const auto t0 = Clock::now();

@@ -22,7 +22,7 @@ struct Order2Solution {
 /// Assembles the order-2 problem on lowest.meshes().finest() and solves it with
 /// options.method (mmg on the lowest-order hierarchy with the order-2 level on top, or pdas).
 /// Throws IndefiniteSystemError when the weights make the matrix indefinite.
-Order2Solution solve_order2(const Discretization& lowest, const P2Rt1Space& space,
+Order2Solution solve_order2(const Discretization<2>& lowest, const P2Rt1Space& space,
                             const SolverOptions& options, const SolverObserver& observer);
 
 }  // namespace fosls

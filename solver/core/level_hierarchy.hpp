@@ -54,7 +54,7 @@ struct Level {
   /// How the level's exact block solvers factorise: its strip smoother's and, on the coarsest
   /// level, the coarse solve's. 2D's strips and coarse meshes are thin or small and keep
   /// `reduced`; 3D's strips are slabs and its coarse meshes ordinary 3D sparse matrices
-  /// (assembly/tet_hierarchy.cpp).
+  /// (assembly/discretization.hpp, Discretization::kBlockFactorization).
   BlockFactorization block_factorization = BlockFactorization::reduced;
 };
 

@@ -38,6 +38,7 @@ class P2Rt1Space {
   DofRole role(int dof) const { return roles_[dof]; }
   bool is_contact_node(int node) const { return contact_node_[node] != 0; }
   bool is_contact_edge(int e) const { return contact_edge_[e] != 0; }
+  bool is_contact_facet(int e) const { return is_contact_edge(e); }
   /// Constraint direction at a contact node.
   const Point& node_normal(int node) const { return node_normal_[node]; }
   /// Where a displacement node lies: a vertex, an edge's midpoint, or for a boundary edge on

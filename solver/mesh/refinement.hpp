@@ -28,6 +28,17 @@ struct RefinementMaps {
   std::vector<signed char> parent_sign;
   /// For each fine triangle: the coarse triangle that contains it.
   std::vector<int> triangle_parent;
+
+  // The vocabulary TetRefinementMaps shares (mesh/simplex_mesh.hpp).
+  int parent_facet(int f) const { return parent_edge[f]; }
+  int parent_cell_of_facet(int f) const { return parent_triangle[f]; }
+  int cell_parent(int t) const { return triangle_parent[t]; }
+  /// How many fine vertices are new (midpoints of coarse edges).
+  int num_midpoints() const { return static_cast<int>(midpoint_edge.size()); }
+  /// The coarse vertices whose midpoint new fine vertex num_coarse_vertices + k is.
+  const std::array<int, 2>& midpoint_parents(const Mesh& coarse, int k) const {
+    return coarse.edge(midpoint_edge[k]);
+  }
 };
 
 /// One red refinement: every triangle split into four by its edge midpoints.

@@ -26,6 +26,15 @@ struct TetRefinementMaps {
   std::vector<int> parent_tet_of_face;
   /// For each fine tetrahedron: the coarse one that contains it.
   std::vector<int> tet_parent;
+
+  // The vocabulary RefinementMaps shares (mesh/simplex_mesh.hpp).
+  int parent_facet(int f) const { return parent_face[f]; }
+  int parent_cell_of_facet(int f) const { return parent_tet_of_face[f]; }
+  int cell_parent(int t) const { return tet_parent[t]; }
+  int num_midpoints() const { return static_cast<int>(midpoint_ends.size()); }
+  const std::array<int, 2>& midpoint_parents(const TetMesh&, int k) const {
+    return midpoint_ends[k];
+  }
 };
 
 struct TetRefinement {

@@ -29,7 +29,7 @@ void run_level(int level) {
   data.groups[0].role = GroupRole::kDirichlet;  // bottom
   data.groups[1].role = data.groups[2].role = data.groups[3].role = GroupRole::kNeumann;
   data.body_force[1] = [](double, double) { return -1.0; };
-  Discretization disc(std::move(meshes), std::move(data));
+  Discretization<2> disc(std::move(meshes), std::move(data));
   const auto t2 = Clock::now();
   rusage usage{};
   getrusage(RUSAGE_SELF, &usage);

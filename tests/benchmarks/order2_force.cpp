@@ -59,7 +59,7 @@ int main(int argc, char** argv) {
   MeshHierarchy meshes = build_mesh_hierarchy(std::move(coarse), spec.mesh.refinements);
   if (spec.weights.c3_auto)
     data.weights.c3 = automatic_contact_weight(contact_weight_limit(meshes, data));
-  const Discretization lowest(std::move(meshes), data);
+  const Discretization<2> lowest(std::move(meshes), data);
   const P2Rt1Space space(lowest.meshes().finest(), data.boundary_roles());
   const P2Rt1Assembler assembler(space, data);
   const AssembledProblem problem = assembler.assemble_system();

@@ -26,7 +26,7 @@
 #include <string>
 
 #include "../tet_problems.hpp"
-#include "assembly/tet_hierarchy.hpp"
+#include "assembly/discretization.hpp"
 #include "core/peak_memory.hpp"
 #include "mesh/tet_half_ball.hpp"
 #include "post/tet_vtu_writer.hpp"
@@ -84,7 +84,7 @@ bool parse_word(const std::string& w, Options& o) {
   return false;
 }
 
-TetDiscretization discretization(const Options& o, double lambda, int r) {
+Discretization<3> discretization(const Options& o, double lambda, int r) {
   ProblemData<3> p = o.hertz     ? testing::hertz_half_ball(lambda, o.delta)
                      : o.contact ? testing::signorini_block(lambda)
                                  : problem(lambda);
@@ -96,14 +96,14 @@ TetDiscretization discretization(const Options& o, double lambda, int r) {
       p.groups[3 + c].prescribed = 1 << c;
     }
   }
-  return TetDiscretization(
+  return Discretization<3>(
       build_tet_hierarchy(o.hertz ? make_half_ball(o.ball) : make_box({2, 2, 2}), r), p);
 }
 
 /// The half ball's contact radius and peak pressure: a from the pressure's second moment about
 /// the axis (for Hertz's p0 √(1 − r²/a²), ∫p r² dA / ∫p dA = 2a²/5, so all faces count, not just
 /// the outermost loaded one), p0 as the largest face pressure (a face mean: slightly low).
-std::array<double, 2> contact_radius_and_peak(const TetDiscretization& disc, const Vector& full) {
+std::array<double, 2> contact_radius_and_peak(const Discretization<3>& disc, const Vector& full) {
   const TetMesh& mesh = disc.meshes().finest();
   const std::vector<double> p =
       contact_pressure(disc.finest_space(), full, disc.problem().stress_scale);
@@ -120,7 +120,7 @@ std::array<double, 2> contact_radius_and_peak(const TetDiscretization& disc, con
 
 /// The force through the faces of mesh group `group` on the finest level, −∫ σ n (the force the
 /// body exerts there; μ = 1 in these problems, and σ's rows are Cartesian off the contact).
-Point3 force_through_group(const TetDiscretization& disc, const Vector& full, int group) {
+Point3 force_through_group(const Discretization<3>& disc, const Vector& full, int group) {
   const TetMesh& mesh = disc.meshes().finest();
   const FoslsSpace<3>& space = disc.assembler().space();
   Point3 force = Point3::Zero();
@@ -153,7 +153,7 @@ int main(int argc, char** argv) {
       std::string(argv[1]) == "inf" ? std::numeric_limits<double>::infinity() : std::atof(argv[1]);
   const int r = std::atoi(argv[2]);
   const auto t0 = Clock::now();
-  const TetDiscretization disc = discretization(o, lambda, r);
+  const Discretization<3> disc = discretization(o, lambda, r);
   const double assembly_s = seconds_since(t0);
   const auto t1 = Clock::now();
   Vector x = Vector::Zero(disc.problem().qp.size());

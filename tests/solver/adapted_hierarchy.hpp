@@ -14,7 +14,7 @@ inline MeshHierarchy adapted_hierarchy(MeshHierarchy meshes, const ProblemData<2
                                        int steps) {
   BisectionState state = longest_edge_state(meshes.finest(), 2 * (meshes.num_levels() - 1));
   for (int step = 0; step < steps; ++step) {
-    const Discretization disc(meshes, data);
+    const Discretization<2> disc(meshes, data);
     SolverOptions options;
     options.method = SolverMethod::kPdas;
     Vector x;

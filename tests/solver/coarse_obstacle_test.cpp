@@ -133,8 +133,8 @@ TEST(CoarseObstacle, LeastRestrictiveIsExactForALinearDefect) {
 TEST(CoarseObstacle, FeasibleOnTheLinksOfAnAssembledHierarchy) {
   // The square's contact boundary is straight, so the contact normals agree between levels
   // and the projected obstacles are exact: no prolongated correction may leave K.
-  const Discretization disc(build_mesh_hierarchy(make_square({.size = 0.25}), 2),
-                            testing::signorini_square(1.0));
+  const Discretization<2> disc(build_mesh_hierarchy(make_square({.size = 0.25}), 2),
+                               testing::signorini_square(1.0));
   const LevelHierarchy h = disc.build_level_hierarchy();
   std::mt19937 rng(2);
   for (int j = 1; j < h.num_levels(); ++j) {

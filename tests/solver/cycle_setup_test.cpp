@@ -13,7 +13,7 @@ namespace {
 
 TEST(CycleSetup, CoarseLevelsAreBuiltOncePerTruncatedSetAndNotBeforeTheFirstCycle) {
   const ProblemData<2> data = testing::hertz(1.0);
-  const Discretization disc(
+  const Discretization<2> disc(
       testing::adapted_hierarchy(build_mesh_hierarchy(make_hertz({.size = 0.1}), 1), data, 3),
       data);
   const LevelHierarchy h = disc.build_level_hierarchy();
@@ -35,7 +35,7 @@ TEST(CycleSetup, CoarseLevelsAreBuiltOncePerTruncatedSetAndNotBeforeTheFirstCycl
 
 TEST(CycleSetup, ASingleLevelHasItsExactSolverAtOnce) {
   const ProblemData<2> data = testing::signorini_square(1.0);
-  const Discretization disc(build_mesh_hierarchy(make_square({.size = 0.5}), 0), data);
+  const Discretization<2> disc(build_mesh_hierarchy(make_square({.size = 0.5}), 0), data);
   const LevelHierarchy h = disc.build_level_hierarchy();
   ASSERT_EQ(h.num_levels(), 1);
   const BoxQp& qp = disc.problem().qp;

@@ -17,9 +17,9 @@ namespace {
 
 using Clock = Deadline::Clock;
 
-Discretization square(int refinements, const Deadline& deadline = {}) {
-  return Discretization(build_mesh_hierarchy(make_square({.size = 0.25}), refinements),
-                        testing::signorini_square(1.0), deadline);
+Discretization<2> square(int refinements, const Deadline& deadline = {}) {
+  return Discretization<2>(build_mesh_hierarchy(make_square({.size = 0.25}), refinements),
+                           testing::signorini_square(1.0), deadline);
 }
 
 bool identical(const SparseMatrix& a, const SparseMatrix& b) {
@@ -29,7 +29,7 @@ bool identical(const SparseMatrix& a, const SparseMatrix& b) {
 }
 
 TEST(Deadline, TheElementLoopStopsOnceItHasPassed) {
-  const Discretization disc = square(4);  // 8 192 triangles: several polls per thread
+  const Discretization<2> disc = square(4);  // 8 192 triangles: several polls per thread
   ASSERT_GT(disc.meshes().finest().num_triangles(), 4 * Deadline::kPollEvery);
   try {
     disc.assembler().assemble_system(Deadline(Clock::now()));
@@ -73,8 +73,8 @@ TEST(Deadline, TheSpacesAreNotBuiltPastIt) {
 }
 
 TEST(Deadline, ADeadlineThatDoesNotPassChangesNothing) {
-  const Discretization none = square(4);
-  const Discretization later = square(4, Deadline(Clock::now() + std::chrono::hours(1)));
+  const Discretization<2> none = square(4);
+  const Discretization<2> later = square(4, Deadline(Clock::now() + std::chrono::hours(1)));
   EXPECT_TRUE(identical(none.problem().qp.A, later.problem().qp.A));
   const Vector& b0 = none.problem().qp.b;
   const Vector& b1 = later.problem().qp.b;

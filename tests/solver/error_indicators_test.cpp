@@ -19,8 +19,8 @@ double sum_of(const std::vector<double>& v, const std::vector<int>& which) {
 }
 
 TEST(ErrorIndicators, SumToTheFunctionalOfTheContactSolution) {
-  const Discretization disc(build_mesh_hierarchy(make_hertz({.size = 0.1}), 1),
-                            testing::hertz(1.0));
+  const Discretization<2> disc(build_mesh_hierarchy(make_hertz({.size = 0.1}), 1),
+                               testing::hertz(1.0));
   const BoxQp& qp = disc.problem().qp;
   Vector x;
   SolverOptions options;
@@ -52,8 +52,8 @@ TEST(DorflerMarking, TakesTheLargestIndicatorsUntilThetaIsCovered) {
 
 TEST(DorflerMarking, TheMarkedSetIsMinimalOnRealIndicators) {
   // Indicators of a solved Signorini square: many distinct values, a few large ones.
-  const Discretization disc(build_mesh_hierarchy(make_square({.size = 0.25}), 2),
-                            testing::signorini_square(1.0));
+  const Discretization<2> disc(build_mesh_hierarchy(make_square({.size = 0.25}), 2),
+                               testing::signorini_square(1.0));
   Vector x;
   SolverOptions options;
   options.method = SolverMethod::kPdas;

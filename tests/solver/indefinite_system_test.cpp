@@ -73,7 +73,7 @@ void expect_weights_refused(const nlohmann::json& j, const std::string& what) {
 TEST(IndefiniteSystem, TheCaseLayerReportsTheWeightsWhenASolverFindsIt) {
   ProblemData<2> d = testing::flat_square(1.0);
   d.weights.c3 = 0.35;
-  const Discretization disc(build_mesh_hierarchy(make_square({.size = 0.25}), 3), d);
+  const Discretization<2> disc(build_mesh_hierarchy(make_square({.size = 0.25}), 3), d);
   ASSERT_TRUE(contact_layer_is_definite(disc.finest_space(), disc.problem().qp))
       << "the screen catches c3 = 0.35: this test would not reach the solvers";
   for (const char* method : {"mmg", "tnnmg", "pdas"})

@@ -25,7 +25,7 @@ struct Case {
   CycleShape cycle = CycleShape::kW;
 };
 
-Discretization discretization(const Case& c) {
+Discretization<2> discretization(const Case& c) {
   // Adapted hierarchies: two uniform levels and five bisection levels (7 levels in all).
   const int uniform = c.adaptive_steps > 0 ? 1 : 3;
   const ProblemData<2> data =
@@ -34,14 +34,14 @@ Discretization discretization(const Case& c) {
       c.hertz ? make_hertz({.size = 0.1}) : make_square({.size = 0.25}), uniform);
   if (c.adaptive_steps > 0)
     meshes = testing::adapted_hierarchy(std::move(meshes), data, c.adaptive_steps);
-  return Discretization(std::move(meshes), data);
+  return Discretization<2>(std::move(meshes), data);
 }
 
 class Monotonicity : public ::testing::TestWithParam<Case> {};
 
 TEST_P(Monotonicity, EnergyNeverIncreasesAndIteratesStayFeasible) {
   const Case& c = GetParam();
-  const Discretization disc = discretization(c);
+  const Discretization<2> disc = discretization(c);
   ASSERT_EQ(disc.num_levels(), c.adaptive_steps > 0 ? 2 + c.adaptive_steps : 4);
   const LevelHierarchy h = disc.build_level_hierarchy();
   const BoxQp& qp = disc.problem().qp;

@@ -29,7 +29,7 @@ class Order2Multilevel : public ::testing::TestWithParam<Case> {
     const Case& c = GetParam();
     const ProblemData<2> data =
         c.hertz ? testing::hertz(c.lambda) : testing::signorini_square(c.lambda);
-    lowest_ = std::make_unique<Discretization>(
+    lowest_ = std::make_unique<Discretization<2>>(
         build_mesh_hierarchy(c.hertz ? make_hertz({.size = 0.1}) : make_square({.size = 0.25}), 2),
         data);
     space_ = std::make_unique<P2Rt1Space>(lowest_->meshes().finest(), data.boundary_roles());
@@ -38,7 +38,7 @@ class Order2Multilevel : public ::testing::TestWithParam<Case> {
     hierarchy_ = lowest_->build_level_hierarchy();
     hierarchy_.levels.push_back(order2_level(lowest_->finest_space(), *space_));
   }
-  std::unique_ptr<Discretization> lowest_;
+  std::unique_ptr<Discretization<2>> lowest_;
   std::unique_ptr<P2Rt1Space> space_;
   std::unique_ptr<P2Rt1Assembler> assembler_;
   AssembledProblem problem_;

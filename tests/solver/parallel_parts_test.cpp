@@ -10,8 +10,8 @@
 #include <random>
 
 #include "../tet_problems.hpp"
+#include "assembly/discretization.hpp"
 #include "assembly/p2_rt1_assembler.hpp"
-#include "assembly/tet_hierarchy.hpp"
 #include "contact_problems.hpp"
 #include "solvers/galerkin_product.hpp"
 #include "solvers/patch_smoother.hpp"
@@ -41,14 +41,14 @@ bool identical(const Vector& a, const Vector& b) {
 }
 
 /// The curved-gap square with 5 refinements: 131k DOFs, blocks of about 8000 patches.
-Discretization square(int refinements = 5) {
-  return Discretization(build_mesh_hierarchy(make_square({.size = 0.25}), refinements),
-                        testing::signorini_square(1.0));
+Discretization<2> square(int refinements = 5) {
+  return Discretization<2>(build_mesh_hierarchy(make_square({.size = 0.25}), refinements),
+                           testing::signorini_square(1.0));
 }
 
 TEST(ParallelParts, AssemblyIsTheSameBitForBitOnOneAndTwoThreads) {
-  const Discretization one = with_threads(1, [] { return square(3); });
-  const Discretization two = with_threads(2, [] { return square(3); });
+  const Discretization<2> one = with_threads(1, [] { return square(3); });
+  const Discretization<2> two = with_threads(2, [] { return square(3); });
   EXPECT_TRUE(identical(one.problem().qp.A, two.problem().qp.A));
   EXPECT_TRUE(identical(one.problem().qp.b, two.problem().qp.b));
   EXPECT_GT(one.problem().qp.A.nonZeros(), 0);
@@ -85,9 +85,9 @@ TEST(ParallelParts, ThreeDAndOrderTwoAssemblyAreTheSameBitForBitOnOneAndTwoThrea
 
 TEST(ParallelParts, AssembledQuadraticProgramIsTheFunctional) {
   for (const bool hertz : {false, true}) {
-    const Discretization disc =
-        hertz ? Discretization(build_mesh_hierarchy(make_hertz({.size = 0.2}), 1),
-                               testing::hertz(std::numeric_limits<double>::infinity()))
+    const Discretization<2> disc =
+        hertz ? Discretization<2>(build_mesh_hierarchy(make_hertz({.size = 0.2}), 1),
+                                  testing::hertz(std::numeric_limits<double>::infinity()))
               : square(2);
     const BoxQp& qp = disc.problem().qp;
     std::mt19937 rng(3);
@@ -104,7 +104,7 @@ TEST(ParallelParts, AssembledQuadraticProgramIsTheFunctional) {
 }
 
 TEST(ParallelParts, GalerkinProductIsEigensProductAndThreadIndependent) {
-  const Discretization disc = square(3);
+  const Discretization<2> disc = square(3);
   const LevelHierarchy h = disc.build_level_hierarchy();
   const SparseMatrix& a = disc.problem().qp.A;
   const SparseMatrix& p = h.levels.back().prolongation;
@@ -128,7 +128,7 @@ std::vector<char> touched(const SparseMatrix& a, const std::vector<std::vector<i
 
 TEST(ParallelParts, ResidualProductIsEigensAndThreadIndependent) {
   // Above the 20 000-column threshold, so that the two threads split the entries.
-  const Discretization disc = square(4);
+  const Discretization<2> disc = square(4);
   const SparseMatrix& a = disc.problem().qp.A;
   ASSERT_GT(a.cols(), 20000);
   std::mt19937 rng(3);
@@ -188,7 +188,7 @@ TEST(ParallelParts, EntryBalancedSharesCoverEveryColumnOnce) {
 }
 
 TEST(ParallelParts, PatchBlocksShareNoEntryAndSplitTheWorkEvenly) {
-  const Discretization disc = square();
+  const Discretization<2> disc = square();
   const LevelHierarchy h = disc.build_level_hierarchy();
   const Level& level = h.levels.back();
   const auto [end0, end1] = level.patch_split;
@@ -224,14 +224,14 @@ TEST(ParallelParts, PatchBlocksShareNoEntryOnEveryLevelSweptOnTwoThreads) {
   // Coarse levels are swept on two threads too once both blocks reach kMinParallelPatches; their
   // matrices are Galerkin products (truncation only removes entries), so the blocks must be
   // independent in P_jᵀ A P_j, not only in the finest A.
-  const Discretization disc = square();
+  const Discretization<2> disc = square();
   const LevelHierarchy h = disc.build_level_hierarchy();
   const int checked = levels_with_independent_blocks(h, disc.problem().qp.A);
   EXPECT_GE(checked, 3) << "the finest level and at least two coarse levels";
 }
 
 TEST(ParallelParts, TwoThreadPatchSweepIsTheSerialSweep) {
-  const Discretization disc = square();
+  const Discretization<2> disc = square();
   const LevelHierarchy h = disc.build_level_hierarchy();
   const BoxQp& qp = disc.problem().qp;
   const Level& level = h.levels.back();
@@ -258,7 +258,7 @@ TEST(ParallelParts, TwoThreadPatchSweepIsTheSerialSweep) {
 TEST(ParallelParts, ThreeDPatchBlocksShareNoEntryAndTheTwoThreadSweepIsTheSerialOne) {
   // The 3D Signorini block at refinements 3 (159k DOFs): the same split, on the tetrahedra's
   // vertex graph, on every level swept on two threads.
-  const TetDiscretization disc(build_tet_hierarchy(make_box({2, 2, 2}), 3),
+  const Discretization<3> disc(build_tet_hierarchy(make_box({2, 2, 2}), 3),
                                testing::signorini_block(1.0));
   const LevelHierarchy h = disc.build_level_hierarchy();
   const int checked = levels_with_independent_blocks(h, disc.problem().qp.A);

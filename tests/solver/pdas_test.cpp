@@ -27,7 +27,7 @@ TEST(Pdas, MatchesEnumerationOnAnAssembledContactProblem) {
   for (const bool curved_gap : {true, false}) {
     const ProblemData<2> data =
         curved_gap ? testing::signorini_square(1.0) : testing::flat_square(1.0);
-    const Discretization disc(build_mesh_hierarchy(make_square({.size = 0.25}), 0), data);
+    const Discretization<2> disc(build_mesh_hierarchy(make_square({.size = 0.25}), 0), data);
     const BoxQp& qp = disc.problem().qp;
     int bounded = 0;
     for (int i = 0; i < qp.size(); ++i) bounded += is_bounded_above(qp.upper[i]);

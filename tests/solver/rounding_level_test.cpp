@@ -70,8 +70,8 @@ TEST(RoundingLevel, TheLevelIsTheRoundingOfTheResidual) {
   // ρ(x) = u ‖|A||x| + |b|‖ (u = 2⁻⁵³) against the actual rounding of the residual the solver
   // computes (symmetric_multiply, then b − A x) at an iterate-like x: the error against the same
   // residual accumulated in long double is below ρ, and not zero.
-  const Discretization disc(build_mesh_hierarchy(make_square({.size = 0.25}), 3),
-                            testing::signorini_square(1.0));
+  const Discretization<2> disc(build_mesh_hierarchy(make_square({.size = 0.25}), 3),
+                               testing::signorini_square(1.0));
   const BoxQp& qp = disc.problem().qp;
   Vector x(qp.size());
   for (int i = 0; i < x.size(); ++i) x[i] = std::sin(0.37 * i);

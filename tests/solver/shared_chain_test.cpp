@@ -20,8 +20,8 @@ bool identical(const SparseMatrix& a, const SparseMatrix& b) {
 }
 
 TEST(SharedChain, ATruncatingCycleLeavesTheChainAsItFoundIt) {
-  const Discretization disc(build_mesh_hierarchy(make_hertz({.size = 0.1}), 3),
-                            testing::hertz(1.0));
+  const Discretization<2> disc(build_mesh_hierarchy(make_hertz({.size = 0.1}), 3),
+                               testing::hertz(1.0));
   const LevelHierarchy h = disc.build_level_hierarchy();
   const BoxQp& qp = disc.problem().qp;
   auto chain = std::make_shared<GalerkinChain>(galerkin_chain(qp.A, h));
@@ -54,8 +54,8 @@ TEST(SharedChain, AChainFormedOnlyAtTheTopIsCompletedWhenACycleNeedsIt) {
   // runs untruncated (here the obstacle is moved away, so no bound is ever reached) forms the
   // rest on demand, and must produce the iterates, and leave the chain, of one given the whole
   // chain.
-  const Discretization disc(build_mesh_hierarchy(make_hertz({.size = 0.1}), 3),
-                            testing::hertz(1.0));
+  const Discretization<2> disc(build_mesh_hierarchy(make_hertz({.size = 0.1}), 3),
+                               testing::hertz(1.0));
   const LevelHierarchy h = disc.build_level_hierarchy();
   BoxQp qp = disc.problem().qp;
   for (int i = 0; i < qp.size(); ++i)

@@ -58,15 +58,15 @@ void expect_monotone(const BoxQp& qp, const Sweep& sweep, const char* name) {
 class Smoothers : public ::testing::TestWithParam<bool> {
  protected:
   Smoothers()
-      : disc_(GetParam() ? Discretization(build_mesh_hierarchy(make_hertz({.size = 0.2}), 1),
-                                          testing::hertz(1.0))
-                         : Discretization(build_mesh_hierarchy(make_square({.size = 0.25}), 1),
-                                          testing::signorini_square(1.0))),
+      : disc_(GetParam() ? Discretization<2>(build_mesh_hierarchy(make_hertz({.size = 0.2}), 1),
+                                             testing::hertz(1.0))
+                         : Discretization<2>(build_mesh_hierarchy(make_square({.size = 0.25}), 1),
+                                             testing::signorini_square(1.0))),
         hierarchy_(disc_.build_level_hierarchy()) {}
   const BoxQp& qp() const { return disc_.problem().qp; }
   const Level& finest() const { return hierarchy_.levels.back(); }
 
-  Discretization disc_;
+  Discretization<2> disc_;
   LevelHierarchy hierarchy_;
 };
 

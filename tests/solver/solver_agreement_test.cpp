@@ -21,7 +21,7 @@ struct Solved {
   SolverReport report;
 };
 
-Solved run(const Discretization& disc, const LevelHierarchy& h, SolverMethod m, int max_it) {
+Solved run(const Discretization<2>& disc, const LevelHierarchy& h, SolverMethod m, int max_it) {
   SolverOptions o;
   o.method = m;
   o.tolerance = 1e-12;
@@ -41,7 +41,7 @@ double energy_distance(const BoxQp& qp, const Vector& a, const Vector& b) {
   return std::sqrt(d.dot(ad) / b.dot(ab));
 }
 
-void check_agreement(const Discretization& disc, std::vector<SolverMethod> methods) {
+void check_agreement(const Discretization<2>& disc, std::vector<SolverMethod> methods) {
   const LevelHierarchy h = disc.build_level_hierarchy();
   const auto& qp = disc.problem().qp;
   const Solved ref = run(disc, h, SolverMethod::kPdas, 50);
@@ -56,18 +56,18 @@ void check_agreement(const Discretization& disc, std::vector<SolverMethod> metho
   }
 }
 
-Discretization square(double lambda, int refinements) {
-  return Discretization(build_mesh_hierarchy(make_square({.size = 0.25}), refinements),
-                        testing::signorini_square(lambda));
+Discretization<2> square(double lambda, int refinements) {
+  return Discretization<2>(build_mesh_hierarchy(make_square({.size = 0.25}), refinements),
+                           testing::signorini_square(lambda));
 }
-Discretization hertz(double lambda, int refinements) {
-  return Discretization(build_mesh_hierarchy(make_hertz({.size = 0.1}), refinements),
-                        testing::hertz(lambda));
+Discretization<2> hertz(double lambda, int refinements) {
+  return Discretization<2>(build_mesh_hierarchy(make_hertz({.size = 0.1}), refinements),
+                           testing::hertz(lambda));
 }
 
 /// `refinements` uniform levels, then four adaptive bisection steps.
-Discretization adapted(const ProblemData<2>& data, Mesh coarse, int refinements) {
-  return Discretization(
+Discretization<2> adapted(const ProblemData<2>& data, Mesh coarse, int refinements) {
+  return Discretization<2>(
       testing::adapted_hierarchy(build_mesh_hierarchy(std::move(coarse), refinements), data, 4),
       data);
 }

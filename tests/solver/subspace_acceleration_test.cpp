@@ -48,8 +48,8 @@ SweepRun sweep_until(const BoxQp& qp, const Level& finest, bool accelerate, doub
 
 TEST(SubspaceAcceleration, KeepsPatchSweepsFeasibleAndMonotoneAndNeedsFarFewer) {
   for (double lambda : {1.0, std::numeric_limits<double>::infinity()}) {
-    const Discretization disc(build_mesh_hierarchy(make_square({.size = 0.25}), 1),
-                              testing::signorini_square(lambda));
+    const Discretization<2> disc(build_mesh_hierarchy(make_square({.size = 0.25}), 1),
+                                 testing::signorini_square(lambda));
     const BoxQp& qp = disc.problem().qp;
     const LevelHierarchy hierarchy = disc.build_level_hierarchy();
     const SweepRun plain = sweep_until(qp, hierarchy.levels.back(), false, 1e-6, 20000);

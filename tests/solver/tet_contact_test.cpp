@@ -10,7 +10,7 @@
 
 #include "../sweep_checks.hpp"
 #include "../tet_problems.hpp"
-#include "assembly/tet_hierarchy.hpp"
+#include "assembly/discretization.hpp"
 #include "solvers/solve_loop.hpp"
 
 namespace fosls {
@@ -20,7 +20,7 @@ class TetContact : public ::testing::TestWithParam<double> {};
 
 TEST_P(TetContact, MonotoneFeasibleAndEqualToPdas) {
   for (int r = 1; r <= 2; ++r) {
-    const TetDiscretization disc(build_tet_hierarchy(make_box({2, 2, 2}), r),
+    const Discretization<3> disc(build_tet_hierarchy(make_box({2, 2, 2}), r),
                                  testing::signorini_block(GetParam()));
     const BoxQp& qp = disc.problem().qp;
     const LevelHierarchy h = disc.build_level_hierarchy();

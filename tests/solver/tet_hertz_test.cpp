@@ -9,7 +9,7 @@
 
 #include "../sweep_checks.hpp"
 #include "../tet_problems.hpp"
-#include "assembly/tet_hierarchy.hpp"
+#include "assembly/discretization.hpp"
 #include "mesh/tet_half_ball.hpp"
 #include "mesh/tet_quality.hpp"
 #include "solvers/solve_loop.hpp"
@@ -81,7 +81,7 @@ TEST(TetHertzLinks, EachQuarterCanMoveItsFluxOntoItsPartnerInsideTheCoarseTetrah
   // truncated, the coarse S_n's share on it moves onto the other quarter, carried by the σ DOFs
   // of the fine faces inside the coarse tetrahedron (eight faces, three rows each); when both
   // are, onto a free quarter of the partner pair.
-  const TetDiscretization disc(build_tet_hierarchy(make_half_ball({.cells = 2, .grading = 3}), 1),
+  const Discretization<3> disc(build_tet_hierarchy(make_half_ball({.cells = 2, .grading = 3}), 1),
                                testing::hertz_half_ball(1.0));
   const LevelHierarchy h = disc.build_level_hierarchy();
   int pairs = 0;
@@ -120,7 +120,7 @@ class TetHertz : public ::testing::TestWithParam<double> {};
 TEST_P(TetHertz, MonotoneFeasibleAndEqualToPdasOnTheSphere) {
   // Contact normals differ between levels on a sphere: the coarse corrections must still keep J
   // non-increasing and every iterate feasible.
-  const TetDiscretization disc(build_tet_hierarchy(make_half_ball({.cells = 2, .grading = 3}), 1),
+  const Discretization<3> disc(build_tet_hierarchy(make_half_ball({.cells = 2, .grading = 3}), 1),
                                testing::hertz_half_ball(GetParam()));
   const BoxQp& qp = disc.problem().qp;
   const LevelHierarchy h = disc.build_level_hierarchy();
@@ -143,7 +143,7 @@ INSTANTIATE_TEST_SUITE_P(Lambda, TetHertz,
 TEST(TetHertzForce, TwoRefinementsApproachTheFinestMeshFromAboveWithNoLateralForce) {
   // Refinements 1–4 gave F_z = 0.0040056, 0.0039712, 0.0038804, 0.0037693 (5.1M unknowns):
   // decreasing towards Hertz's 0.0035556, not yet converged (docs/validation.md §16).
-  const TetDiscretization disc(build_tet_hierarchy(make_half_ball({.cells = 2, .grading = 3}), 2),
+  const Discretization<3> disc(build_tet_hierarchy(make_half_ball({.cells = 2, .grading = 3}), 2),
                                testing::hertz_half_ball(1.0));
   Vector x = Vector::Zero(disc.problem().qp.size());
   const SolverReport mmg =

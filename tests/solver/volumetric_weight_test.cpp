@@ -27,8 +27,8 @@ ProblemData<2> hertz_with(double lambda, double volumetric) {
 
 TEST(VolumetricWeight, TheMatrixAndTheFunctionalAgree) {
   for (double lambda : {1.0, std::numeric_limits<double>::infinity()}) {
-    const Discretization disc(build_mesh_hierarchy(make_hertz({.size = 0.1}), 1),
-                              hertz_with(lambda, 2.5));
+    const Discretization<2> disc(build_mesh_hierarchy(make_hertz({.size = 0.1}), 1),
+                                 hertz_with(lambda, 2.5));
     Vector x;
     SolverOptions options;
     options.method = SolverMethod::kPdas;
@@ -45,7 +45,7 @@ TEST(VolumetricWeight, TheFunctionalIsAffineInTheWeight) {
   std::vector<double> j;
   Vector x_full;
   for (double v : {1.0, 2.0, 3.0, 0.5}) {
-    const Discretization disc(meshes, hertz_with(1.0, v));
+    const Discretization<2> disc(meshes, hertz_with(1.0, v));
     if (x_full.size() == 0) {  // the plain functional's solution, evaluated under every weight
       Vector x;
       SolverOptions options;

@@ -18,7 +18,7 @@ constexpr double kInf = std::numeric_limits<double>::infinity();
 
 bool is_definite(const MeshHierarchy& meshes, ProblemData<2> data, double c3) {
   data.weights.c3 = c3;
-  Discretization disc(meshes, std::move(data));
+  Discretization<2> disc(meshes, std::move(data));
   Eigen::CholmodSupernodalLLT<SparseMatrix> llt(disc.problem().qp.A);
   return llt.info() == Eigen::Success;
 }

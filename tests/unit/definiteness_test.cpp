@@ -16,7 +16,7 @@ namespace {
 
 constexpr double kInf = std::numeric_limits<double>::infinity();
 
-bool cholmod_llt_succeeds(const Discretization& disc) {
+bool cholmod_llt_succeeds(const Discretization<2>& disc) {
   Eigen::CholmodSupernodalLLT<SparseMatrix> llt(disc.problem().qp.A);
   return llt.info() == Eigen::Success;
 }
@@ -24,9 +24,9 @@ bool cholmod_llt_succeeds(const Discretization& disc) {
 TEST(Definiteness, DefaultWeightsGiveSpdMatricesOnTheBenchmarks) {
   for (double lambda : {1.0, kInf}) {
     for (int r : {0, 2}) {
-      Discretization sq(build_mesh_hierarchy(make_square({.size = 0.25}), r),
-                        testing::signorini_square(lambda));
-      Discretization hz(build_mesh_hierarchy(make_hertz({}), r), testing::hertz(lambda));
+      Discretization<2> sq(build_mesh_hierarchy(make_square({.size = 0.25}), r),
+                           testing::signorini_square(lambda));
+      Discretization<2> hz(build_mesh_hierarchy(make_hertz({}), r), testing::hertz(lambda));
       EXPECT_TRUE(cholmod_llt_succeeds(sq)) << "square lambda=" << lambda << " r=" << r;
       EXPECT_TRUE(cholmod_llt_succeeds(hz)) << "hertz lambda=" << lambda << " r=" << r;
       EXPECT_TRUE(contact_layer_is_definite(sq.finest_space(), sq.problem().qp));
@@ -39,7 +39,7 @@ TEST(Definiteness, ChecksAgreeWithCholmodOnTheFinestMatrix) {
   for (double c3 : {0.2, 0.35, 2.0}) {
     ProblemData<2> d = testing::signorini_square(1.0);
     d.weights.c3 = c3;
-    Discretization sq(build_mesh_hierarchy(make_square({.size = 0.25}), 3), d);
+    Discretization<2> sq(build_mesh_hierarchy(make_square({.size = 0.25}), 3), d);
     const bool definite = cholmod_llt_succeeds(sq);
     EXPECT_EQ(definite, c3 < 0.26) << c3;  // the measured limit is ≈ 0.26 at 4 levels
     // The Galerkin check on a 2-level-coarser matrix decides the same way.

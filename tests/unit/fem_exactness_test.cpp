@@ -58,7 +58,7 @@ TEST(Exactness, ProlongationOfACoarseInterpolantIsTheFineInterpolant) {
   for (int j = 1; j < h.num_levels(); ++j) {
     FoslsSpace<2> coarse(h.meshes[j - 1], neumann_everywhere(h.meshes[j - 1]));
     FoslsSpace<2> fine(h.meshes[j], neumann_everywhere(h.meshes[j]));
-    SparseMatrix p = cartesian_prolongation(h.meshes[j - 1], h.meshes[j], h.maps[j]);
+    SparseMatrix p = cartesian_prolongation<2>(h.meshes[j - 1], h.meshes[j], h.maps[j]);
     Vector diff = p * interpolate(coarse) - interpolate(fine);
     EXPECT_LT(diff.lpNorm<Eigen::Infinity>(), 1e-12);
   }
@@ -76,7 +76,7 @@ TEST(Exactness, ProlongationOnBisectedMeshesIsExact) {
     Bisection b = refine_by_bisection(mesh, state, marked);
     FoslsSpace<2> coarse(mesh, neumann_everywhere(mesh));
     FoslsSpace<2> fine(b.fine, neumann_everywhere(b.fine));
-    SparseMatrix p = cartesian_prolongation(mesh, b.fine, b.maps);
+    SparseMatrix p = cartesian_prolongation<2>(mesh, b.fine, b.maps);
     Vector diff = p * interpolate(coarse) - interpolate(fine);
     EXPECT_LT(diff.lpNorm<Eigen::Infinity>(), 1e-12) << "step " << step;
     for (int f = 0; f < b.fine.num_edges(); ++f)

@@ -10,15 +10,15 @@ namespace fosls {
 namespace {
 
 TEST(Invariants, HierarchyOfADiscretizationIsConsistent) {
-  Discretization disc(build_mesh_hierarchy(make_square({.size = 0.5}), 2),
-                      testing::signorini_square(1.0));
+  Discretization<2> disc(build_mesh_hierarchy(make_square({.size = 0.5}), 2),
+                         testing::signorini_square(1.0));
   const LevelHierarchy h = disc.build_level_hierarchy();
   EXPECT_EQ(hierarchy_inconsistency(h, disc.problem().qp.size()), "");
 }
 
 TEST(Invariants, BrokenHierarchiesAreNamed) {
-  Discretization disc(build_mesh_hierarchy(make_square({.size = 0.5}), 2),
-                      testing::signorini_square(1.0));
+  Discretization<2> disc(build_mesh_hierarchy(make_square({.size = 0.5}), 2),
+                         testing::signorini_square(1.0));
   const int n = disc.problem().qp.size();
   LevelHierarchy h = disc.build_level_hierarchy();
   EXPECT_NE(hierarchy_inconsistency(h, n + 1).find("finest level's size"), std::string::npos);

@@ -6,7 +6,7 @@
 #include <cstdio>
 #include <random>
 
-#include "assembly/tet_hierarchy.hpp"
+#include "fem/transfer.hpp"
 #include "tet_bisection_meshes.hpp"
 
 namespace fosls {
@@ -204,7 +204,8 @@ TEST(TetBisection, ProlongationIsExactOnLinearDisplacementsAndConstantStresses) 
     return x;
   };
   const Eigen::VectorXd fine_exact = dofs(fine);
-  const Eigen::VectorXd prolonged = tet_prolongation(coarse, fine, step.maps) * dofs(coarse);
+  const Eigen::VectorXd prolonged =
+      cartesian_prolongation<3>(coarse, fine, step.maps) * dofs(coarse);
   EXPECT_LT((prolonged - fine_exact).lpNorm<Eigen::Infinity>(), 1e-14);
 }
 

@@ -53,7 +53,7 @@ TEST(TetMshReader, ReadsGmshsCubeRefinesAndSolvesContact) {
     EXPECT_NEAR(c[g / 2], g % 2, 1e-12) << "face in group " << coarse.group_names()[g];
   }
   // The 3D Signorini block on gmsh's mesh: the same problem as on make_box's.
-  const TetDiscretization disc(build_tet_hierarchy(coarse, 1), testing::signorini_block(1.0));
+  const Discretization<3> disc(build_tet_hierarchy(coarse, 1), testing::signorini_block(1.0));
   const testing::MmgAndPdas s =
       testing::solve_with_mmg_and_pdas(disc, disc.build_level_hierarchy());
   EXPECT_TRUE(s.mmg.converged);

@@ -36,7 +36,7 @@ std::vector<std::string> array_names(const std::string& vtu) {
   return names;
 }
 
-Vector solved(const TetDiscretization& disc) {
+Vector solved(const Discretization<3>& disc) {
   Vector x = Vector::Zero(disc.problem().qp.size());
   SolverOptions options;
   options.tolerance = 1e-12;
@@ -54,7 +54,7 @@ TEST(TetVtuWriter, ALinearFieldComesBackExactly) {
     for (int c = 0; c < 3; ++c)
       g.values[c] = testing::of_point([c, strain](const Point3& x) { return strain[c] * x[c]; });
   }
-  const TetDiscretization disc(build_tet_hierarchy(make_box({2, 2, 2}), 1), std::move(d));
+  const Discretization<3> disc(build_tet_hierarchy(make_box({2, 2, 2}), 1), std::move(d));
   const std::string vtu =
       write_tet_vtu(disc.assembler(), disc.problem(), solved(disc), VtuEncoding::kAscii);
   const TetMesh& mesh = disc.meshes().finest();
@@ -86,7 +86,7 @@ TEST(TetVtuWriter, ALinearFieldComesBackExactly) {
 }
 
 TEST(TetVtuWriter, ContactArraysAndTheBinaryFile) {
-  const TetDiscretization disc(build_tet_hierarchy(make_box({2, 2, 2}), 1),
+  const Discretization<3> disc(build_tet_hierarchy(make_box({2, 2, 2}), 1),
                                testing::signorini_block(1.0));
   const Vector x = solved(disc);
   const std::string vtu = write_tet_vtu(disc.assembler(), disc.problem(), x, VtuEncoding::kAscii);

@@ -28,7 +28,8 @@ namespace {
 
 using fosls::testing::CornerSolution;
 
-nlohmann::json row_of(const fosls::Discretization& disc, const fosls::testing::MeasuredSolve& m) {
+nlohmann::json row_of(const fosls::Discretization<2>& disc,
+                      const fosls::testing::MeasuredSolve& m) {
   const double estimator = std::sqrt(m.parts.total());
   return {{"dofs", disc.problem().qp.size()},
           {"triangles", disc.meshes().finest().num_triangles()},
@@ -97,7 +98,7 @@ int main(int argc, char** argv) {
       {"adaptive", nlohmann::json::array()}};
 
   for (int r = 0; r < o.levels; ++r) {
-    const fosls::Discretization disc(fosls::build_mesh_hierarchy(coarse, r), data);
+    const fosls::Discretization<2> disc(fosls::build_mesh_hierarchy(coarse, r), data);
     out["uniform"].push_back(row_of(disc, fosls::testing::measure_linear_solve(disc, exact)));
   }
 
@@ -105,7 +106,7 @@ int main(int argc, char** argv) {
   fosls::MeshHierarchy meshes = fosls::build_mesh_hierarchy(coarse, 0);
   fosls::BisectionState state = fosls::longest_edge_state(meshes.finest());
   for (;;) {
-    const fosls::Discretization disc(meshes, data);
+    const fosls::Discretization<2> disc(meshes, data);
     const fosls::testing::MeasuredSolve m = fosls::testing::measure_linear_solve(disc, exact);
     nlohmann::json row = row_of(disc, m);
     const bool last = disc.problem().qp.size() > o.max_dofs;

@@ -43,7 +43,7 @@ double quantile(std::vector<double> v, double q) {
 
 nlohmann::json level_row(const SmoothSolution& sol, double lambda, double size, int refinements,
                          bool with_elements) {
-  fosls::Discretization disc(
+  fosls::Discretization<2> disc(
       fosls::build_mesh_hierarchy(fosls::make_square({.size = size}), refinements),
       sol.problem(lambda));
   const auto& p = disc.problem();

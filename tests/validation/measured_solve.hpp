@@ -25,7 +25,8 @@ struct MeasuredSolve {
 
 /// Solves the discrete problem with CHOLMOD (exactly, so no algebraic error enters) and
 /// measures it against `exact`.
-inline MeasuredSolve measure_linear_solve(const Discretization& disc, const ExactSolution& exact) {
+inline MeasuredSolve measure_linear_solve(const Discretization<2>& disc,
+                                          const ExactSolution& exact) {
   const auto& p = disc.problem();
   Eigen::CholmodSupernodalLLT<SparseMatrix> llt(p.qp.A);
   if (llt.info() != Eigen::Success) throw std::runtime_error("CHOLMOD factorisation failed");

@@ -29,7 +29,8 @@ std::vector<Row> convergence_table(double lambda) {
   testing::SmoothSolution sol;
   std::vector<Row> rows;
   for (int r = 1; r <= 5; ++r) {
-    Discretization disc(build_mesh_hierarchy(make_square({.size = 0.5}), r), sol.problem(lambda));
+    Discretization<2> disc(build_mesh_hierarchy(make_square({.size = 0.5}), r),
+                           sol.problem(lambda));
     const auto& p = disc.problem();
     Eigen::CholmodSupernodalLLT<SparseMatrix> llt(p.qp.A);
     EXPECT_EQ(llt.info(), Eigen::Success);

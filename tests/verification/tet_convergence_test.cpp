@@ -10,7 +10,7 @@
 #include <limits>
 
 #include "../tet_problems.hpp"
-#include "assembly/tet_hierarchy.hpp"
+#include "assembly/discretization.hpp"
 #include "fem/simplex_element.hpp"
 #include "solvers/solve_loop.hpp"
 
@@ -100,7 +100,7 @@ std::pair<double, double> error_norms(const FoslsSpace<3>& space, const Vector& 
 std::vector<Row> convergence_table(double lambda, int finest) {
   std::vector<Row> rows;
   for (int r = 1; r <= finest; ++r) {
-    const TetDiscretization disc(build_tet_hierarchy(make_box({2, 2, 2}), r),
+    const Discretization<3> disc(build_tet_hierarchy(make_box({2, 2, 2}), r),
                                  SmoothSolution3::problem(lambda));
     const AssembledProblem& p = disc.problem();
     Eigen::CholmodSupernodalLLT<SparseMatrix> llt(p.qp.A);
