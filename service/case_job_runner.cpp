@@ -1,8 +1,5 @@
 #include "case_job_runner.hpp"
 
-#include "case/case3d_admission.hpp"
-#include "case/case3d_reader.hpp"
-#include "case/case3d_runner.hpp"
 #include "case/case_admission.hpp"
 #include "case/case_reader.hpp"
 #include "case/case_runner.hpp"
@@ -43,8 +40,7 @@ std::function<std::vector<CaseError>(const nlohmann::json&)> submitted_case_vali
       options.limits.max_memory_bytes = static_cast<double>(now.bytes);
       options.limits.memory_budget_name = now.name;
     }
-    return is_3d_case(case_json) ? admit_case_3d(case_json, options).errors
-                                 : admit_case(case_json, options).errors;
+    return admit_case(case_json, options).errors;
   };
 }
 
@@ -54,13 +50,9 @@ JobTimeLimit job_time_limit(const nlohmann::json& case_json, double max_job_seco
   if (max_job_seconds <= 0) return limit;
   // The estimate admission made (the same rule and count; no gmsh): cheap next to a solve.
   std::optional<double> estimate;
-  if (is_3d_case(case_json)) {
-    const Case3dAdmission admission = admit_case_3d(case_json, service_read_options(0));
-    if (admission.estimate) estimate = admission.estimate->seconds;
-  } else if (const CaseAdmission admission = admit_case(case_json, service_read_options(0));
-             admission.time) {
+  if (const CaseAdmission admission = admit_case(case_json, service_read_options(0));
+      admission.time)
     estimate = admission.time->seconds;
-  }
   if (estimate) limit.estimate_seconds = *estimate;
   limit.seconds = estimate ? job_time_limit_seconds(*estimate, max_job_seconds) : max_job_seconds;
   return limit;
@@ -111,31 +103,10 @@ std::function<void(const IterationRecord&)> progress_reporter(JobProgress& progr
   };
 }
 
-/// A 3D case (case3d_runner.hpp): one solve, its iterations reported as the 2D case's are.
-JobRunOutcome run_3d_case_job(const nlohmann::json& case_json, const JobRunContext& context,
-                              std::size_t job_memory_bytes) {
-  const CaseReadOptions options = service_read_options(job_memory_bytes);
-  Case3dReadResult read = read_case_3d(case_json, options);
-  if (!read.spec) return failed("invalid case: " + describe(read.errors));
-  JobProgress progress;
-  progress.steps = 1;  // one solve: no "step 1 of …" in the job's progress
-  Run3dControl control;
-  control.cancel = &context.cancel;
-  control.want_vtu = true;
-  control.on_iteration = progress_reporter(progress, context);
-  try {
-    Run3dOutput output = run_case_3d(*read.spec, control, options.limits);
-    return finished(output.cancelled, output.result, std::move(output.vtu));
-  } catch (const CaseException& e) {
-    return failed("invalid case: " + describe(e.errors()));
-  }
-}
-
 }  // namespace
 
 JobRunOutcome run_case_job(const nlohmann::json& case_json, const JobRunContext& context,
                            std::size_t job_memory_bytes) {
-  if (is_3d_case(case_json)) return run_3d_case_job(case_json, context, job_memory_bytes);
   const CaseReadOptions options = service_read_options(job_memory_bytes);
   CaseReadResult read = read_case(case_json, options);
   // Only reachable if validation rules changed between submit and run (e.g. an upgrade).

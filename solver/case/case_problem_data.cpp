@@ -11,10 +11,11 @@ namespace {
 
 RigidObstacle rigid_obstacle(const Obstacle& o) {
   RigidObstacle r;
-  r.kind = o.kind == Obstacle::Kind::kPlane    ? RigidObstacle::Kind::kPlane
-           : o.kind == Obstacle::Kind::kCircle ? RigidObstacle::Kind::kCircle
-                                               : RigidObstacle::Kind::kGap;
-  r.point = o.point, r.normal = o.normal, r.center = o.center, r.radius = o.radius;
+  r.kind = o.kind == Obstacle::Kind::kPlane  ? RigidObstacle::Kind::kPlane
+           : o.kind == Obstacle::Kind::kBall ? RigidObstacle::Kind::kCircle
+                                             : RigidObstacle::Kind::kGap;
+  r.point = o.point.head<2>(), r.normal = o.normal.head<2>(), r.center = o.center.head<2>();
+  r.radius = o.radius;
   return r;
 }
 
