@@ -98,41 +98,6 @@ compose_containers() { # SERVICE -> container names
     --filter "label=com.docker.compose.service=$1" --format '{{.Names}}' | sort
 }
 
-# transition_jobs LOG FROM TO: the job ids of a service log's job_transition lines FROM -> TO.
-transition_jobs() {
-  python3 - "$@" <<'PY'
-import json, sys
-for line in open(sys.argv[1], errors="replace"):
-    try:
-        event = json.loads(line)
-    except ValueError:
-        continue
-    if isinstance(event, dict) and event.get("event") == "job_transition" \
-            and event.get("from") == sys.argv[2] and event.get("to") == sys.argv[3]:
-        print(event["job_id"])
-PY
-}
-
-# Waits until CONTAINER's log shows a job it started and has not finished.
-wait_running_in() { # CONTAINER SECONDS
-  local deadline=$((SECONDS + $2))
-  until "${engine[@]}" logs "$1" 2>&1 | python3 -c '
-import json, sys
-running = set()
-for line in sys.stdin:
-    try:
-        e = json.loads(line)
-    except ValueError:
-        continue
-    if not isinstance(e, dict) or e.get("event") != "job_transition":
-        continue
-    (running.add if e.get("to") == "running" else running.discard)(e.get("job_id"))
-sys.exit(0 if running else 1)'; do
-    ((SECONDS < deadline)) || fail "$1 started no job in $2 s"
-    sleep 0.2
-  done
-}
-
 # Every job succeeded, the workers' logs store each one's success exactly once, and the API
 # lists exactly these jobs.
 check_succeeded_once() { # API SCRATCH IDS...

@@ -29,8 +29,8 @@ std::string describe(const std::vector<CaseError>& errors) {
 }
 }  // namespace
 
-std::function<std::vector<CaseError>(const nlohmann::json&)> submitted_case_validator(
-    std::function<MemoryBudget()> budget, double max_job_seconds) {
+CaseValidator submitted_case_validator(std::function<MemoryBudget()> budget,
+                                       double max_job_seconds) {
   return [budget = std::move(budget), max_job_seconds](const nlohmann::json& case_json) {
     CaseReadOptions options = service_read_options(0);
     options.limits.max_seconds = max_job_seconds;
@@ -40,36 +40,42 @@ std::function<std::vector<CaseError>(const nlohmann::json&)> submitted_case_vali
       options.limits.max_memory_bytes = static_cast<double>(now.bytes);
       options.limits.memory_budget_name = now.name;
     }
-    return admit_case(case_json, options).errors;
+    CaseVerdict verdict;
+    CaseAdmission admission = admit_case(case_json, options);
+    verdict.errors = std::move(admission.errors);
+    if (admission.time && verdict.errors.empty())
+      verdict.estimate_seconds = admission.time->seconds;
+    return verdict;
   };
 }
 
-JobTimeLimit job_time_limit(const nlohmann::json& case_json, double max_job_seconds) {
+JobTimeLimit job_time_limit(std::optional<double> estimate_seconds, double max_job_seconds) {
   JobTimeLimit limit;
   limit.cap_seconds = max_job_seconds;
   if (max_job_seconds <= 0) return limit;
-  // The estimate admission made (the same rule and count; no gmsh): cheap next to a solve.
-  std::optional<double> estimate;
-  if (const CaseAdmission admission = admit_case(case_json, service_read_options(0));
-      admission.time)
-    estimate = admission.time->seconds;
-  if (estimate) limit.estimate_seconds = *estimate;
-  limit.seconds = estimate ? job_time_limit_seconds(*estimate, max_job_seconds) : max_job_seconds;
+  limit.estimate_seconds = estimate_seconds;
+  limit.seconds = estimate_seconds ? job_time_limit_seconds(*estimate_seconds, max_job_seconds)
+                                   : max_job_seconds;
   return limit;
 }
 
 std::string JobTimeLimit::describe() const {
   char text[400];
-  if (seconds >= cap_seconds)
+  if (!estimate_seconds)
+    std::snprintf(text, sizeof text,
+                  "%g s, the most a job may run (the service's --max-job-seconds); the job was "
+                  "queued without a time estimate",
+                  seconds);
+  else if (seconds >= cap_seconds)
     std::snprintf(text, sizeof text,
                   "%g s, the most a job may run (the service's --max-job-seconds); the case was "
                   "estimated at %.3g s",
-                  seconds, estimate_seconds);
+                  seconds, *estimate_seconds);
   else
     std::snprintf(text, sizeof text,
                   "%g s, the time this job may run: %g times its estimate of %.3g s, at least "
                   "%g s (the service's --max-job-seconds %g s caps it)",
-                  seconds, kJobTimeMargin, estimate_seconds, kJobTimeFloorSeconds, cap_seconds);
+                  seconds, kJobTimeMargin, *estimate_seconds, kJobTimeFloorSeconds, cap_seconds);
   return text;
 }
 

@@ -5,11 +5,13 @@
 #include <cstddef>
 #include <functional>
 #include <nlohmann/json.hpp>
+#include <optional>
 #include <string>
 #include <vector>
 
 #include "admission_budget.hpp"
 #include "case/case_error.hpp"
+#include "case_verdict.hpp"
 #include "job_runner.hpp"
 
 namespace fosls::service {
@@ -22,19 +24,24 @@ namespace fosls::service {
 /// the field that sets its size.
 /// A case whose whole time estimate (case/job_time.hpp) exceeds `max_job_seconds` (0: none) is
 /// refused too, at the field that sets its time.
-std::function<std::vector<CaseError>(const nlohmann::json&)> submitted_case_validator(
-    std::function<MemoryBudget()> budget, double max_job_seconds = 0);
+/// Its verdict carries admission's time estimate of an admitted case.
+CaseValidator submitted_case_validator(std::function<MemoryBudget()> budget,
+                                       double max_job_seconds = 0);
 
 /// The wall-clock time one job may run: kJobTimeMargin times its case's time estimate, at least
 /// kJobTimeFloorSeconds, at most `max_job_seconds` (--max-job-seconds; 0: no limit at all).
 struct JobTimeLimit {
-  double seconds = 0;           ///< 0: none
-  double estimate_seconds = 0;  ///< the case's estimate (0 when it could not be made)
-  double cap_seconds = 0;       ///< --max-job-seconds
+  double seconds = 0;                      ///< 0: none
+  std::optional<double> estimate_seconds;  ///< the case's estimate, if admission made one
+  double cap_seconds = 0;                  ///< --max-job-seconds
   /// "60 s, the time this job may run (…)": the limit and how it was derived, for messages.
   std::string describe() const;
 };
-JobTimeLimit job_time_limit(const nlohmann::json& case_json, double max_job_seconds);
+/// From the estimate admission stored with the job (none: a job queued before estimates were
+/// stored, or one admission could not estimate; it gets the cap). Reads nothing of the case:
+/// what runs in the server between a claim and the solve process is short, so a cancel then
+/// takes effect at once.
+JobTimeLimit job_time_limit(std::optional<double> estimate_seconds, double max_job_seconds);
 
 /// Solves a case with read_case + run_case, honouring cancellation through RunControl::cancel
 /// and reporting every iteration. Case problems that only show while running (CaseException:

@@ -76,4 +76,45 @@ std::string gzip_decompress(std::string_view data) {
   return out;
 }
 
+std::uint32_t gzip_recorded_size(std::string_view trailer) {
+  if (trailer.size() < 4) throw StoreError("a gzip stream ends with its 4-byte size");
+  std::uint32_t size = 0;
+  for (int k = 3; k >= 0; --k)
+    size = (size << 8) | static_cast<unsigned char>(trailer[trailer.size() - 4 + k]);
+  return size;
+}
+
+struct GzipInflater::State {
+  z_stream z{};
+};
+
+GzipInflater::GzipInflater() : state_(std::make_unique<State>()) {
+  if (inflateInit2(&state_->z, kGzipWindowBits) != Z_OK)
+    throw StoreError("gzip: inflateInit2 failed");
+}
+
+GzipInflater::~GzipInflater() { inflateEnd(&state_->z); }
+
+void GzipInflater::feed(std::string piece) {
+  input_ = std::move(piece);
+  state_->z.next_in = reinterpret_cast<Bytef*>(input_.data());
+  state_->z.avail_in = static_cast<uInt>(input_.size());
+}
+
+bool GzipInflater::needs_input() const { return !finished_ && state_->z.avail_in == 0; }
+
+std::size_t GzipInflater::inflate_into(char* out, std::size_t capacity) {
+  if (finished_ || capacity == 0) return 0;
+  z_stream& z = state_->z;
+  z.next_out = reinterpret_cast<Bytef*>(out);
+  z.avail_out = static_cast<uInt>(std::min<std::size_t>(capacity, kPiece));
+  const uInt before = z.avail_out;
+  const int rc = inflate(&z, Z_NO_FLUSH);
+  if (rc == Z_STREAM_END)
+    finished_ = true;
+  else if (rc != Z_OK && rc != Z_BUF_ERROR)  // Z_BUF_ERROR: no input left, feed more
+    throw StoreError("stored artefact is not a valid gzip stream");
+  return before - z.avail_out;
+}
+
 }  // namespace fosls::service

@@ -9,12 +9,12 @@
 #include <sstream>
 
 #include "api_routes.hpp"
-#include "large_body.hpp"
 #include "openapi.hpp"
 #include "problem.hpp"
 #include "problem_catalogue.hpp"
 #include "request_checks.hpp"
 #include "static_files.hpp"
+#include "stored_body.hpp"
 #include "submission.hpp"
 
 namespace fosls::service {
@@ -434,8 +434,8 @@ void HttpApi::get_result(const Request& req, Response& res, std::int64_t id) {
   auto job = store_.find(id);
   if (!job) return not_found(req, res, id);
   if (has_result(*job)) {
-    if (auto text = store_.result_json(id)) {
-      res.set_content(*text, "application/json");
+    if (const auto bytes = store_.result_json_size(id)) {
+      set_stored_result_body(res, store_, id, *bytes);
       return;
     }
   }
@@ -446,10 +446,10 @@ void HttpApi::get_solution(const Request& req, Response& res, std::int64_t id) {
   auto job = store_.find(id);
   if (!job) return not_found(req, res, id);
   if (has_result(*job)) {
-    if (auto text = store_.vtu(id)) {
+    if (const auto stored = store_.stored_vtu(id)) {
       res.set_header("Content-Disposition",
                      "attachment; filename=\"job-" + std::to_string(id) + ".vtu\"");
-      set_large_body(req, res, std::move(*text), "application/xml");
+      set_stored_vtu_body(req, res, store_, id, *stored, "application/xml");
       return;
     }
   }

@@ -5,6 +5,7 @@
 #include <atomic>
 #include <functional>
 #include <nlohmann/json.hpp>
+#include <optional>
 #include <string>
 
 #include "job.hpp"
@@ -17,6 +18,8 @@ struct JobRunContext {
   const std::atomic<bool>& cancel;
   /// Report progress after each iteration (the worker throttles the database writes).
   std::function<void(const JobProgress&)> report_progress;
+  /// Admission's estimate of the solve's time, as stored with the job (none: not estimated).
+  std::optional<double> time_estimate_seconds = std::nullopt;
 };
 
 /// How one run ended.

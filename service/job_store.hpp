@@ -42,6 +42,9 @@ struct NewJob {
   std::string case_json;  ///< canonical JSON text of the case
   std::string body_hash;  ///< SHA-256 (hex) of case_json
   std::optional<std::string> idempotency_key;
+  /// Admission's estimate of the solve's time, kept so that the worker derives the job's time
+  /// limit from it instead of reading the case again (none: not estimated).
+  std::optional<double> time_estimate_seconds;
 };
 
 /// What a finished solve leaves to store.
@@ -52,6 +55,13 @@ struct SolveRecord {
   /// Empty: the job succeeded. Otherwise it fails for this reason although it has a result
   /// (a solve that did not converge under --fail-unconverged); the result is kept to look at.
   std::string error;
+};
+
+/// How a job's VTU is stored: gzip-compressed (every result since SQLite's schema 2) or as
+/// its text (older rows), and its stored size.
+struct StoredVtu {
+  bool gzip = false;
+  std::int64_t bytes = 0;
 };
 
 /// What submit did.
@@ -87,6 +97,7 @@ struct ClaimedJob {
   Job job;  ///< state running, attempts already counted
   std::string case_json;
   Lease lease;
+  std::optional<double> time_estimate_seconds;  ///< as submitted (NewJob)
 };
 
 /// What renewing a lease found.
@@ -147,8 +158,25 @@ class JobStore {
   /// Result JSON text of a succeeded job.
   virtual std::optional<std::string> result_json(std::int64_t id) = 0;
 
+  /// The size in bytes of a job's result JSON; nothing when there is none.
+  virtual std::optional<std::int64_t> result_json_size(std::int64_t id) = 0;
+
+  /// Up to `length` bytes of the result JSON from `offset` (fewer at its end), sent in such
+  /// parts as the VTU is (stored_vtu_bytes); nothing when the job or its result is gone.
+  virtual std::optional<std::string> result_json_bytes(std::int64_t id, std::int64_t offset,
+                                                       std::int64_t length) = 0;
+
   /// VTU text of a succeeded job.
   virtual std::optional<std::string> vtu(std::int64_t id) = 0;
+
+  /// How the VTU of a job with a result is stored; nothing when there is none.
+  virtual std::optional<StoredVtu> stored_vtu(std::int64_t id) = 0;
+
+  /// Up to `length` of the VTU's stored bytes from `offset` (fewer at its end): a response
+  /// streams the VTU in such parts instead of holding all of it per client. Nothing when the
+  /// job or its result is gone (deleted meanwhile).
+  virtual std::optional<std::string> stored_vtu_bytes(std::int64_t id, std::int64_t offset,
+                                                      std::int64_t length) = 0;
 
   /// The case as submitted (canonical JSON text).
   virtual std::optional<std::string> case_json(std::int64_t id) = 0;

@@ -112,6 +112,27 @@ void PostgresJobStore::migrate() {
   migrate_schema(*c, schema_steps(kSteps), hooks, "the PostgreSQL database");
 }
 
+std::optional<std::int64_t> PostgresJobStore::result_json_size(std::int64_t id) {
+  const SqlRows rows = connection()->query(
+      "SELECT octet_length(convert_to(result_json, 'UTF8')) AS bytes FROM job_results "
+      "WHERE job_id = ?1",
+      {id});
+  if (rows.empty()) return std::nullopt;
+  return rows[0].int64("bytes");
+}
+
+std::optional<std::string> PostgresJobStore::result_json_bytes(std::int64_t id, std::int64_t offset,
+                                                               std::int64_t length) {
+  // Each part converts the whole (compressed) text: results are small next to VTUs, which are
+  // stored uncompressed and read by the part (SqlJobStore::stored_vtu_bytes).
+  const SqlRows rows = connection()->query(
+      "SELECT substr(convert_to(result_json, 'UTF8'), ?2, ?3) AS part FROM job_results "
+      "WHERE job_id = ?1",
+      {id, offset + 1, length});
+  if (rows.empty()) return std::nullopt;
+  return rows[0].text("part");
+}
+
 void PostgresJobStore::serialize_submits(SqlConnection& c) {
   // Held until the submit commits: the queue count and the idempotency key check then see
   // every earlier submit, from any process, as SQLite's write lock guarantees.

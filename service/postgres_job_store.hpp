@@ -22,6 +22,10 @@ class PostgresJobStore final : public SqlJobStore {
   /// Connects with a libpq URL or connection string and brings the schema to the current
   /// version (several processes may start at once). Throws StoreError.
   explicit PostgresJobStore(std::string conninfo, int max_connections = 8);
+  /// In bytes of the text as UTF-8 (the column is text, whose substr counts characters).
+  std::optional<std::int64_t> result_json_size(std::int64_t id) override;
+  std::optional<std::string> result_json_bytes(std::int64_t id, std::int64_t offset,
+                                               std::int64_t length) override;
 
  protected:
   void serialize_submits(SqlConnection& c) override;

@@ -105,7 +105,8 @@ JobRunner process_job_runner(ProcessJobRunnerOptions options) {
     child.input = case_json.dump(-1, ' ', false, nlohmann::json::error_handler_t::replace);
     child.limits.address_space_bytes = options.memory_bytes + kSolveAddressSpaceHeadroom;
     child.limits.max_output_bytes = std::size_t{4} << 30;
-    const JobTimeLimit time = job_time_limit(case_json, options.max_job_seconds);
+    const JobTimeLimit time =
+        job_time_limit(context.time_estimate_seconds, options.max_job_seconds);
     child.limits.wall = std::chrono::milliseconds(static_cast<std::int64_t>(time.seconds * 1000));
     child.cancel = &context.cancel;
     child.on_output = [&reader](std::string_view data) { reader.feed(data); };

@@ -24,7 +24,8 @@ struct ProcessJobRunnerOptions {
   /// OpenMP and OpenBLAS threads of each solve process.
   int threads = 1;
   /// The most wall-clock time a job may run (--max-job-seconds); 0: no limit. Each job gets
-  /// job_time_limit(its case) within it (case_job_runner.hpp), and is killed at it.
+  /// job_time_limit(the estimate stored with it) within it (case_job_runner.hpp), and is killed
+  /// at it.
   double max_job_seconds = 0;
   /// The budget cases were admitted against (0: none, --admit-over-budget): the solve process
   /// checks the exact mesh against it once built and fails at once if it outgrew it.

@@ -82,6 +82,11 @@ CREATE TABLE worker_budgets (
 ALTER TABLE jobs ADD COLUMN progress_step INTEGER;
 ALTER TABLE jobs ADD COLUMN progress_steps INTEGER;
 )sql"},
+    // Admission's time estimate, from which workers derive the job's time limit without
+    // reading the case again (issue 50). Rows from before stay NULL: the cap applies.
+    {0, "the time estimate of each job", R"sql(
+ALTER TABLE jobs ADD COLUMN time_estimate_s DOUBLE PRECISION;
+)sql"},
 };
 
 /// Workers renew their declaration with their leases; one seen this recently still runs.
@@ -132,10 +137,11 @@ SubmitOutcome SqlJobStore::submit(const NewJob& job, std::size_t max_queued) {
     return out;  // rolls back: nothing was written
   }
   const SqlRows inserted = c->query(
-      "INSERT INTO jobs (name, state, case_json, idempotency_key, body_hash, created_at) "
-      "VALUES (?1, 'queued', ?2, ?3, ?4, {now_ms}) RETURNING " +
+      "INSERT INTO jobs (name, state, case_json, idempotency_key, body_hash, time_estimate_s, "
+      "created_at) VALUES (?1, 'queued', ?2, ?3, ?4, ?5, {now_ms}) RETURNING " +
           std::string(kJobColumns),
-      {job.name, job.case_json, sql_optional(job.idempotency_key), job.body_hash});
+      {job.name, job.case_json, sql_optional(job.idempotency_key), job.body_hash,
+       job.time_estimate_seconds ? SqlValue(*job.time_estimate_seconds) : SqlValue()});
   out.kind = SubmitOutcome::Kind::kCreated;
   out.job = read_job(inserted.at(0));
   tx.commit();
@@ -164,6 +170,24 @@ std::optional<std::string> SqlJobStore::vtu(std::int64_t id) {
   // Rows written before compression was introduced are kept as they were ('identity').
   if (rows[0].text("vtu_encoding") == "gzip") return gzip_decompress(rows[0].text("vtu"));
   return rows[0].text("vtu");
+}
+
+std::optional<StoredVtu> SqlJobStore::stored_vtu(std::int64_t id) {
+  // length() of a blob reads its size, not its bytes (SQLite and PostgreSQL alike).
+  const SqlRows rows = connection()->query(
+      "SELECT vtu_encoding, length(vtu) AS bytes FROM job_results WHERE job_id = ?1", {id});
+  if (rows.empty()) return std::nullopt;
+  return StoredVtu{rows[0].text("vtu_encoding") == "gzip", rows[0].int64("bytes")};
+}
+
+std::optional<std::string> SqlJobStore::stored_vtu_bytes(std::int64_t id, std::int64_t offset,
+                                                         std::int64_t length) {
+  // PostgreSQL reads only the TOAST chunks of the part (the column is stored uncompressed).
+  const SqlRows rows =
+      connection()->query("SELECT substr(vtu, ?2, ?3) AS part FROM job_results WHERE job_id = ?1",
+                          {id, offset + 1, length});
+  if (rows.empty()) return std::nullopt;
+  return rows[0].text("part");
 }
 
 JobPage SqlJobStore::list(const JobListQuery& query) {
@@ -260,7 +284,7 @@ std::optional<ClaimedJob> SqlJobStore::claim_next(const ClaimRequest& request) {
           std::string(kNoProgress) +
           " WHERE state = 'queued' AND id = (SELECT id FROM jobs WHERE state = 'queued' "
           "ORDER BY id LIMIT 1 {skip_locked}) RETURNING " +
-          kJobColumns + ", case_json",
+          kJobColumns + ", case_json, time_estimate_s",
       {request.worker_id, static_cast<std::int64_t>(request.lease_duration.count())});
   if (rows.empty()) return std::nullopt;  // another worker was faster
   tx.commit();
@@ -268,6 +292,8 @@ std::optional<ClaimedJob> SqlJobStore::claim_next(const ClaimRequest& request) {
   claimed.job = read_job(rows[0]);
   claimed.case_json = rows[0].text("case_json");
   claimed.lease = Lease{claimed.job.id, claimed.job.attempts, request.worker_id};
+  if (!rows[0].is_null("time_estimate_s"))
+    claimed.time_estimate_seconds = rows[0].real("time_estimate_s");
   return claimed;
 }
 

@@ -22,6 +22,10 @@ class SqlJobStore : public JobStore {
   std::optional<Job> find(std::int64_t id) override;
   std::optional<std::string> result_json(std::int64_t id) override;
   std::optional<std::string> vtu(std::int64_t id) override;
+  std::optional<StoredVtu> stored_vtu(std::int64_t id) override;
+  /// SQL's substr; the SQLite store reads only the part asked for (sqlite_job_store.hpp).
+  std::optional<std::string> stored_vtu_bytes(std::int64_t id, std::int64_t offset,
+                                              std::int64_t length) override;
   JobPage list(const JobListQuery& query) override;
   CancelOutcome cancel(std::int64_t id) override;
   DeleteOutcome remove(std::int64_t id) override;

@@ -1,5 +1,6 @@
 #include "sqlite_connection.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <string>
 
@@ -37,6 +38,55 @@ void SqliteConnection::exec(const std::string& sql) {
     if ((rc & 0xff) == SQLITE_FULL) fail_disk_full(sql + ": " + text);
     throw StoreError(sql + ": " + text);
   }
+}
+
+namespace {
+
+using BlobHandle = std::unique_ptr<sqlite3_blob, int (*)(sqlite3_blob*)>;
+
+/// The blob handle of a value (its own short read transaction), nothing when the row is gone.
+std::optional<BlobHandle> open_blob(SqliteConnection& c, sqlite3* db, const char* table,
+                                    const char* column, std::int64_t rowid) {
+  sqlite3_blob* raw = nullptr;
+  const int rc = sqlite3_blob_open(db, "main", table, column, rowid, 0, &raw);
+  BlobHandle blob(raw, sqlite3_blob_close);
+  if (rc == SQLITE_OK) return blob;
+  const std::string message = sqlite3_errmsg(db);
+  // A row deleted meanwhile is an answer, not an error.
+  if (c.query(std::string("SELECT 1 AS found FROM ") + table + " WHERE rowid = ?1", {rowid})
+          .empty())
+    return std::nullopt;
+  throw StoreError(std::string("reading ") + table + "." + column + ": " + message +
+                   " (SQLite code " + std::to_string(rc) + ")");
+}
+
+}  // namespace
+
+std::optional<std::string> SqliteConnection::read_blob(const char* table, const char* column,
+                                                       std::int64_t rowid, std::int64_t offset,
+                                                       std::int64_t length) {
+  const auto blob = open_blob(*this, db_.get(), table, column, rowid);
+  if (!blob) return std::nullopt;
+  const std::int64_t size = sqlite3_blob_bytes(blob->get());
+  const std::int64_t from = std::clamp<std::int64_t>(offset, 0, size);
+  std::string part(static_cast<std::size_t>(std::clamp<std::int64_t>(length, 0, size - from)),
+                   '\0');
+  if (!part.empty()) {
+    const int read = sqlite3_blob_read(blob->get(), part.data(), static_cast<int>(part.size()),
+                                       static_cast<int>(from));
+    if (read != SQLITE_OK) fail(read, std::string("reading ") + table + "." + column);
+  }
+  // The part's pages stay in this connection's page cache (2 MB at most; each HTTP thread has
+  // a connection): give them back, since the next part of a stalled client may be seconds away.
+  sqlite3_db_release_memory(db_.get());
+  return part;
+}
+
+std::optional<std::int64_t> SqliteConnection::blob_size(const char* table, const char* column,
+                                                        std::int64_t rowid) {
+  const auto blob = open_blob(*this, db_.get(), table, column, rowid);
+  if (!blob) return std::nullopt;
+  return sqlite3_blob_bytes(blob->get());
 }
 
 void SqliteConnection::rollback() noexcept {

@@ -6,6 +6,7 @@
 
 #include <cstdint>
 #include <memory>
+#include <optional>
 #include <string>
 #include <string_view>
 #include <unordered_map>
@@ -30,6 +31,14 @@ class SqliteConnection final : public SqlConnection {
   void begin_write() override { exec("BEGIN IMMEDIATE"); }
   void commit() override { exec("COMMIT"); }
   void rollback() noexcept override;
+
+  /// Up to `length` bytes from `offset` of the BLOB or TEXT value in `column` of the row
+  /// `rowid` of `table`, read without loading the rest of the value (incremental blob I/O, its
+  /// own short read transaction); nothing when the row is gone.
+  std::optional<std::string> read_blob(const char* table, const char* column, std::int64_t rowid,
+                                       std::int64_t offset, std::int64_t length);
+  /// The size in bytes of that value, read without loading it; nothing when the row is gone.
+  std::optional<std::int64_t> blob_size(const char* table, const char* column, std::int64_t rowid);
 
   /// Throws StoreError naming `what` and SQLite's message.
   [[noreturn]] void fail(int code, std::string_view what) const;

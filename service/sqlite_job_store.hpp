@@ -22,6 +22,14 @@ class SqliteJobStore final : public SqlJobStore {
   /// version, converting an older file to incremental auto-vacuum. Throws StoreError.
   explicit SqliteJobStore(std::string path, int busy_timeout_ms = 5000);
 
+  /// Read without loading the rest of the value (SQL's substr would load all of it for each
+  /// part); sizes in bytes also of text, which SQLite 3.40's length() counts in characters.
+  std::optional<std::string> stored_vtu_bytes(std::int64_t id, std::int64_t offset,
+                                              std::int64_t length) override;
+  std::optional<std::int64_t> result_json_size(std::int64_t id) override;
+  std::optional<std::string> result_json_bytes(std::int64_t id, std::int64_t offset,
+                                               std::int64_t length) override;
+
  protected:
   void after_delete(SqlConnection& c) override;
 

@@ -32,9 +32,10 @@ std::variant<Problem, NewJob> read_submission(const std::string& body,
     return problems::invalid_case({{*pointer,
                                     "this key appears twice in its object; give each key once "
                                     "(JSON parsers disagree on which one counts)"}});
-  if (std::vector<CaseError> errors = validator(case_json); !errors.empty())
-    return problems::invalid_case(std::move(errors));
+  CaseVerdict verdict = validator(case_json);
+  if (!verdict.errors.empty()) return problems::invalid_case(std::move(verdict.errors));
   NewJob job;
+  job.time_estimate_seconds = verdict.estimate_seconds;
   job.name = case_json.contains("name") && case_json["name"].is_string()
                  ? case_json["name"].get<std::string>()
                  : "case";

@@ -10,14 +10,11 @@
 #include <variant>
 #include <vector>
 
-#include "case/case_error.hpp"
+#include "case_verdict.hpp"
 #include "job_store.hpp"
 #include "problem.hpp"
 
 namespace fosls::service {
-
-/// Checks a parsed case before it is queued; every problem with its JSON pointer.
-using CaseValidator = std::function<std::vector<CaseError>(const nlohmann::json& case_json)>;
 
 /// The job (name, canonical case JSON and its hash; no idempotency key) or the problem.
 std::variant<Problem, NewJob> read_submission(const std::string& body,

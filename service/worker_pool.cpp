@@ -241,7 +241,8 @@ void WorkerPool::run_job(const ClaimedJob& claimed) {
   const Clock::time_point started = Clock::now();
   const auto cancel = register_job(claimed);
   ProgressWriter progress(store_, claimed.lease, log_, options_.progress_interval);
-  JobRunContext context{*cancel, [&](const JobProgress& p) { progress.report(p); }};
+  JobRunContext context{*cancel, [&](const JobProgress& p) { progress.report(p); },
+                        claimed.time_estimate_seconds};
   JobRunOutcome outcome = solve(claimed, context);
   const double seconds = std::chrono::duration<double>(Clock::now() - started).count();
 

@@ -1,71 +1,71 @@
 #pragma once
-// Pattern-first assembly: the sparsity of the FOSLS matrix follows from the mesh
-// topology alone, so it is computed once, the values are written into it in place and no
-// triplet lists are kept (they were the assembly's peak: docs/performance.md, "Assembly").
+// Pattern-first assembly, the one local-to-global scatter of every space (P1–RT0 in 2D and 3D,
+// order 2): the sparsity of the FOSLS matrix follows from the mesh topology alone, so it is
+// computed once, the cells' local systems are added into it in place, in parallel and under a
+// deadline, and no triplet lists are kept (they were the assembly's peak:
+// docs/performance.md, "Assembly").
+//
+// A Space here is FoslsSpace<2>, FoslsSpace<3> or P2Rt1Space: kCellDofs, cell_dofs(t) in its
+// full numbering, free_index(dof), num_free() and mesh().num_cells().
 
+#include <Eigen/Core>
 #include <algorithm>
-#include <array>
+#include <functional>
 #include <vector>
 
 #include "core/box_qp.hpp"
 #include "core/deadline.hpp"
-#include "fem/fosls_space.hpp"
 
 namespace fosls {
 
-/// The 12 local DOFs of triangle t (u: 2k + c, σ: 6 + 2k + i) in the space's full numbering.
-std::array<int, 12> triangle_dofs(const FoslsSpace& space, int t);
-
-/// Which triangles each thread of a parallel assembly visits. Thread t owns the columns (and
-/// the right-hand side entries) of the free DOFs whose lowest-numbered triangle lies in its
-/// range [range_begin[t], range_begin[t + 1]), and visits, in increasing order, every triangle
-/// that holds one of them or lies in its range. Every matrix entry is therefore summed by one
-/// thread in triangle order: the same sums, bit for bit, whatever the number of threads, with
-/// no locks and only the triangles along the range boundaries computed twice.
+/// Which cells each thread of a parallel assembly visits. Thread t owns the columns (and the
+/// right-hand side entries) of the free DOFs whose lowest-numbered cell lies in its range
+/// [range_begin[t], range_begin[t + 1]), and visits, in increasing order, every cell that holds
+/// one of them or lies in its range. Every matrix entry is therefore summed by one thread in
+/// cell order: the same sums, bit for bit, whatever the number of threads, with no locks and
+/// only the cells along the range boundaries computed twice.
 struct AssemblyPartition {
-  std::vector<int> range_begin;             ///< threads + 1 entries
-  std::vector<int> owner;                   ///< per free DOF: the thread that writes its column
-  std::vector<std::vector<int>> triangles;  ///< per thread, increasing
+  std::vector<int> range_begin;         ///< threads + 1 entries
+  std::vector<int> owner;               ///< per free DOF: the thread that writes its column
+  std::vector<std::vector<int>> cells;  ///< per thread, increasing
+  int threads() const { return static_cast<int>(range_begin.size()) - 1; }
 };
 
-/// The matrix of the free DOFs with a stored (zero) entry wherever two free DOFs share a
-/// triangle, column-major with sorted rows, and the partition of its assembly over `threads`.
+/// The matrix of the free DOFs with a stored (zero) entry wherever two free DOFs share a cell,
+/// column-major with sorted rows, and the partition of its assembly over `threads`.
 struct AssemblyPattern {
   SparseMatrix matrix;
   AssemblyPartition partition;
 };
-/// Throws TimeLimitReached between its passes once `deadline` has passed.
-AssemblyPattern assembly_pattern(const FoslsSpace& space, int threads,
-                                 const Deadline& deadline = {});
 
-/// The matrix of `n` free DOFs with a stored (zero) entry wherever two free DOFs share a cell,
-/// compressed column-major with sorted rows, for spaces whose cells are not FoslsSpace's
-/// triangles (order 2, tetrahedra): `free_dofs(c)` gives cell c's DOFs as free indices, −1 for
-/// fixed ones. Values are then added in place (entry_position), with no triplet list.
-template <class FreeDofs>
-SparseMatrix cell_pattern(int n, int cells, const FreeDofs& free_dofs) {
-  std::vector<int> start(n + 1, 0);
-  for (int c = 0; c < cells; ++c)
-    for (int f : free_dofs(c))
-      if (f >= 0) ++start[f + 1];
-  for (int f = 0; f < n; ++f) start[f + 1] += start[f];
-  std::vector<int> cells_of(start[n]), next(start.begin(), start.end() - 1);
-  for (int c = 0; c < cells; ++c)
-    for (int f : free_dofs(c))
-      if (f >= 0) cells_of[next[f]++] = c;
-  std::vector<int> outer(n + 1, 0), inner, marker(n, -1);
-  for (int col = 0; col < n; ++col) {
-    const std::size_t first = inner.size();
-    for (int k = start[col]; k < start[col + 1]; ++k)
-      for (int row : free_dofs(cells_of[k]))
-        if (row >= 0 && marker[row] != col) marker[row] = col, inner.push_back(row);
-    std::sort(inner.begin() + first, inner.end());
-    outer[col + 1] = static_cast<int>(inner.size());
-  }
-  std::vector<double> zeros(inner.size(), 0.0);
-  return Eigen::Map<const SparseMatrix>(n, n, static_cast<int>(inner.size()), outer.data(),
-                                        inner.data(), zeros.data());
-}
+/// Throws TimeLimitReached between its passes once `deadline` has passed.
+template <class Space>
+AssemblyPattern assembly_pattern(const Space& space, int threads, const Deadline& deadline = {});
+
+/// One cell's terms of J = ½ xᵀKx − bᵀx + c on its local DOFs (cell_dofs order, rotated).
+template <int n>
+struct LocalSystem {
+  Eigen::Matrix<double, n, n> K;
+  Eigen::Matrix<double, n, 1> b;
+  double c = 0.0;
+};
+
+/// How the constant of J, whose sum over the cells is the one sum the partition cannot keep in
+/// cell order, is added up: kPerThread in each thread's cells' order, then thread by thread
+/// (cheapest; its last bits depend on the number of threads), kCellOrder cell by cell in cell
+/// order (the same on any number of threads). The lowest order keeps kPerThread and order 2
+/// kCellOrder, each the sum it had before they shared this scatter, so their results stay bit
+/// for bit.
+enum class ConstantSum { kPerThread, kCellOrder };
+
+/// Adds every cell's local system, computed by `local(t, system)`, into the pattern's matrix
+/// and b (the fixed DOFs' couplings, with values xd, moved to b) on the pattern's threads;
+/// returns J's constant. Polls `deadline` and throws TimeLimitReached once it has passed.
+template <class Space>
+double scatter_local_systems(const Space& space, AssemblyPattern& pattern, const Vector& xd,
+                             Vector& b,
+                             const std::function<void(int, LocalSystem<Space::kCellDofs>&)>& local,
+                             ConstantSum sum, const Deadline& deadline = {});
 
 /// Position of entry (row, col) in the values of a compressed column-major `pattern`; the
 /// entry must be stored.

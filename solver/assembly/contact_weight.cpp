@@ -15,9 +15,9 @@ namespace fosls {
 namespace {
 
 /// The matrix of J on `space` with the given contact weight.
-SparseMatrix functional_matrix(const FoslsSpace& space, ProblemData data, double c3) {
+SparseMatrix functional_matrix(const FoslsSpace<2>& space, ProblemData<2> data, double c3) {
   data.weights.c3 = c3;
-  return FoslsAssembler(space, data).assemble_system().qp.A;
+  return FoslsAssembler<2>(space, data).assemble_system().qp.A;
 }
 
 /// Cholesky factor of A0. Without a Neumann boundary an incompressible A0 can be singular (the
@@ -105,15 +105,14 @@ double definiteness_limit_by_bisection(const SparseMatrix& a0, const SparseMatri
 
 }  // namespace
 
-ContactWeightLimit contact_weight_limit(const MeshHierarchy& meshes, const ProblemData& data,
+ContactWeightLimit contact_weight_limit(const MeshHierarchy& meshes, const ProblemData<2>& data,
                                         int max_dofs) {
-  const auto roles = data.roles();
+  const auto roles = data.boundary_roles();
   ContactWeightLimit out;
-  std::unique_ptr<FoslsSpace> chosen;
+  std::unique_ptr<FoslsSpace<2>> chosen;
   for (int level = 0; level < meshes.num_levels(); ++level) {
     const Mesh& mesh = meshes.meshes[level];
-    auto space = std::make_unique<FoslsSpace>(mesh, roles, obstacle_vertex_normals(mesh, data),
-                                              data.frictional_groups());
+    auto space = std::make_unique<FoslsSpace<2>>(mesh, roles, obstacle_vertex_normals(mesh, data));
     if (chosen && space->num_free() > max_dofs) break;
     chosen = std::move(space);
     out.level = level;

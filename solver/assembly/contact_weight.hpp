@@ -29,7 +29,7 @@ constexpr int kWeightLevelDofs = 20000;
 
 /// c3* on the finest level of `meshes` with at most `max_dofs` free unknowns (the coarsest if
 /// none is that small). `data.weights.c3` is ignored.
-ContactWeightLimit contact_weight_limit(const MeshHierarchy& meshes, const ProblemData& data,
+ContactWeightLimit contact_weight_limit(const MeshHierarchy& meshes, const ProblemData<2>& data,
                                         int max_dofs = kWeightLevelDofs);
 
 /// The rule applied to a limit: min(kDefaultContactWeight, limit / 2).

@@ -4,7 +4,7 @@
 
 namespace fosls {
 
-bool contact_layer_is_definite(const FoslsSpace& space, const BoxQp& qp) {
+bool contact_layer_is_definite(const FoslsSpace<2>& space, const BoxQp& qp) {
   const Mesh& mesh = space.mesh();
   std::vector<char> near(mesh.num_vertices(), 0);
   for (int e = 0; e < mesh.num_edges(); ++e)

@@ -15,6 +15,6 @@ namespace fosls {
 /// Catches weights far from the limit, cheaply and before anything else is built; near the
 /// limit the indefinite modes are wider than the layer and the solvers' own checks decide
 /// (chain_is_definite for mmg and tnnmg, CHOLMOD for pdas).
-bool contact_layer_is_definite(const FoslsSpace& space, const BoxQp& qp);
+bool contact_layer_is_definite(const FoslsSpace<2>& space, const BoxQp& qp);
 
 }  // namespace fosls

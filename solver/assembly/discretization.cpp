@@ -8,15 +8,14 @@
 
 namespace fosls {
 
-Discretization::Discretization(MeshHierarchy meshes, ProblemData data, const Deadline& deadline)
+Discretization::Discretization(MeshHierarchy meshes, ProblemData<2> data, const Deadline& deadline)
     : meshes_(std::move(meshes)), data_(std::move(data)) {
-  const auto roles = data_.roles();
+  const auto roles = data_.boundary_roles();
   for (const Mesh& m : meshes_.meshes) {
     deadline.check("building the finite element spaces");
-    spaces_.push_back(std::make_unique<FoslsSpace>(m, roles, obstacle_vertex_normals(m, data_),
-                                                   data_.frictional_groups()));
+    spaces_.push_back(std::make_unique<FoslsSpace<2>>(m, roles, obstacle_vertex_normals(m, data_)));
   }
-  assembler_ = std::make_unique<FoslsAssembler>(*spaces_.back(), data_);
+  assembler_ = std::make_unique<FoslsAssembler<2>>(*spaces_.back(), data_);
   // Eigen 3.4's SparseMatrix has no move assignment: the matrix is swapped in, not copied.
   AssembledProblem assembled = assembler_->assemble_system(deadline);
   SparseMatrix a;
@@ -25,7 +24,7 @@ Discretization::Discretization(MeshHierarchy meshes, ProblemData data, const Dea
   problem_.qp.A.swap(a);
 }
 
-std::vector<std::vector<int>> vertex_patches(const FoslsSpace& space, std::array<int, 2>* split,
+std::vector<std::vector<int>> vertex_patches(const FoslsSpace<2>& space, std::array<int, 2>* split,
                                              const std::vector<char>& selected) {
   const Mesh& mesh = space.mesh();
   const auto vertex_edges = mesh.vertex_edges();
@@ -61,7 +60,7 @@ std::vector<char> new_vertices_and_neighbours(const Mesh& fine, const Refinement
   return selected;
 }
 
-std::vector<int> contact_strip(const FoslsSpace& space, int layers) {
+std::vector<int> contact_strip(const FoslsSpace<2>& space, int layers) {
   const Mesh& mesh = space.mesh();
   std::vector<char> on_contact(mesh.num_vertices(), 0);
   for (int e = 0; e < mesh.num_edges(); ++e)
@@ -104,8 +103,8 @@ namespace {
 /// out through `to`. Returned as free DOFs of the fine space with their coefficients; the
 /// first entry is `to`'s S_n, n_from·n_to (1 on a straight edge; the tangential part, which
 /// S_t = 0 does not allow, is dropped on curved edges).
-std::vector<std::pair<int, double>> flux_move(const FoslsSpace& space, const RefinementMaps& maps,
-                                              int from, int to) {
+std::vector<std::pair<int, double>> flux_move(const FoslsSpace<2>& space,
+                                              const RefinementMaps& maps, int from, int to) {
   const Mesh& mesh = space.mesh();
   const Point n = mesh.edge_normal(from);
   const auto path = flux_path(mesh, maps, from, to);
@@ -123,7 +122,7 @@ std::vector<std::pair<int, double>> flux_move(const FoslsSpace& space, const Ref
 
 int Discretization::coarsest_solver_level(double max_turn) const {
   for (int j = 0; j + 1 < num_levels(); ++j) {
-    const FoslsSpace& space = *spaces_[j];
+    const FoslsSpace<2>& space = *spaces_[j];
     const Mesh& mesh = space.mesh();
     double turn = 0.0;
     for (int e = 0; e < mesh.num_edges(); ++e) {
@@ -142,7 +141,7 @@ LevelHierarchy Discretization::build_level_hierarchy() const {
   const int coarsest = coarsest_solver_level();
   h.levels.resize(num_levels() - coarsest);
   for (int j = coarsest; j < num_levels(); ++j) {
-    const FoslsSpace& fine = *spaces_[j];
+    const FoslsSpace<2>& fine = *spaces_[j];
     Level& level = h.levels[j - coarsest];
     level.num_dofs = fine.num_free();
     // Local smoothing (Chen, Nochetto and Xu's multilevel methods on graded bisection grids):
@@ -156,7 +155,7 @@ LevelHierarchy Discretization::build_level_hierarchy() const {
                                   : new_vertices_and_neighbours(fine.mesh(), meshes_.maps[j]));
     level.contact_strip = contact_strip(fine);
     if (j == coarsest) continue;
-    const FoslsSpace& coarse = *spaces_[j - 1];
+    const FoslsSpace<2>& coarse = *spaces_[j - 1];
     const RefinementMaps& maps = meshes_.maps[j];
     level.prolongation = free_prolongation(
         coarse, fine, maps, cartesian_prolongation(coarse.mesh(), fine.mesh(), maps));
@@ -176,7 +175,7 @@ LevelHierarchy Discretization::build_level_hierarchy() const {
       bool first = fm.edge(f)[0] == cm.edge(e)[0] || fm.edge(f)[1] == cm.edge(e)[0];
       children[e][first ? 0 : 1] = f;
     }
-    auto normal_u = [](const FoslsSpace& s, int v) {
+    auto normal_u = [](const FoslsSpace<2>& s, int v) {
       return s.is_contact_vertex(v) ? s.free_index(s.u_dof(v, 0)) : -1;
     };
     for (int e = 0; e < cm.num_edges(); ++e) {

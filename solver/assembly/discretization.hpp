@@ -15,18 +15,18 @@ class Discretization {
  public:
   /// Builds spaces on every level and assembles the finest one; throws TimeLimitReached once
   /// `deadline` has passed (polled between the levels' spaces and in the element loop).
-  Discretization(MeshHierarchy meshes, ProblemData data, const Deadline& deadline = {});
+  Discretization(MeshHierarchy meshes, ProblemData<2> data, const Deadline& deadline = {});
 
   int num_levels() const { return meshes_.num_levels(); }
   const MeshHierarchy& meshes() const { return meshes_; }
-  const FoslsSpace& space(int level) const { return *spaces_[level]; }
-  const FoslsSpace& finest_space() const { return *spaces_.back(); }
-  const FoslsAssembler& assembler() const { return *assembler_; }
+  const FoslsSpace<2>& space(int level) const { return *spaces_[level]; }
+  const FoslsSpace<2>& finest_space() const { return *spaces_.back(); }
+  const FoslsAssembler<2>& assembler() const { return *assembler_; }
   const AssembledProblem& problem() const { return problem_; }
   /// The problem for a frictional solve, which changes its bounds (Coulomb) and, while it
   /// runs, its kinked DOFs' b and bounds (solvers/kink_sides.hpp).
   AssembledProblem& mutable_problem() { return problem_; }
-  const ProblemData& data() const { return data_; }
+  const ProblemData<2>& data() const { return data_; }
   /// Builds the transfers, patches and contact links of the levels from
   /// coarsest_solver_level() up (not needed by pdas).
   LevelHierarchy build_level_hierarchy() const;
@@ -41,9 +41,9 @@ class Discretization {
 
  private:
   MeshHierarchy meshes_;
-  ProblemData data_;
-  std::vector<std::unique_ptr<FoslsSpace>> spaces_;
-  std::unique_ptr<FoslsAssembler> assembler_;
+  ProblemData<2> data_;
+  std::vector<std::unique_ptr<FoslsSpace<2>>> spaces_;
+  std::unique_ptr<FoslsAssembler<2>> assembler_;
   AssembledProblem problem_;
 };
 
@@ -51,7 +51,7 @@ class Discretization {
 /// two_vertex_blocks: two blocks a smoother may sweep at the same time, then the separator;
 /// `split`, when given, receives the ends of the two blocks. Only the patches of the vertices
 /// with `selected[v]` set when `selected` is not empty.
-std::vector<std::vector<int>> vertex_patches(const FoslsSpace& space,
+std::vector<std::vector<int>> vertex_patches(const FoslsSpace<2>& space,
                                              std::array<int, 2>* split = nullptr,
                                              const std::vector<char>& selected = {});
 
@@ -64,6 +64,6 @@ std::vector<char> new_vertices_and_neighbours(const Mesh& fine, const Refinement
 /// smoother's block), sorted; empty without contact. Two layers make the iteration counts
 /// level-independent on the square benchmark, one layer does not (docs/performance.md,
 /// "Measurements behind choices in the code").
-std::vector<int> contact_strip(const FoslsSpace& space, int layers = 2);
+std::vector<int> contact_strip(const FoslsSpace<2>& space, int layers = 2);
 
 }  // namespace fosls

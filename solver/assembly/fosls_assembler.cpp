@@ -2,389 +2,279 @@
 
 #include <omp.h>
 
-#include <Eigen/Dense>
-#include <algorithm>
-#include <atomic>
 #include <cmath>
 #include <stdexcept>
 
 #include "assembly/assembly_pattern.hpp"
-#include "fem/element_geometry.hpp"
+#include "assembly/element_operators.hpp"
+#include "fem/contact_frame.hpp"
+#include "fem/facet_quadrature.hpp"
 
 namespace fosls {
 
-using Mat12 = Eigen::Matrix<double, 12, 12>;
-using Vec12 = Eigen::Matrix<double, 12, 1>;
-using Row12 = Eigen::Matrix<double, 1, 12>;
-
-struct FoslsAssembler::Local {
-  Mat12 K;
-  Vec12 b;
-  double c = 0.0;
-};
-
-namespace {
-
-/// Operators of one triangle at one quadrature point, acting on the 12 local DOFs
-/// (u: 2k + c, σ: 6 + 2k + i), all in Cartesian coordinates with μ = 1 (scaled stresses).
-struct PointOperators {
-  Eigen::Matrix<double, 4, 12> constitutive;  ///< rows (ij) = 00, 01, 10, 11 of Aσ − ε(u)
-  Row12 asymmetry;                            ///< σ_01 − σ_10
-};
-
-PointOperators point_operators(const ElementGeometry& g, const Point& x, double kappa) {
-  PointOperators op;
-  op.constitutive.setZero();
-  op.asymmetry.setZero();
-  const double inv2mu = 0.5;
-  for (int k = 0; k < 3; ++k) {
-    const Point psi = g.rt0(k, x);
-    const Point grad = g.grad_p1(k);
-    for (int i = 0; i < 2; ++i) {
-      for (int j = 0; j < 2; ++j) {
-        // Aσ: (σ_ij − κ δ_ij tr σ) / (2μ), σ_ij = Σ_k S_{i,k} ψ_k,j.
-        op.constitutive(2 * i + j, 6 + 2 * k + i) += inv2mu * psi[j];
-        if (i == j)
-          for (int m = 0; m < 2; ++m)
-            op.constitutive(2 * i + i, 6 + 2 * k + m) -= inv2mu * kappa * psi[m];
-        // −ε_ij = −½(∂_j u_i + ∂_i u_j).
-        op.constitutive(2 * i + j, 2 * k + i) -= 0.5 * grad[j];
-        op.constitutive(2 * i + j, 2 * k + j) -= 0.5 * grad[i];
-      }
-    }
-    op.asymmetry(6 + 2 * k + 0) += psi[1];
-    op.asymmetry(6 + 2 * k + 1) -= psi[0];
-  }
-  return op;
-}
-
-/// tr(Aσ − ε(u)) at a point: the volumetric part of the constitutive residual, whose square
-/// the c2 term weights by ½ (the Frobenius norm) and `c2_volumetric` re-weights.
-Row12 volumetric_row(const PointOperators& op) {
-  return op.constitutive.row(0) + op.constitutive.row(3);
-}
-
-/// div σ_i as a function of the local DOFs (constant on the triangle).
-Eigen::Matrix<double, 2, 12> divergence_operator(const ElementGeometry& g) {
-  Eigen::Matrix<double, 2, 12> d;
-  d.setZero();
-  for (int k = 0; k < 3; ++k)
-    for (int i = 0; i < 2; ++i) d(i, 6 + 2 * k + i) = g.rt0_div(k);
-  return d;
-}
-
-/// Gauss–Legendre points on [0, 1] (3 points, exact for degree 5).
-constexpr std::array<double, 3> kGaussX = {0.1127016653792583, 0.5, 0.8872983346207417};
-constexpr std::array<double, 3> kGaussW = {5.0 / 18.0, 8.0 / 18.0, 5.0 / 18.0};
-
-}  // namespace
-
-std::vector<Point> obstacle_vertex_normals(const Mesh& mesh, const ProblemData& data) {
-  bool any = false;
-  for (const auto& g : data.groups)
-    any |= g.role == GroupRole::kContact &&
-           g.contact.direction == ConstraintDirection::kObstacleNormal;
-  if (!any) return {};
-  std::vector<Point> averaged(mesh.num_vertices(), Point::Zero());
-  std::vector<int> group(mesh.num_vertices(), -1);
-  for (int e = 0; e < mesh.num_edges(); ++e) {
-    int g = mesh.edge_group(e);
-    if (g < 0 || data.groups[g].role != GroupRole::kContact) continue;
-    for (int v : mesh.edge(e)) {
-      averaged[v] += mesh.edge_normal(e);
-      group[v] = g;
-    }
-  }
-  std::vector<Point> normals(mesh.num_vertices(), Point::Zero());
-  for (int v = 0; v < mesh.num_vertices(); ++v) {
-    if (group[v] < 0) continue;
-    Point n = averaged[v].normalized();
-    normals[v] = locate_obstacle(data.groups[group[v]].contact, mesh.vertex(v), n).direction;
-  }
-  return normals;
-}
-
-FoslsAssembler::FoslsAssembler(const FoslsSpace& space, const ProblemData& data)
+template <int dim>
+FoslsAssembler<dim>::FoslsAssembler(const FoslsSpace<dim>& space, const ProblemData<dim>& data)
     : space_(space), data_(data) {
-  const Mesh& mesh = space.mesh();
+  const SimplexMesh<dim>& mesh = space.mesh();
   mu_ = data.material.mu;
   if (!(mu_ > 0)) throw std::invalid_argument("mu must be positive");
   const double lambda = data.material.lambda / mu_;  // scaled: μ = 1
-  kappa_ = data.material.incompressible() ? 0.5 : lambda / (2.0 * lambda + 2.0);
+  kappa_ = data.material.incompressible() ? 1.0 / dim : lambda / (dim * lambda + 2.0);
   // Without a body force (most contact cases) nothing is stored: six zeros per triangle were a
   // measurable part of a large solve (docs/performance.md, "Measurements behind choices in the
   // code").
-  if (data.body_force[0] || data.body_force[1]) body_force_.resize(mesh.num_triangles());
+  bool any_force = false;
+  for (const auto& f : data.body_force) any_force |= static_cast<bool>(f);
+  if (any_force) body_force_.resize(mesh.num_cells());
   for (int t = 0; t < static_cast<int>(body_force_.size()); ++t) {
-    ElementGeometry g(mesh, t);
-    for (int q = 0; q < 3; ++q) {
-      Point x = g.edge_midpoint(q);
-      for (int i = 0; i < 2; ++i)
-        body_force_[t][2 * q + i] =
-            data.body_force[i] ? data.body_force[i](x.x(), x.y()) / mu_ : 0.0;
-    }
+    const auto points = SimplexElement<dim>(mesh, t).quadrature_points();
+    for (int q = 0; q <= dim; ++q)
+      for (int i = 0; i < dim; ++i)
+        body_force_[t][dim * q + i] =
+            data.body_force[i] ? evaluate<dim>(data.body_force[i], points[q]) / mu_ : 0.0;
   }
-  // Gaps at the vertices of contact edges, capped at a length far beyond the body so that
-  // a ray that misses the obstacle leaves the point effectively unconstrained.
-  double lo_x = 1e300, hi_x = -1e300, lo_y = 1e300, hi_y = -1e300;
-  for (const auto& p : mesh.vertices()) {
-    lo_x = std::min(lo_x, p.x()), hi_x = std::max(hi_x, p.x());
-    lo_y = std::min(lo_y, p.y()), hi_y = std::max(hi_y, p.y());
-  }
-  const double far = 10.0 * std::hypot(hi_x - lo_x, hi_y - lo_y);
+  // Gaps at the vertices of contact facets, along each vertex's constraint direction (a
+  // Dirichlet vertex has no frame: its facet's normal).
+  const double diameter = mesh.diameter();
   vertex_gap_.assign(mesh.num_vertices(), std::numeric_limits<double>::infinity());
-  for (int e = 0; e < mesh.num_edges(); ++e) {
-    int g = mesh.edge_group(e);
+  for (int f = 0; f < mesh.num_facets(); ++f) {
+    const int g = mesh.facet_group(f);
     if (g < 0 || data.groups[g].role != GroupRole::kContact) continue;
-    for (int v : mesh.edge(e)) {
-      Point n = space.is_contact_vertex(v) ? space.vertex_normal(v) : mesh.edge_normal(e);
-      ContactData body = data.groups[g].contact;
-      body.direction = ConstraintDirection::kBodyNormal;  // n already is the constraint direction
-      double gap = locate_obstacle(body, mesh.vertex(v), n).gap;
-      if (data.groups[g].contact.direction == ConstraintDirection::kObstacleNormal &&
-          body.obstacle.kind != RigidObstacle::Kind::kGap)
-        gap = locate_obstacle(data.groups[g].contact, mesh.vertex(v), n).gap;
-      if (!std::isfinite(gap) || gap > far) gap = far;
-      vertex_gap_[v] = std::min(vertex_gap_[v], gap);
+    const ContactData<dim>& contact = data.groups[g].contact;
+    for (int v : mesh.facet(f)) {
+      const Vec<dim> n =
+          space.is_contact_vertex(v) ? space.vertex_normal(v) : Vec<dim>(mesh.facet_normal(f));
+      // n already is the constraint direction; along the obstacle's normal a plane or ball
+      // measures the gap itself.
+      double gap =
+          locate_obstacle<dim>(contact, mesh.vertex(v), n, ConstraintDirection::kBodyNormal).gap;
+      if (contact.direction == ConstraintDirection::kObstacleNormal &&
+          contact.obstacle.kind != RigidObstacle<dim>::Kind::kGap)
+        gap = locate_obstacle<dim>(contact, mesh.vertex(v), n).gap;
+      vertex_gap_[v] = std::min(vertex_gap_[v], capped_gap(gap, diameter));
     }
   }
 }
 
-void FoslsAssembler::element_kernel(int t, Local& out) const {
+template <int dim>
+Vec<dim> FoslsAssembler<dim>::body_force(int t, int q) const {
+  if (body_force_.empty()) return Vec<dim>::Zero();
+  return Eigen::Map<const Vec<dim>>(body_force_[t].data() + dim * q);
+}
+
+template <int dim>
+void FoslsAssembler<dim>::element_kernel(int t, Local& out) const {
   const FunctionalWeights& w = data_.weights;
-  ElementGeometry g(space_.mesh(), t);
-  const double wq = g.area / 3.0;  // edge-midpoint rule, exact for degree 2
-  const auto div = divergence_operator(g);
+  const SimplexElement<dim> e(space_.mesh(), t);
+  const auto points = e.quadrature_points();
+  const double wq = e.quadrature_weight();
+  const auto div = divergence_operator<dim>(e);
   out.K.setZero();
   out.b.setZero();
   out.c = 0.0;
-  for (int q = 0; q < 3; ++q) {
-    const PointOperators op = point_operators(g, g.edge_midpoint(q), kappa_);
+  for (int q = 0; q <= dim; ++q) {
+    const PointOperators<dim> op = point_operators<dim>(e, points[q], kappa_);
     out.K.noalias() += (2.0 * w.c2 * wq) * op.constitutive.transpose() * op.constitutive;
     if (w.c2_volumetric != 1.0) {
-      const auto trace = volumetric_row(op);
-      out.K.noalias() += (w.c2 * wq * (w.c2_volumetric - 1.0)) * trace.transpose() * trace;
+      // |R|² = |dev R|² + (tr R)²/d: the volumetric part re-weighted (docs/method.md §2.2).
+      const auto trace = volumetric_row<dim>(op);
+      out.K.noalias() +=
+          (2.0 * w.c2 * wq * (w.c2_volumetric - 1.0) / dim) * trace.transpose() * trace;
     }
     if (w.c4 != 0.0) out.K.noalias() += (2.0 * w.c4 * wq) * op.asymmetry.transpose() * op.asymmetry;
-    const Eigen::Vector2d f = body_force(t, q);
+    const Vec<dim> f = body_force(t, q);
     out.b.noalias() -= (2.0 * w.c1 * wq) * div.transpose() * f;
     out.c += w.c1 * wq * f.squaredNorm();
   }
-  out.K.noalias() += (2.0 * w.c1 * g.area) * div.transpose() * div;
+  out.K.noalias() += (2.0 * w.c1 * e.measure) * div.transpose() * div;
 }
 
-void FoslsAssembler::rotate_local(int t, Local& loc) const {
-  const Mesh& mesh = space_.mesh();
-  for (int k = 0; k < 3; ++k) {
-    for (int kind = 0; kind < 2; ++kind) {
-      Point n;
-      if (kind == 0) {
-        int v = mesh.triangle(t)[k];
-        if (!space_.is_contact_vertex(v)) continue;
-        n = space_.vertex_normal(v);
-      } else {
-        int e = mesh.triangle_edge(t, k);
-        if (!space_.is_contact_edge(e)) continue;
-        n = mesh.edge_normal(e);
-      }
-      const int o = kind == 0 ? 2 * k : 6 + 2 * k;
-      Eigen::Matrix2d q;
-      q << n.x(), -n.y(), n.y(), n.x();  // columns n, t
-      loc.K.middleCols<2>(o) = (loc.K.middleCols<2>(o) * q).eval();
-      loc.K.middleRows<2>(o) = (q.transpose() * loc.K.middleRows<2>(o)).eval();
-      loc.b.segment<2>(o) = (q.transpose() * loc.b.segment<2>(o)).eval();
-    }
+template <int dim>
+void FoslsAssembler<dim>::rotate_local(int t, Local& loc) const {
+  const SimplexMesh<dim>& mesh = space_.mesh();
+  auto rotate = [&loc](int o, const Mat<dim>& q) {
+    loc.K.template middleCols<dim>(o) = (loc.K.template middleCols<dim>(o) * q).eval();
+    loc.K.template middleRows<dim>(o) = (q.transpose() * loc.K.template middleRows<dim>(o)).eval();
+    loc.b.template segment<dim>(o) = (q.transpose() * loc.b.template segment<dim>(o)).eval();
+  };
+  for (int k = 0; k <= dim; ++k) {
+    if (const int v = mesh.cell(t)[k]; space_.is_contact_vertex(v))
+      rotate(dim * k, space_.vertex_frame(v));
+    if (const int f = mesh.cell_facet(t, k); space_.is_contact_facet(f))
+      rotate(dim * (dim + 1) + dim * k, normal_frame<dim>(mesh.facet_normal(f)));
   }
 }
 
-AssembledProblem FoslsAssembler::assemble_system(const Deadline& deadline) const {
+template <int dim>
+AssembledProblem FoslsAssembler<dim>::assemble_system(const Deadline& deadline) const {
   const int n_free = space_.num_free();
   AssembledProblem out;
   out.stress_scale = mu_;
   out.vertex_gap = vertex_gap_;
   Vector xd = essential_values();
-  // Pattern first, values in place (assembly_pattern.hpp): each thread writes only
-  // the columns it owns, visiting their triangles in increasing order (AssemblyPartition).
-  const int threads = omp_get_max_threads();
-  AssemblyPattern pattern = assembly_pattern(space_, threads, deadline);
+  AssemblyPattern pattern = assembly_pattern(space_, omp_get_max_threads(), deadline);
   Vector b = Vector::Zero(n_free);
-  const std::vector<double> constants = add_element_terms(xd, pattern, threads, b, deadline);
+  out.qp.constant = scatter_local_systems<FoslsSpace<dim>>(
+      space_, pattern, xd, b,
+      [this](int t, Local& loc) {
+        element_kernel(t, loc);
+        rotate_local(t, loc);
+      },
+      ConstantSum::kPerThread, deadline);
   add_contact_terms(xd, pattern.matrix, b);
+  if constexpr (dim == 2) add_friction_coupling(xd, pattern.matrix, b);
   out.qp.A.swap(pattern.matrix);  // Eigen 3.4's SparseMatrix has no move: std::move would copy
   out.qp.b = std::move(b);
-  out.qp.constant = 0.0;
-  for (double c : constants) out.qp.constant += c;
   out.qp.lower = Vector::Constant(n_free, -kNoBound);
   out.qp.upper = Vector::Constant(n_free, kNoBound);
   set_contact_bounds(out.qp.upper);
-  out.friction = friction_layout(space_, data_, xd, out.kinks);
-  if (!out.friction.empty()) {
-    set_friction_bounds(out.friction, Vector::Zero(n_free), out.qp, out.kinks);
-    for (const FrictionEdge& f : out.friction.edges) out.qp.row_obstacles.push_back(f.st);
-    out.qp.row_obstacles.insert(out.qp.row_obstacles.end(), out.kinks.dof.begin(),
-                                out.kinks.dof.end());
+  if constexpr (dim == 2) {
+    out.friction = friction_layout(space_, data_, xd, out.kinks);
+    if (!out.friction.empty()) {
+      set_friction_bounds(out.friction, Vector::Zero(n_free), out.qp, out.kinks);
+      for (const FrictionEdge& f : out.friction.edges) out.qp.row_obstacles.push_back(f.st);
+      out.qp.row_obstacles.insert(out.qp.row_obstacles.end(), out.kinks.dof.begin(),
+                                  out.kinks.dof.end());
+    }
   }
   out.fixed_values = std::move(xd);
   return out;
 }
 
-Vector FoslsAssembler::essential_values() const {
-  const Mesh& mesh = space_.mesh();
-  const int n_full = space_.num_dofs();
-  Vector xd = Vector::Zero(n_full);
-  for (int e = 0; e < mesh.num_edges(); ++e) {
-    int g = mesh.edge_group(e);
-    if (g < 0) continue;
-    const GroupData& gd = data_.groups[g];
-    const auto& pq = mesh.edge(e);
-    if (const int prescribed = prescribed_components(gd.role)) {
-      for (int v : pq)
-        for (int c = 0; c < 2; ++c) {
-          if (!(prescribed & (1 << c))) continue;
-          const double value =
-              gd.values[c] ? gd.values[c](mesh.vertex(v).x(), mesh.vertex(v).y()) : 0.0;
-          if (space_.is_contact_vertex(v)) {
-            // A roller through the contact zone: its axis is the tangent t = (−n_y, n_x), so
-            // the fixed rotated DOF U_t = t·U = t_c u_c (fosls_space.cpp).
-            const Point& n = space_.vertex_normal(v);
-            xd[space_.u_dof(v, 1)] = (c == 0 ? -n.y() : n.x()) * value;
-          } else {
-            xd[space_.u_dof(v, c)] = value;
-          }
-        }
-    } else if (gd.role == GroupRole::kNeumann) {
-      const Point a = mesh.vertex(pq[0]), b = mesh.vertex(pq[1]);
-      const double len = (b - a).norm();
-      // A normal pressure p is the traction t = −p n with the edge's outward normal n.
-      const Point n = mesh.edge_normal(e);
-      for (int c = 0; c < 2; ++c) {
-        const ScalarFunction& t = gd.normal_pressure ? gd.values[0] : gd.values[c];
-        const double factor = gd.normal_pressure ? -n[c] : 1.0;
-        double flux = 0.0;
-        if (t)
-          for (int q = 0; q < 3; ++q) {
-            Point x = a + kGaussX[q] * (b - a);
-            flux += kGaussW[q] * t(x.x(), x.y());
-          }
-        xd[space_.sigma_dof(e, c)] = factor * flux * len / mu_;
-      }
-    }
-  }
-  // Dirichlet vertices at the end of a Neumann edge keep their displacement; fixed σ of
-  // Neumann edges keep the flux. Clear values of DOFs that are not fixed.
-  for (int d = 0; d < n_full; ++d)
-    if (space_.role(d) != DofRole::kFixed) xd[d] = 0.0;
-
+template <int dim>
+Vector FoslsAssembler<dim>::essential_values() const {
+  const SimplexMesh<dim>& mesh = space_.mesh();
+  Vector xd = Vector::Zero(space_.num_dofs());
+  set_dirichlet_values(xd);
+  for (int f = 0; f < mesh.num_facets(); ++f)
+    if (const int g = mesh.facet_group(f); g >= 0 && data_.groups[g].role == GroupRole::kNeumann)
+      set_neumann_values(f, data_.groups[g], xd);
+  // Dirichlet vertices at the end of a Neumann facet keep their displacement; fixed σ of
+  // Neumann facets keep the flux. Clear values of DOFs that are not fixed.
+  for (int d = 0; d < space_.num_dofs(); ++d)
+    if (!space_.fixed(d)) xd[d] = 0.0;
   return xd;
 }
 
-std::vector<double> FoslsAssembler::add_element_terms(const Vector& xd, AssemblyPattern& pattern,
-                                                      int threads, Vector& b,
-                                                      const Deadline& deadline) const {
-  SparseMatrix& a = pattern.matrix;
-  const AssemblyPartition& part = pattern.partition;
-  double* values = a.valuePtr();
-  std::vector<double> cs(threads, 0.0);
-  // An exception cannot leave the parallel region: a thread that sees the deadline passed
-  // stops every thread's loop, and the throw comes after the region.
-  std::atomic<bool> out_of_time{false};
-#pragma omp parallel num_threads(threads)
-  // Each part once, also when the runtime gives fewer threads than asked for.
-  for (int tid = omp_get_thread_num(); tid < threads; tid += omp_get_num_threads()) {
-    double& c = cs[tid];
-    Local loc;
-    int polled = 0;
-    for (int t : part.triangles[tid]) {
-      if (deadline.is_set() && ++polled % Deadline::kPollEvery == 0 &&
-          (out_of_time.load(std::memory_order_relaxed) || deadline.passed())) {
-        out_of_time.store(true, std::memory_order_relaxed);
-        break;
-      }
-      element_kernel(t, loc);
-      rotate_local(t, loc);
-      const auto dofs = triangle_dofs(space_, t);
-      std::array<int, 12> free;
-      for (int i = 0; i < 12; ++i) free[i] = space_.free_index(dofs[i]);
-      const bool in_range = t >= part.range_begin[tid] && t < part.range_begin[tid + 1];
-      if (in_range) c += loc.c;
-      for (int i = 0; i < 12; ++i) {
-        const int fi = free[i];
-        if (fi >= 0) {
-          if (part.owner[fi] != tid) continue;
-          double bi = loc.b[i];
-          for (int j = 0; j < 12; ++j)
-            if (free[j] < 0) bi -= loc.K(i, j) * xd[dofs[j]];
-          b[fi] += bi;
-        } else if (in_range) {
-          const double xi = xd[dofs[i]];
-          c -= loc.b[i] * xi;
-          for (int j = 0; j < 12; ++j)
-            if (free[j] < 0) c += 0.5 * loc.K(i, j) * xi * xd[dofs[j]];
+template <int dim>
+void FoslsAssembler<dim>::set_dirichlet_values(Vector& xd) const {
+  const SimplexMesh<dim>& mesh = space_.mesh();
+  constexpr int every = (1 << dim) - 1;
+  std::vector<char> held(mesh.num_vertices(), 0);  ///< by a group prescribing every component
+  for (int pass = 0; pass < 2; ++pass)
+    for (int f = 0; f < mesh.num_facets(); ++f) {
+      const int g = mesh.facet_group(f);
+      if (g < 0 || data_.groups[g].role != GroupRole::kDirichlet) continue;
+      const GroupData<dim>& gd = data_.groups[g];
+      const int bits = gd.prescribed & every;
+      if ((pass == 0) != (bits == every)) continue;  // full groups first, then rollers
+      for (int v : mesh.facet(f)) {
+        if (pass == 1 && held[v]) continue;  // a full Dirichlet group's data win
+        held[v] |= pass == 0;
+        for (int c = 0; c < dim; ++c) {
+          if (!(bits & (1 << c))) continue;
+          const double value = gd.values[c] ? evaluate<dim>(gd.values[c], mesh.vertex(v)) : 0.0;
+          if (!space_.is_contact_vertex(v)) {
+            xd[space_.u_dof(v, c)] = value;
+            continue;
+          }
+          // A roller through the contact zone: its axis is a tangent of the vertex's frame
+          // (contact_frame.hpp), so the fixed rotated DOF is U_tk = t_k·u = t_k[c] u_c.
+          const Mat<dim>& q = space_.vertex_frame(v);
+          for (int k = 1; k < dim; ++k)
+            if (std::abs(q(c, k)) > 0.5) xd[space_.u_dof(v, k)] = q(c, k) * value;
         }
       }
-      for (int j = 0; j < 12; ++j) {
-        const int fj = free[j];
-        if (fj < 0 || part.owner[fj] != tid) continue;
-        for (int i = 0; i < 12; ++i)
-          if (free[i] >= 0) values[entry_position(a, free[i], fj)] += loc.K(i, j);
-      }
     }
-  }
-  if (out_of_time) throw TimeLimitReached("assembling the finest level");
-  return cs;
 }
 
-void FoslsAssembler::add_contact_terms(const Vector& xd, SparseMatrix& a, Vector& b) const {
-  const Mesh& mesh = space_.mesh();
-  double* values = a.valuePtr();
-  // Contact term C3 ⟨u·n − g, σ_nn⟩ on each contact edge: σ_nn = S_n/|e| is constant, u·n and
-  // g are linear along the edge, so the term is C3 S_n ((u·n)_p + (u·n)_q − g_p − g_q) / 2.
-  // On a frictional edge C3 ⟨u·t − o, σ_nt⟩ likewise, o the reference state's u·t.
-  // Its entries couple DOFs of the edge's triangle, so they are in the pattern.
-  const double c3 = data_.weights.c3;
-  // C3 S (d·u_v)/2 for the flux DOF s: U_n or U_t (`component`) at a contact vertex, else d·u.
-  auto couple = [&](int s, int v, int component, const Point& d) {
-    std::array<std::pair<int, double>, 2> terms;
-    if (space_.is_contact_vertex(v))
-      terms = {{{space_.u_dof(v, component), 0.5 * c3}, {space_.u_dof(v, 1 - component), 0.0}}};
-    else
-      terms = {{{space_.u_dof(v, 0), 0.5 * c3 * d.x()}, {space_.u_dof(v, 1), 0.5 * c3 * d.y()}}};
-    for (auto [dof, val] : terms) {
-      if (val == 0.0) continue;
-      const int fj = space_.free_index(dof);
-      if (fj >= 0) {
-        values[entry_position(a, s, fj)] += val;
-        values[entry_position(a, fj, s)] += val;
-      } else {
-        b[s] -= val * xd[dof];
-      }
+template <int dim>
+void FoslsAssembler<dim>::set_neumann_values(int f, const GroupData<dim>& g, Vector& xd) const {
+  const SimplexMesh<dim>& mesh = space_.mesh();
+  const FacetQuadrature<dim> rule = facet_quadrature<dim>(mesh, f);
+  // A normal pressure p is the traction t = −p n with the facet's outward normal n.
+  const Vec<dim> n = mesh.facet_normal(f);
+  for (int c = 0; c < dim; ++c) {
+    const ScalarFunctionOf<dim>& t = g.normal_pressure ? g.values[0] : g.values[c];
+    const double factor = g.normal_pressure ? -n[c] : 1.0;
+    double flux = 0.0;
+    if (t)
+      for (std::size_t q = 0; q < rule.points.size(); ++q)
+        flux += rule.weights[q] * evaluate<dim>(t, rule.points[q]);
+    xd[space_.sigma_dof(f, c)] = factor * flux * mesh.facet_measure(f) / mu_;
+  }
+}
+
+template <int dim>
+void FoslsAssembler<dim>::couple_flux_with_vertex(int s, int v, int component, const Vec<dim>& d,
+                                                  double weight, const Vector& xd, SparseMatrix& a,
+                                                  Vector& b) const {
+  auto couple = [&](int dof, double value) {
+    if (value == 0.0) return;
+    if (const int fj = space_.free_index(dof); fj >= 0) {
+      a.valuePtr()[entry_position(a, s, fj)] += value;
+      a.valuePtr()[entry_position(a, fj, s)] += value;
+    } else {
+      b[s] -= value * xd[dof];  // a fixed displacement's part is known
     }
   };
-  for (int e = 0; e < mesh.num_edges(); ++e) {
-    if (!space_.is_contact_edge(e) || c3 == 0.0) continue;
-    const int sn = space_.free_index(space_.sigma_dof(e, 0));
-    const int st = space_.role(space_.sigma_dof(e, 1)) == DofRole::kTangentialS
-                       ? space_.free_index(space_.sigma_dof(e, 1))
-                       : -1;
-    const Point ne = mesh.edge_normal(e), te(-ne.y(), ne.x());
-    double gbar = 0.0, obar = 0.0;
-    for (int v : mesh.edge(e)) {
-      gbar += 0.5 * vertex_gap_[v];
-      couple(sn, v, 0, ne);
-      if (st < 0) continue;
-      const Point n = space_.is_contact_vertex(v) ? space_.vertex_normal(v) : ne;
-      obar += 0.5 * reference_slip_origin(data_, v, Point(-n.y(), n.x()));
-      couple(st, v, 1, te);
+  if (space_.is_contact_vertex(v))
+    couple(space_.u_dof(v, component), weight);
+  else
+    for (int c = 0; c < dim; ++c) couple(space_.u_dof(v, c), weight * d[c]);
+}
+
+template <int dim>
+void FoslsAssembler<dim>::add_contact_terms(const Vector& xd, SparseMatrix& a, Vector& b) const {
+  const SimplexMesh<dim>& mesh = space_.mesh();
+  // Contact term C3 ⟨u·n − g, σ_nn⟩ on each contact facet: σ_nn = S_n/|f| is constant, u·n and
+  // g are linear on the facet, so the term is C3 S_n Σ_v ((u·n)_v − g_v) / d over its d
+  // vertices (u·n = U_n at a contact vertex, n_f·u at a Dirichlet one). Its entries couple DOFs
+  // of the facet's cell, so they are in the pattern.
+  const double c3 = data_.weights.c3;
+  if (c3 == 0.0) return;
+  for (int f = 0; f < mesh.num_facets(); ++f) {
+    if (!space_.is_contact_facet(f)) continue;
+    const int sn = space_.free_index(space_.sigma_dof(f, 0));
+    const Vec<dim> n = mesh.facet_normal(f);
+    double gap_sum = 0.0;
+    for (int v : mesh.facet(f)) {
+      gap_sum += vertex_gap_[v];
+      couple_flux_with_vertex(sn, v, 0, n, c3 / dim, xd, a, b);
     }
-    b[sn] += c3 * gbar;
-    if (st >= 0) b[st] += c3 * obar;
+    b[sn] += c3 * gap_sum / dim;
   }
 }
 
-void FoslsAssembler::set_contact_bounds(Vector& upper) const {
+template <int dim>
+void FoslsAssembler<dim>::add_friction_coupling(const Vector& xd, SparseMatrix& a, Vector& b) const
+    requires(dim == 2) {
+  const Mesh& mesh = space_.mesh();
+  // C3 ⟨u·t − o, σ_nt⟩ on each frictional edge, o the reference state's u·t: σ_nt = S_t/|e|,
+  // u·t linear along the edge (U_t at a contact vertex, t_e·u elsewhere), so the term is
+  // C3 S_t ((u·t)_p + (u·t)_q − o_p − o_q) / 2.
+  const double c3 = data_.weights.c3;
+  if (c3 == 0.0) return;
+  for (int e = 0; e < mesh.num_edges(); ++e) {
+    if (!space_.is_contact_edge(e) || space_.role(space_.sigma_dof(e, 1)) != DofRole::kTangentialS)
+      continue;
+    const int st = space_.free_index(space_.sigma_dof(e, 1));
+    const Point ne = mesh.edge_normal(e), te(-ne.y(), ne.x());
+    double obar = 0.0;
+    for (int v : mesh.edge(e)) {
+      const Point n = space_.is_contact_vertex(v) ? space_.vertex_normal(v) : ne;
+      obar += 0.5 * reference_slip_origin(data_, v, Point(-n.y(), n.x()));
+      couple_flux_with_vertex(st, v, 1, te, c3 / 2, xd, a, b);
+    }
+    b[st] += c3 * obar;
+  }
+}
+
+template <int dim>
+void FoslsAssembler<dim>::set_contact_bounds(Vector& upper) const {
   for (int f = 0; f < space_.num_free(); ++f) {
     const int d = space_.free_to_full()[f];
-    if (space_.role(d) == DofRole::kNormalU) upper[f] = vertex_gap_[d / 2];
+    if (space_.role(d) == DofRole::kNormalU) upper[f] = vertex_gap_[d / dim];
     if (space_.role(d) == DofRole::kNormalS) upper[f] = 0.0;
   }
 }
@@ -396,59 +286,70 @@ Vector full_from_free(const Vector& fixed_values, const std::vector<int>& free_t
   return x;
 }
 
-Vector FoslsAssembler::full_vector(const AssembledProblem& p, const Vector& x_free) const {
+template <int dim>
+Vector FoslsAssembler<dim>::full_vector(const AssembledProblem& p, const Vector& x_free) const {
   return full_from_free(p.fixed_values, space_.free_to_full(), x_free);
 }
 
-double FoslsAssembler::edge_mean_penetration(const Vector& x_full, int e) const {
-  const Mesh& mesh = space_.mesh();
-  const Point ne = mesh.edge_normal(e);
+template <int dim>
+double FoslsAssembler<dim>::facet_mean_penetration(const Vector& x_full, int f) const {
+  const SimplexMesh<dim>& mesh = space_.mesh();
+  const Vec<dim> n = mesh.facet_normal(f);
   double penetration = 0.0;
-  for (int v : mesh.edge(e)) {
-    const double un = space_.is_contact_vertex(v) ? x_full[space_.u_dof(v, 0)]
-                                                  : ne.x() * x_full[space_.u_dof(v, 0)] +
-                                                        ne.y() * x_full[space_.u_dof(v, 1)];
-    penetration += 0.5 * (un - vertex_gap_[v]);
+  for (int v : mesh.facet(f)) {
+    double un = 0.0;
+    if (space_.is_contact_vertex(v)) {
+      un = x_full[space_.u_dof(v, 0)];
+    } else {
+      for (int c = 0; c < dim; ++c) un += n[c] * x_full[space_.u_dof(v, c)];
+    }
+    penetration += (un - vertex_gap_[v]) / dim;
   }
   return penetration;
 }
 
-FunctionalParts FoslsAssembler::functional(const Vector& x_full) const {
-  const Mesh& mesh = space_.mesh();
+template <int dim>
+FunctionalParts FoslsAssembler<dim>::functional(const Vector& x_full) const {
+  const SimplexMesh<dim>& mesh = space_.mesh();
   const FunctionalWeights& w = data_.weights;
   const Vector x_cart = space_.rotation() * x_full;
+  constexpr int n = FoslsSpace<dim>::kCellDofs;
   FunctionalParts parts;
-  parts.element.assign(mesh.num_triangles(), 0.0);
+  parts.element.assign(mesh.num_cells(), 0.0);
   double mom = 0, con = 0, asym = 0;
 #pragma omp parallel for reduction(+ : mom, con, asym) schedule(static)
-  for (int t = 0; t < mesh.num_triangles(); ++t) {
-    ElementGeometry g(mesh, t);
-    const auto dofs = triangle_dofs(space_, t);
-    Vec12 xl;
-    for (int i = 0; i < 12; ++i) xl[i] = x_cart[dofs[i]];
-    const double wq = g.area / 3.0;
-    const Eigen::Vector2d div = divergence_operator(g) * xl;
+  for (int t = 0; t < mesh.num_cells(); ++t) {
+    const SimplexElement<dim> e(mesh, t);
+    const auto points = e.quadrature_points();
+    const auto dofs = space_.cell_dofs(t);
+    Eigen::Matrix<double, n, 1> xl;
+    for (int i = 0; i < n; ++i) xl[i] = x_cart[dofs[i]];
+    const double wq = e.quadrature_weight();
+    const Vec<dim> div = divergence_operator<dim>(e) * xl;
     double m = 0, c = 0, a = 0;
-    for (int q = 0; q < 3; ++q) {
-      const PointOperators op = point_operators(g, g.edge_midpoint(q), kappa_);
-      const Eigen::Vector2d f = body_force(t, q);
-      m += w.c1 * wq * (div + f).squaredNorm();
+    for (int q = 0; q <= dim; ++q) {
+      const PointOperators<dim> op = point_operators<dim>(e, points[q], kappa_);
+      m += w.c1 * wq * (div + body_force(t, q)).squaredNorm();
       c += w.c2 * wq * (op.constitutive * xl).squaredNorm();
       if (w.c2_volumetric != 1.0)
-        c += 0.5 * w.c2 * wq * (w.c2_volumetric - 1.0) * std::pow(volumetric_row(op).dot(xl), 2);
-      a += w.c4 * wq * std::pow(op.asymmetry.dot(xl), 2);
+        c += w.c2 * wq * (w.c2_volumetric - 1.0) / dim *
+             std::pow(volumetric_row<dim>(op).dot(xl), 2);
+      a += w.c4 * wq * asymmetry_square(op, xl);
     }
     parts.element[t] = m + c + a;
     mom += m, con += c, asym += a;
   }
   parts.momentum = mom, parts.constitutive = con, parts.asymmetry = asym;
-  for (int e = 0; e < mesh.num_edges(); ++e) {
-    if (!space_.is_contact_edge(e)) continue;
-    const double term = w.c3 * x_full[space_.sigma_dof(e, 0)] * edge_mean_penetration(x_full, e);
+  for (int f = 0; f < mesh.num_facets(); ++f) {
+    if (!space_.is_contact_facet(f)) continue;
+    const double term = w.c3 * x_full[space_.sigma_dof(f, 0)] * facet_mean_penetration(x_full, f);
     parts.contact += term;
-    parts.element[mesh.edge_triangles(e)[0]] += term;
+    parts.element[mesh.facet_cells(f)[0]] += term;
   }
   return parts;
 }
+
+template class FoslsAssembler<2>;
+template class FoslsAssembler<3>;
 
 }  // namespace fosls

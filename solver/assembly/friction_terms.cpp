@@ -36,26 +36,26 @@ bool FrictionLayout::coulomb() const {
                      [](const FrictionEdge& f) { return f.coefficient > 0.0; });
 }
 
-double reference_slip_origin(const ProblemData& data, int v, const Point& tangent) {
+double reference_slip_origin(const ProblemData<2>& data, int v, const Point& tangent) {
   // Only the finest level has a reference; the coarser ones the c3 limit assembles need only
   // the matrix, which the reference does not change.
   if (v >= static_cast<int>(data.reference_displacement.size())) return 0.0;
   return tangent.dot(data.reference_displacement[v]);
 }
 
-Point slip_tangent(const FoslsSpace& space, int e, int v) {
+Point slip_tangent(const FoslsSpace<2>& space, int e, int v) {
   const Point n = space.is_contact_vertex(v) ? space.vertex_normal(v) : space.mesh().edge_normal(e);
   return Point(-n.y(), n.x());
 }
 
-double tangential_displacement(const FoslsSpace& space, const Vector& x_full, int v,
+double tangential_displacement(const FoslsSpace<2>& space, const Vector& x_full, int v,
                                const Point& t) {
   if (space.is_contact_vertex(v)) return x_full[space.u_dof(v, 1)];
   return t.x() * x_full[space.u_dof(v, 0)] + t.y() * x_full[space.u_dof(v, 1)];
 }
 
-FrictionLayout friction_layout(const FoslsSpace& space, const ProblemData& data, const Vector& xd,
-                               Kinks& kinks) {
+FrictionLayout friction_layout(const FoslsSpace<2>& space, const ProblemData<2>& data,
+                               const Vector& xd, Kinks& kinks) {
   const Mesh& mesh = space.mesh();
   FrictionLayout layout;
   layout.c3 = data.weights.c3;
@@ -64,7 +64,7 @@ FrictionLayout friction_layout(const FoslsSpace& space, const ProblemData& data,
   for (int e = 0; e < mesh.num_edges(); ++e) {
     if (!space.is_contact_edge(e) || space.role(space.sigma_dof(e, 1)) != DofRole::kTangentialS)
       continue;
-    const FrictionData& friction = data.groups[mesh.edge_group(e)].contact.friction;
+    const FrictionData<2>& friction = data.groups[mesh.edge_group(e)].contact.friction;
     FrictionEdge f;
     f.edge = e;
     f.st = space.free_index(space.sigma_dof(e, 1));

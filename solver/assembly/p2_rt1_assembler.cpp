@@ -1,5 +1,7 @@
 #include "assembly/p2_rt1_assembler.hpp"
 
+#include <omp.h>
+
 #include <Eigen/Dense>
 #include <algorithm>
 #include <cmath>
@@ -10,16 +12,9 @@
 
 namespace fosls {
 
-constexpr int kLocal = 28;
-using MatL = Eigen::Matrix<double, kLocal, kLocal>;
+constexpr int kLocal = P2Rt1Space::kCellDofs;
 using VecL = Eigen::Matrix<double, kLocal, 1>;
 using RowL = Eigen::Matrix<double, 1, kLocal>;
-
-struct P2Rt1Assembler::Local {
-  MatL K;
-  VecL b;
-  double c = 0.0;
-};
 
 namespace {
 
@@ -62,21 +57,10 @@ RowL volumetric_row(const PointOperators& op) {
   return op.constitutive.row(0) + op.constitutive.row(3);
 }
 
-Eigen::Vector2d scaled_body_force(const ProblemData& data, const Point& x, double mu) {
+Eigen::Vector2d scaled_body_force(const ProblemData<2>& data, const Point& x, double mu) {
   Eigen::Vector2d f;
   for (int i = 0; i < 2; ++i) f[i] = data.body_force[i] ? data.body_force[i](x.x(), x.y()) / mu : 0;
   return f;
-}
-
-/// The matrix pattern: every pair of free DOFs of a triangle (which covers the contact term's
-/// couplings); the values are added in place, with no triplet list (28² per triangle).
-SparseMatrix order2_pattern(const P2Rt1Space& space) {
-  return cell_pattern(space.num_free(), space.mesh().num_triangles(), [&space](int t) {
-    std::array<int, kLocal> free;
-    const auto dofs = space.triangle_dofs(t);
-    for (int i = 0; i < kLocal; ++i) free[i] = space.free_index(dofs[i]);
-    return free;
-  });
 }
 
 Eigen::Matrix2d rotation_block(const Point& n) {
@@ -87,28 +71,24 @@ Eigen::Matrix2d rotation_block(const Point& n) {
 
 }  // namespace
 
-P2Rt1Assembler::P2Rt1Assembler(const P2Rt1Space& space, const ProblemData& data)
+P2Rt1Assembler::P2Rt1Assembler(const P2Rt1Space& space, const ProblemData<2>& data)
     : space_(space), data_(data) {
   const Mesh& mesh = space.mesh();
   mu_ = data.material.mu;
   if (!(mu_ > 0)) throw std::invalid_argument("mu must be positive");
   const double lambda = data.material.lambda / mu_;
   kappa_ = data.material.incompressible() ? 0.5 : lambda / (2.0 * lambda + 2.0);
-  double extent = 0.0;
-  for (const auto& p : mesh.vertices()) extent = std::max(extent, (p - mesh.vertex(0)).norm());
-  const double far = 20.0 * extent;  // a ray that misses the obstacle: effectively no bound
   node_gap_.assign(space.num_u_nodes(), std::numeric_limits<double>::infinity());
   for (int e = 0; e < mesh.num_edges(); ++e) {
     const int g = mesh.edge_group(e);
     if (g < 0 || data.groups[g].role != GroupRole::kContact) continue;
-    const ContactData& contact = data.groups[g].contact;
+    const ContactData<2>& contact = data.groups[g].contact;
     if (contact.direction != ConstraintDirection::kBodyNormal || contact.friction.frictional())
       throw std::logic_error("order 2: frictionless contact along the body normal only");
     for (int a : {mesh.edge(e)[0], mesh.edge(e)[1], space.midpoint_node(e)}) {
       const Point n = space.is_contact_node(a) ? space.node_normal(a) : mesh.edge_normal(e);
-      double gap = locate_obstacle(contact, space.node_position(a), n).gap;
-      if (!std::isfinite(gap) || gap > far) gap = far;
-      node_gap_[a] = std::min(node_gap_[a], gap);
+      const double gap = locate_obstacle<2>(contact, space.node_position(a), n).gap;
+      node_gap_[a] = std::min(node_gap_[a], capped_gap(gap, mesh.diameter()));
     }
   }
 }
@@ -154,19 +134,24 @@ void P2Rt1Assembler::rotate_local(int t, Local& loc) const {
   }
 }
 
-AssembledProblem P2Rt1Assembler::assemble_system() const {
+AssembledProblem P2Rt1Assembler::assemble_system(const Deadline& deadline) const {
   const int n_free = space_.num_free();
   AssembledProblem out;
   out.stress_scale = mu_;
   out.vertex_gap = node_gap_;
   const Vector xd = essential_values();
-  SparseMatrix a = order2_pattern(space_);
+  AssemblyPattern pattern = assembly_pattern(space_, omp_get_max_threads(), deadline);
   Vector b = Vector::Zero(n_free);
-  const double c = add_element_terms(xd, a, b);
-  add_contact_terms(xd, a, b);
-  out.qp.A.swap(a);
+  out.qp.constant = scatter_local_systems<P2Rt1Space>(
+      space_, pattern, xd, b,
+      [this](int t, Local& loc) {
+        element_kernel(t, loc);
+        rotate_local(t, loc);
+      },
+      ConstantSum::kCellOrder, deadline);
+  add_contact_terms(xd, pattern.matrix, b);
+  out.qp.A.swap(pattern.matrix);
   out.qp.b = std::move(b);
-  out.qp.constant = c;
   out.qp.lower = Vector::Constant(n_free, -kNoBound);
   out.qp.upper = Vector::Constant(n_free, kNoBound);
   for (int f = 0; f < n_free; ++f) {
@@ -178,61 +163,14 @@ AssembledProblem P2Rt1Assembler::assemble_system() const {
   return out;
 }
 
-double P2Rt1Assembler::add_element_terms(const Vector& xd, SparseMatrix& a, Vector& b) const {
-  // The element kernels, most of the work, on both cores a chunk of triangles at a time; their
-  // sums in triangle order on one: the same matrix, bit for bit, whatever the thread count.
-  constexpr int kChunk = 512;
-  const int triangles = space_.mesh().num_triangles();
-  std::vector<Local> locals(kChunk);
-  double c = 0.0;
-  for (int first = 0; first < triangles; first += kChunk) {
-    const int count = std::min(kChunk, triangles - first);
-#pragma omp parallel for schedule(static)
-    for (int k = 0; k < count; ++k) {
-      element_kernel(first + k, locals[k]);
-      rotate_local(first + k, locals[k]);
-    }
-    for (int k = 0; k < count; ++k) c += add_local(first + k, locals[k], xd, a, b);
-  }
-  return c;
-}
-
-double P2Rt1Assembler::add_local(int t, const Local& loc, const Vector& xd, SparseMatrix& a,
-                                 Vector& b) const {
-  double* values = a.valuePtr();
-  const auto dofs = space_.triangle_dofs(t);
-  std::array<int, kLocal> free;
-  for (int i = 0; i < kLocal; ++i) free[i] = space_.free_index(dofs[i]);
-  double c = loc.c;
-  for (int i = 0; i < kLocal; ++i) {
-    const int fi = free[i];
-    if (fi >= 0) {
-      double bi = loc.b[i];
-      for (int j = 0; j < kLocal; ++j) {
-        if (free[j] >= 0)
-          values[entry_position(a, fi, free[j])] += loc.K(i, j);
-        else
-          bi -= loc.K(i, j) * xd[dofs[j]];  // a fixed DOF's coupling moves to b
-      }
-      b[fi] += bi;
-    } else {
-      const double xi = xd[dofs[i]];
-      c -= loc.b[i] * xi;
-      for (int j = 0; j < kLocal; ++j)
-        if (free[j] < 0) c += 0.5 * loc.K(i, j) * xi * xd[dofs[j]];
-    }
-  }
-  return c;
-}
-
 Vector P2Rt1Assembler::essential_values() const {
   const Mesh& mesh = space_.mesh();
   Vector xd = Vector::Zero(space_.num_dofs());
   for (int e = 0; e < mesh.num_edges(); ++e) {
     const int g = mesh.edge_group(e);
     if (g < 0) continue;
-    const GroupData& gd = data_.groups[g];
-    if (const int prescribed = prescribed_components(gd.role)) {
+    const GroupData<2>& gd = data_.groups[g];
+    if (const int prescribed = gd.role == GroupRole::kDirichlet ? gd.prescribed & 3 : 0) {
       for (int a : {mesh.edge(e)[0], mesh.edge(e)[1], space_.midpoint_node(e)}) {
         const Point x = space_.node_position(a);
         for (int c = 0; c < 2; ++c) {
@@ -255,7 +193,7 @@ Vector P2Rt1Assembler::essential_values() const {
   return xd;
 }
 
-void P2Rt1Assembler::set_neumann_values(int e, const GroupData& gd, Vector& xd) const {
+void P2Rt1Assembler::set_neumann_values(int e, const GroupData<2>& gd, Vector& xd) const {
   const Mesh& mesh = space_.mesh();
   const Point p = mesh.vertex(mesh.edge(e)[0]), q = mesh.vertex(mesh.edge(e)[1]);
   const double len = (q - p).norm();
@@ -334,7 +272,7 @@ FunctionalParts P2Rt1Assembler::functional(const Vector& x_full) const {
   parts.element.assign(mesh.num_triangles(), 0.0);
   for (int t = 0; t < mesh.num_triangles(); ++t) {
     const P2Rt1Element el(mesh, t);
-    const auto dofs = space_.triangle_dofs(t);
+    const auto dofs = space_.cell_dofs(t);
     VecL xl;
     for (int i = 0; i < kLocal; ++i) xl[i] = x[dofs[i]];
     double m = 0, c = 0, as = 0;

@@ -15,11 +15,12 @@ class P2Rt1Assembler {
  public:
   /// Contact groups must constrain along the body normal and be frictionless (std::logic_error
   /// otherwise: the case layer refuses such cases first).
-  P2Rt1Assembler(const P2Rt1Space& space, const ProblemData& data);
+  P2Rt1Assembler(const P2Rt1Space& space, const ProblemData<2>& data);
 
   /// A, b, bounds and constant of J on the free DOFs (vertex_gap holds the gap of each
-  /// displacement node of a contact edge, +inf elsewhere).
-  AssembledProblem assemble_system() const;
+  /// displacement node of a contact edge, +inf elsewhere); the lowest order's parallel scatter
+  /// (assembly_pattern.hpp), under `deadline`.
+  AssembledProblem assemble_system(const Deadline& deadline = {}) const;
   /// Full (rotated, scaled) DOF vector from the free DOFs of a solution.
   Vector full_vector(const AssembledProblem& p, const Vector& x_free) const;
   /// The functional's terms at a full DOF vector (`element`: per triangle, as FoslsAssembler).
@@ -30,18 +31,13 @@ class P2Rt1Assembler {
   const P2Rt1Space& space() const { return space_; }
 
  private:
-  struct Local;
+  using Local = LocalSystem<P2Rt1Space::kCellDofs>;
   void element_kernel(int t, Local& out) const;
   void rotate_local(int t, Local& loc) const;
   Vector essential_values() const;
-  /// Every triangle's terms into a (the pattern) and b, the fixed DOFs' couplings moved to b;
-  /// returns their part of J's constant.
-  double add_element_terms(const Vector& xd, SparseMatrix& a, Vector& b) const;
-  /// One triangle's rotated local terms added in (add_element_terms' step).
-  double add_local(int t, const Local& loc, const Vector& xd, SparseMatrix& a, Vector& b) const;
   /// The Neumann fluxes of edge e into xd: the L² projection of the traction onto P1 on the
   /// edge, as the two end DOFs of each row.
-  void set_neumann_values(int e, const GroupData& g, Vector& xd) const;
+  void set_neumann_values(int e, const GroupData<2>& g, Vector& xd) const;
   /// C3 ⟨u·d − g, σ_nn⟩ on the contact edges: a bilinear coupling of the S_n end DOFs with the
   /// normal displacements of the edge's three nodes, exact by Gauss quadrature.
   void add_contact_terms(const Vector& xd, SparseMatrix& a, Vector& b) const;
@@ -52,7 +48,7 @@ class P2Rt1Assembler {
   std::array<std::pair<int, double>, 2> normal_displacement(int a, int e) const;
 
   const P2Rt1Space& space_;
-  const ProblemData& data_;
+  const ProblemData<2>& data_;
   double mu_ = 1.0;
   double kappa_ = 0.5;
   std::vector<double> node_gap_;

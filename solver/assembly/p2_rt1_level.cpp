@@ -3,11 +3,12 @@
 #include <algorithm>
 
 #include "assembly/patch_blocks.hpp"
-#include "fem/element_geometry.hpp"
+#include "fem/simplex_element.hpp"
 
 namespace fosls {
 
-Eigen::SparseMatrix<double> order2_embedding(const FoslsSpace& lowest, const P2Rt1Space& order2) {
+Eigen::SparseMatrix<double> order2_embedding(const FoslsSpace<2>& lowest,
+                                             const P2Rt1Space& order2) {
   const Mesh& mesh = lowest.mesh();
   std::vector<Eigen::Triplet<double>> t;
   for (int v = 0; v < mesh.num_vertices(); ++v)
@@ -20,7 +21,7 @@ Eigen::SparseMatrix<double> order2_embedding(const FoslsSpace& lowest, const P2R
         t.emplace_back(order2.sigma_edge_dof(e, j, c), lowest.sigma_dof(e, c), 0.5);
     }
   for (int tr = 0; tr < mesh.num_triangles(); ++tr) {
-    const ElementGeometry g(mesh, tr);
+    const SimplexElement<2> g(mesh, tr);
     const Point centroid = (g.a[0] + g.a[1] + g.a[2]) / 3.0;
     for (int k = 0; k < 3; ++k) {
       const Point mean = g.rt0(k, centroid);  // RT0 is linear: its mean is its centroid value
@@ -35,7 +36,7 @@ Eigen::SparseMatrix<double> order2_embedding(const FoslsSpace& lowest, const P2R
   return p;
 }
 
-Vector lowest_order_interpolant(const FoslsSpace& lowest, const P2Rt1Space& order2,
+Vector lowest_order_interpolant(const FoslsSpace<2>& lowest, const P2Rt1Space& order2,
                                 const Vector& x_full) {
   const Mesh& mesh = lowest.mesh();
   const Vector cartesian = order2.rotation() * x_full;
@@ -52,7 +53,7 @@ Vector lowest_order_interpolant(const FoslsSpace& lowest, const P2Rt1Space& orde
 namespace {
 
 /// The embedding between the free DOFs of both spaces in their rotated coordinates.
-SparseMatrix free_embedding(const FoslsSpace& lowest, const P2Rt1Space& order2) {
+SparseMatrix free_embedding(const FoslsSpace<2>& lowest, const P2Rt1Space& order2) {
   const Eigen::SparseMatrix<double> rotated =
       order2.rotation().transpose() * order2_embedding(lowest, order2) * lowest.rotation();
   std::vector<Eigen::Triplet<double>> t;
@@ -123,7 +124,7 @@ std::vector<int> order2_contact_strip(const P2Rt1Space& space) {
   std::vector<int> strip;
   for (int t = 0; t < mesh.num_triangles(); ++t)
     if (touches(t))
-      for (int dof : space.triangle_dofs(t))
+      for (int dof : space.cell_dofs(t))
         if (const int f = space.free_index(dof); f >= 0) strip.push_back(f);
   std::sort(strip.begin(), strip.end());
   strip.erase(std::unique(strip.begin(), strip.end()), strip.end());
@@ -133,8 +134,8 @@ std::vector<int> order2_contact_strip(const P2Rt1Space& space) {
 /// Contact edge e's link: its lowest-order U_n and S_n with the order-2 ones. Moving S_n from
 /// one end to the other keeps the edge's flux; the triangle's σ means are the path on which
 /// the truncated hierarchy makes the move divergence free.
-ContactLink order2_link(const FoslsSpace& lowest, const P2Rt1Space& order2, const SparseMatrix& p,
-                        int e) {
+ContactLink order2_link(const FoslsSpace<2>& lowest, const P2Rt1Space& order2,
+                        const SparseMatrix& p, int e) {
   const Mesh& mesh = lowest.mesh();
   ContactLink link;
   auto lowest_un = [&](int v) {
@@ -166,7 +167,7 @@ ContactLink order2_link(const FoslsSpace& lowest, const P2Rt1Space& order2, cons
 
 }  // namespace
 
-Level order2_level(const FoslsSpace& lowest, const P2Rt1Space& order2) {
+Level order2_level(const FoslsSpace<2>& lowest, const P2Rt1Space& order2) {
   Level level;
   level.num_dofs = order2.num_free();
   level.prolongation = free_embedding(lowest, order2);

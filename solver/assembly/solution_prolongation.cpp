@@ -9,8 +9,8 @@ namespace fosls {
 Vector prolongate_to_finest(const Discretization& disc, const Vector& full_coarse) {
   const int top = disc.num_levels() - 1;
   if (top < 1) throw std::invalid_argument("prolongate_to_finest: there is no coarser level");
-  const FoslsSpace& coarse = disc.space(top - 1);
-  const FoslsSpace& fine = disc.space(top);
+  const FoslsSpace<2>& coarse = disc.space(top - 1);
+  const FoslsSpace<2>& fine = disc.space(top);
   if (full_coarse.size() != coarse.num_dofs())
     throw std::invalid_argument("prolongate_to_finest: the vector is not of the coarser level");
   const RefinementMaps& maps = disc.meshes().maps[top];

@@ -6,7 +6,7 @@
 #include <set>
 
 #include "assembly/patch_blocks.hpp"
-#include "fem/tet_element.hpp"
+#include "fem/simplex_element.hpp"
 
 namespace fosls {
 
@@ -26,14 +26,14 @@ Eigen::SparseMatrix<double> tet_prolongation(const TetMesh& coarse, const TetMes
     }
   for (int f = 0; f < fine.num_faces(); ++f) {
     if (const int parent = maps.parent_face[f]; parent >= 0) {
-      // RT0's normal component is constant on a face: a quarter carries a quarter of the flux.
-      const double share =
-          0.25 * (fine.face_normal(f).dot(coarse.face_normal(parent)) > 0 ? 1 : -1);
+      // RT0's normal component is constant on a face: a fine face carries its share of the flux.
+      const double share = maps.parent_face_share[f] *
+                           (fine.face_normal(f).dot(coarse.face_normal(parent)) > 0 ? 1 : -1);
       for (int i = 0; i < 3; ++i) t.emplace_back(sf(f, i), sc(parent, i), share);
       continue;
     }
     const int tc = maps.parent_tet_of_face[f];
-    const TetElement e(coarse, tc);
+    const SimplexElement<3> e(coarse, tc);
     const Point3 scaled_normal = fine.face_area(f) * fine.face_normal(f);
     for (int k = 0; k < 4; ++k) {
       // ψ_k is linear: its flux through a plane face is its value at the centroid times |f| n_f.
@@ -46,7 +46,8 @@ Eigen::SparseMatrix<double> tet_prolongation(const TetMesh& coarse, const TetMes
   return p;
 }
 
-std::vector<std::vector<int>> tet_vertex_patches(const TetSpace& space, std::array<int, 2>* split) {
+std::vector<std::vector<int>> tet_vertex_patches(const FoslsSpace<3>& space,
+                                                 std::array<int, 2>* split) {
   const TetMesh& mesh = space.mesh();
   const auto faces = mesh.vertex_faces();
   // The vertex pairs of the tetrahedra, sorted: the graph the two blocks are separated in.
@@ -84,7 +85,7 @@ std::vector<std::vector<int>> tet_vertex_patches(const TetSpace& space, std::arr
 namespace {
 
 /// The free σ DOFs of the fine faces inside one coarse tetrahedron: the way a flux move goes.
-std::vector<int> interior_sigma_dofs(const TetSpace& fine, const std::vector<int>& faces) {
+std::vector<int> interior_sigma_dofs(const FoslsSpace<3>& fine, const std::vector<int>& faces) {
   std::vector<int> dofs;
   for (int f : faces)
     for (int i = 0; i < 3; ++i)
@@ -96,7 +97,7 @@ std::vector<int> interior_sigma_dofs(const TetSpace& fine, const std::vector<int
 /// taken off quarter `from` arrives on quarter `to` as n_from · n_to of its S_n (the tangential
 /// rest falls on the fixed S_t), carried through the fine faces inside the coarse tetrahedron,
 /// whose values the truncation sets with the least energy.
-std::vector<std::pair<int, double>> flux_move(const TetSpace& fine, int from, int to,
+std::vector<std::pair<int, double>> flux_move(const FoslsSpace<3>& fine, int from, int to,
                                               const std::vector<int>& path) {
   const TetMesh& m = fine.mesh();
   std::vector<std::pair<int, double>> move;
@@ -107,7 +108,7 @@ std::vector<std::pair<int, double>> flux_move(const TetSpace& fine, int from, in
 }
 
 /// Makes the last two links, a coarse face's quarters 0–1 and 2–3, each other's partner.
-void pair_up(const TetSpace& fine, const std::vector<int>& quarters,
+void pair_up(const FoslsSpace<3>& fine, const std::vector<int>& quarters,
              std::vector<ContactLink>& links) {
   const int n = static_cast<int>(links.size());
   const TetMesh& m = fine.mesh();
@@ -125,7 +126,7 @@ void pair_up(const TetSpace& fine, const std::vector<int>& quarters,
 /// contact edge for U_n (its ends and the fine midpoint, interpolated with ½, ½ as in 2D) and
 /// two per coarse contact face for S_n (its four quarters, each with weight ¼), so that the 2D
 /// projections of the defect obstacle apply unchanged.
-std::vector<ContactLink> tet_contact_links(const TetSpace& coarse, const TetSpace& fine,
+std::vector<ContactLink> tet_contact_links(const FoslsSpace<3>& coarse, const FoslsSpace<3>& fine,
                                            const TetRefinementMaps& maps,
                                            const SparseMatrix& prolongation) {
   const TetMesh& cm = coarse.mesh();
@@ -133,19 +134,19 @@ std::vector<ContactLink> tet_contact_links(const TetSpace& coarse, const TetSpac
   for (std::size_t k = 0; k < maps.midpoint_ends.size(); ++k)
     midpoint[{maps.midpoint_ends[k][0], maps.midpoint_ends[k][1]}] =
         maps.num_coarse_vertices + static_cast<int>(k);
-  auto normal_u = [](const TetSpace& s, int v) {
+  auto normal_u = [](const FoslsSpace<3>& s, int v) {
     return s.is_contact_vertex(v) ? s.free_index(s.u_dof(v, 0)) : -1;
   };
   std::vector<ContactLink> links;
   std::set<std::pair<int, int>> edges;
   std::vector<std::vector<int>> quarters(cm.num_faces()), inside(cm.num_tets());
   for (int f = 0; f < fine.mesh().num_faces(); ++f) {
-    if (const int parent = maps.parent_face[f]; parent >= 0 && coarse.is_contact_face(parent))
+    if (const int parent = maps.parent_face[f]; parent >= 0 && coarse.is_contact_facet(parent))
       quarters[parent].push_back(f);
     if (const int t = maps.parent_tet_of_face[f]; t >= 0) inside[t].push_back(f);
   }
   for (int F = 0; F < cm.num_faces(); ++F) {
-    if (!coarse.is_contact_face(F)) continue;
+    if (!coarse.is_contact_facet(F)) continue;
     const auto& v = cm.face(F);
     for (int k = 0; k < 3; ++k) {
       const std::pair<int, int> e = std::minmax(v[k], v[(k + 1) % 3]);
@@ -179,11 +180,11 @@ std::vector<ContactLink> tet_contact_links(const TetSpace& coarse, const TetSpac
 /// Free DOFs of the tetrahedra touching the contact boundary, sorted: the strip smoother's
 /// block (docs/method.md §4.1). One layer, not 2D's two: in 3D the strip is a slab whose exact
 /// solve dominated the solve with two (docs/performance.md, "3D").
-std::vector<int> tet_contact_strip(const TetSpace& space) {
+std::vector<int> tet_contact_strip(const FoslsSpace<3>& space) {
   const TetMesh& mesh = space.mesh();
   std::vector<char> near(mesh.num_vertices(), 0);
   for (int f = 0; f < mesh.num_faces(); ++f)
-    if (space.is_contact_face(f))
+    if (space.is_contact_facet(f))
       for (int v : mesh.face(f)) near[v] = 1;
   auto touches = [&](int t) {
     const auto& v = mesh.tet(t);
@@ -192,7 +193,7 @@ std::vector<int> tet_contact_strip(const TetSpace& space) {
   std::vector<int> strip;
   for (int t = 0; t < mesh.num_tets(); ++t)
     if (touches(t))
-      for (int dof : space.tet_dofs(t))
+      for (int dof : space.cell_dofs(t))
         if (const int f = space.free_index(dof); f >= 0) strip.push_back(f);
   std::sort(strip.begin(), strip.end());
   strip.erase(std::unique(strip.begin(), strip.end()), strip.end());
@@ -201,11 +202,11 @@ std::vector<int> tet_contact_strip(const TetSpace& space) {
 
 }  // namespace
 
-TetDiscretization::TetDiscretization(TetHierarchy meshes, TetProblemData data)
+TetDiscretization::TetDiscretization(TetHierarchy meshes, ProblemData<3> data)
     : meshes_(std::move(meshes)), data_(std::move(data)) {
   for (const TetMesh& m : meshes_.meshes)
-    spaces_.push_back(std::make_unique<TetSpace>(m, data_.roles(), data_.prescribed()));
-  assembler_ = std::make_unique<TetAssembler>(*spaces_.back(), data_);
+    spaces_.push_back(std::make_unique<FoslsSpace<3>>(m, data_.boundary_roles()));
+  assembler_ = std::make_unique<FoslsAssembler<3>>(*spaces_.back(), data_);
   problem_ = assembler_->assemble_system();
 }
 
@@ -213,14 +214,14 @@ LevelHierarchy TetDiscretization::build_level_hierarchy() const {
   LevelHierarchy h;
   h.levels.resize(meshes_.num_levels());
   for (int j = 0; j < meshes_.num_levels(); ++j) {
-    const TetSpace& fine = *spaces_[j];
+    const FoslsSpace<3>& fine = *spaces_[j];
     Level& level = h.levels[j];
     level.num_dofs = fine.num_free();
     level.patches = tet_vertex_patches(fine, &level.patch_split);
     level.contact_strip = tet_contact_strip(fine);
     level.block_factorization = BlockFactorization::held_rows;
     if (j == 0) continue;
-    const TetSpace& coarse = *spaces_[j - 1];
+    const FoslsSpace<3>& coarse = *spaces_[j - 1];
     // In both levels' rotated coordinates (contact frames), like the 2D free_prolongation.
     const Eigen::SparseMatrix<double> full =
         fine.rotation().transpose() *

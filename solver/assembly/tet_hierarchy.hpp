@@ -6,7 +6,7 @@
 #include <memory>
 #include <vector>
 
-#include "assembly/tet_assembler.hpp"
+#include "assembly/fosls_assembler.hpp"
 #include "core/level_hierarchy.hpp"
 #include "mesh/tet_refinement.hpp"
 
@@ -21,27 +21,27 @@ Eigen::SparseMatrix<double> tet_prolongation(const TetMesh& coarse, const TetMes
 /// The vertex patches of a space in its free numbering: the vertex's u DOFs and the σ DOFs of
 /// every face through it (the Arnold–Falk–Winther star), in two_vertex_blocks' order; `split`,
 /// when given, receives the ends of the two blocks a sweep may run on two threads.
-std::vector<std::vector<int>> tet_vertex_patches(const TetSpace& space,
+std::vector<std::vector<int>> tet_vertex_patches(const FoslsSpace<3>& space,
                                                  std::array<int, 2>* split = nullptr);
 
 /// A case's 3D discretisation on all levels: spaces, the finest level's QP and the hierarchy.
 class TetDiscretization {
  public:
-  TetDiscretization(TetHierarchy meshes, TetProblemData data);
+  TetDiscretization(TetHierarchy meshes, ProblemData<3> data);
   TetDiscretization(const TetDiscretization&) = delete;  // the assembler refers to data_
   TetDiscretization& operator=(const TetDiscretization&) = delete;
   const TetHierarchy& meshes() const { return meshes_; }
-  const TetSpace& finest_space() const { return *spaces_.back(); }
-  const TetAssembler& assembler() const { return *assembler_; }
-  const TetAssembledProblem& problem() const { return problem_; }
+  const FoslsSpace<3>& finest_space() const { return *spaces_.back(); }
+  const FoslsAssembler<3>& assembler() const { return *assembler_; }
+  const AssembledProblem& problem() const { return problem_; }
   LevelHierarchy build_level_hierarchy() const;
 
  private:
   TetHierarchy meshes_;
-  TetProblemData data_;
-  std::vector<std::unique_ptr<TetSpace>> spaces_;
-  std::unique_ptr<TetAssembler> assembler_;
-  TetAssembledProblem problem_;
+  ProblemData<3> data_;
+  std::vector<std::unique_ptr<FoslsSpace<3>>> spaces_;
+  std::unique_ptr<FoslsAssembler<3>> assembler_;
+  AssembledProblem problem_;
 };
 
 }  // namespace fosls

@@ -25,9 +25,9 @@ double seconds(Clock::time_point a, Clock::time_point b) {
   return std::chrono::duration<double>(b - a).count();
 }
 
-bool has_contact(const ProblemData& data) {
+bool has_contact(const ProblemData<2>& data) {
   return std::any_of(data.groups.begin(), data.groups.end(),
-                     [](const GroupData& g) { return g.role == GroupRole::kContact; });
+                     [](const GroupData<2>& g) { return g.role == GroupRole::kContact; });
 }
 
 /// All DOFs of a mesh's space (order 1: 2 per vertex and per edge; order 2: 2 per vertex, 6 per
@@ -181,8 +181,9 @@ std::string stop_after_solve(const CaseSolution& solution, const CaseSpec& spec,
 
 }  // namespace
 
-CaseSolution solve_case_levels(MeshHierarchy meshes, const ProblemData& data, const CaseSpec& spec,
-                               const CaseSolveObserver& observer, const Vector* start) {
+CaseSolution solve_case_levels(MeshHierarchy meshes, const ProblemData<2>& data,
+                               const CaseSpec& spec, const CaseSolveObserver& observer,
+                               const Vector* start) {
   CaseSolution solution;
   // A red refinement is two bisections: the generation counts bisections from the coarse mesh.
   BisectionState state = longest_edge_state(meshes.finest(), 2 * (meshes.num_levels() - 1));
@@ -198,7 +199,7 @@ CaseSolution solve_case_levels(MeshHierarchy meshes, const ProblemData& data, co
     const Discretization& disc = *solution.disc;
     solution.order2.reset();
     if (spec.mesh.order == 2)
-      solution.order2 = std::make_unique<P2Rt1Space>(disc.meshes().finest(), data.roles());
+      solution.order2 = std::make_unique<P2Rt1Space>(disc.meshes().finest(), data.boundary_roles());
     solution.dofs = solution.order2 ? solution.order2->num_free() : disc.problem().qp.size();
     solution.dofs_total =
         solution.order2 ? solution.order2->num_dofs() : disc.finest_space().num_dofs();

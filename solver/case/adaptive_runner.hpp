@@ -78,8 +78,8 @@ struct CaseSolveObserver {
 /// Solves on `meshes` and, when the case asks for it, adapts. `start`, when given and of the
 /// finest level's size, is the first solve's initial iterate (continuation; no nested
 /// iteration then). Throws IndefiniteSystemError when the weights make the matrix indefinite.
-CaseSolution solve_case_levels(MeshHierarchy meshes, const ProblemData& data, const CaseSpec& spec,
-                               const CaseSolveObserver& observer = {},
+CaseSolution solve_case_levels(MeshHierarchy meshes, const ProblemData<2>& data,
+                               const CaseSpec& spec, const CaseSolveObserver& observer = {},
                                const Vector* start = nullptr);
 
 /// The result's `adaptivity` object (docs/result-format.md).

@@ -29,17 +29,17 @@ ObjectVariant square_variant() {
 
 ObjectVariant hertz_variant() {
   const HertzParams hertz;
-  return {"hertz",
-          "the hertz geometry",
-          "",
-          {optional_field("radius", number_value(Range::positive()), hertz.radius, "radius R"),
-           optional_field("contact_fraction", number_value(Range::open(0, 1)),
-                          hertz.contact_fraction,
-                          "arc points with |x| ≤ contact_fraction · R form the group contact"),
-           optional_field("grading", number_value(Range::closed(1, 100)), hertz.grading,
-                          "coarse edges grow from size near the origin to grading · size")},
-          {},
-          ""};
+  return {
+      "hertz",
+      "the hertz geometry",
+      "",
+      {optional_field("radius", number_value(Range::positive()), hertz.radius, "radius R"),
+       optional_field("contact_fraction", number_value(Range::open(0, 1)), hertz.contact_fraction,
+                      "arc points with |x| ≤ contact_fraction · R form the group contact"),
+       optional_field("grading", number_value(Range::closed(1, 100)), hertz.grading,
+                      "coarse edges grow from size near the origin to grading · size")},
+      {},
+      ""};
 }
 
 ValueRule cells_value(int max) { return integer_value(Range::closed(1, max)); }
@@ -58,7 +58,8 @@ ObjectVariant box_variant() {
   return {"box",
           "the box",
           "",
-          {optional_field("lengths", tuple_value(number_value(), 3, "an array of 3 numbers [lx, ly, lz]"),
+          {optional_field("lengths",
+                          tuple_value(number_value(), 3, "an array of 3 numbers [lx, ly, lz]"),
                           json::array({1, 1, 1}), "the edge lengths [lx, ly, lz] (each > 0)"),
            optional_field("cells", tuple_value(cells_value(64), 3, "an array of 3 integers"),
                           json::array({2, 2, 2}), "cubes along x, y and z (each 1 to 64)")},
@@ -68,23 +69,23 @@ ObjectVariant box_variant() {
 
 ObjectVariant half_ball_variant() {
   const HalfBallSpec ball;
-  return {"half_ball",
-          "the half ball",
-          "",
-          {optional_field("radius", number_value(Range::positive()), ball.radius, "radius R"),
-           optional_field("cells", cells_value(16), ball.cells,
-                          "Kuhn cubes along the depth of the coarse mesh; 2 × cells across"),
-           optional_field("grading", number_value(Range::closed(1, 4)), ball.grading,
-                          "element sizes grow as (distance to the pole)^(grading − 1)"),
-           optional_field("contact_fraction", number_value(Range::open(0, 1)),
-                          ball.contact_fraction,
-                          "sphere faces within contact_fraction · R of the axis form the group "
-                          "contact"),
-           optional_field("quarter", boolean_value(), ball.quarter,
-                          "only the quarter x ≥ 0, y ≥ 0, with the extra groups symmetry_x (x = 0) "
-                          "and symmetry_y (y = 0) for rollers: a quarter of the unknowns")},
-          {},
-          ""};
+  return {
+      "half_ball",
+      "the half ball",
+      "",
+      {optional_field("radius", number_value(Range::positive()), ball.radius, "radius R"),
+       optional_field("cells", cells_value(16), ball.cells,
+                      "Kuhn cubes along the depth of the coarse mesh; 2 × cells across"),
+       optional_field("grading", number_value(Range::closed(1, 4)), ball.grading,
+                      "element sizes grow as (distance to the pole)^(grading − 1)"),
+       optional_field("contact_fraction", number_value(Range::open(0, 1)), ball.contact_fraction,
+                      "sphere faces within contact_fraction · R of the axis form the group "
+                      "contact"),
+       optional_field("quarter", boolean_value(), ball.quarter,
+                      "only the quarter x ≥ 0, y ≥ 0, with the extra groups symmetry_x (x = 0) "
+                      "and symmetry_y (y = 0) for rollers: a quarter of the unknowns")},
+      {},
+      ""};
 }
 
 /// What each builtin is, and in which dimension.
@@ -115,15 +116,15 @@ const std::vector<Builtin>& builtins() {
 
 /// Why a builtin of the other dimension is refused.
 std::string other_dimension(const std::string& name, int dim) {
-  return dim == 2 ? "'" + name + "' is a 3D builtin (box or half_ball): a 3D case needs "
-                                 "\"dimension\": 3; the 2D builtins are square and hertz"
-                  : "'" + name + "' is a 2D builtin (square or hertz); the 3D builtins are box "
-                                 "and half_ball";
+  return dim == 2 ? "'" + name +
+                        "' is a 3D builtin (box or half_ball): a 3D case needs "
+                        "\"dimension\": 3; the 2D builtins are square and hertz"
+                  : "'" + name +
+                        "' is a 2D builtin (square or hertz); the 3D builtins are box "
+                        "and half_ball";
 }
 
-std::string names_text(int dim) {
-  return in_dimension(dim, "square or hertz", "box or half_ball");
-}
+std::string names_text(int dim) { return in_dimension(dim, "square or hertz", "box or half_ball"); }
 
 }  // namespace
 
@@ -153,9 +154,9 @@ ValueRule builtin_value(int dim) {
   }
   const std::string quoted =
       in_dimension(dim, "\"square\" or \"hertz\"", "\"box\" or \"half_ball\"");
-  return one_of_value({names, object_value(builtin_rule(dim))},
-                      "the name of a builtin geometry (" + quoted +
-                          ") or an object {\"name\": ..., parameters}");
+  return one_of_value(
+      {names, object_value(builtin_rule(dim))},
+      "the name of a builtin geometry (" + quoted + ") or an object {\"name\": ..., parameters}");
 }
 
 std::string builtin_meaning(int dim) {

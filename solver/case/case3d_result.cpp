@@ -11,6 +11,7 @@
 #include "case/result_json.hpp"
 #include "case/result_warnings.hpp"
 #include "case/solver_methods.hpp"
+#include "post/contact_force.hpp"
 
 namespace fosls {
 
@@ -27,13 +28,14 @@ struct ContactSummary {
 };
 
 ContactSummary contact_summary(const TetDiscretization& disc, const Vector& x_full) {
-  const TetAssembler& a = disc.assembler();
+  const FoslsSpace<3>& space = disc.finest_space();
   const TetMesh& mesh = disc.meshes().finest();
-  const std::vector<double> p = a.contact_pressure(x_full);
+  const double scale = disc.problem().stress_scale;
+  const std::vector<double> p = contact_pressure(space, x_full, scale);
   ContactSummary s;
-  s.force = a.contact_force(x_full);
+  s.force = contact_force(space, x_full, scale);
   for (int f = 0; f < mesh.num_faces(); ++f) {
-    if (!disc.finest_space().is_contact_face(f)) continue;
+    if (!disc.finest_space().is_contact_facet(f)) continue;
     ++s.faces;
     s.max_pressure = std::max(s.max_pressure, p[f]);
     if (p[f] > 0) {
@@ -126,13 +128,13 @@ std::vector<ResultWarning> contact_warnings(const CaseSpec& spec, const TetMesh&
 /// Contact vertices whose obstacle constraint a roller displaced: the roller's axis was more
 /// than 30° from the contact's tangent plane (roller_frame), so its data won and the vertex
 /// may cross the obstacle. A documented rule, but the answer is not what the case says there.
-std::vector<ResultWarning> roller_warnings(const TetSpace& space) {
+std::vector<ResultWarning> roller_warnings(const FoslsSpace<3>& space) {
   const TetMesh& mesh = space.mesh();
   std::vector<char> seen(mesh.num_vertices(), 0);
   int count = 0;
   Point3 first = Point3::Zero();
   for (int f = 0; f < mesh.num_faces(); ++f) {
-    if (!space.is_contact_face(f)) continue;
+    if (!space.is_contact_facet(f)) continue;
     for (int v : mesh.face(f)) {
       if (seen[v] || space.is_contact_vertex(v)) continue;
       seen[v] = 1;
@@ -157,7 +159,7 @@ std::vector<ResultWarning> roller_warnings(const TetSpace& space) {
 
 json case3d_result(const CaseSpec& spec, const TetDiscretization& disc, const Vector& x_free,
                    const SolverReport& report) {
-  const TetAssembler& a = disc.assembler();
+  const FoslsAssembler<3>& a = disc.assembler();
   const Vector x_full = a.full_vector(disc.problem(), x_free);
   const TetMesh& mesh = disc.meshes().finest();
   const ContactSummary c = contact_summary(disc, x_full);

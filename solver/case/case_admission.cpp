@@ -11,6 +11,7 @@
 #include "case/time_estimate.hpp"
 #include "mesh/coarse_mesh_estimate.hpp"
 #include "mesh/geometry_checks.hpp"
+#include "mesh/group_name_index.hpp"
 
 namespace fosls {
 
@@ -36,9 +37,9 @@ std::vector<CaseError> group_problems(const CaseSpec& spec,
   std::vector<CaseError> errors;
   bool dirichlet = false;
   std::array<bool, 3> held = {false, false, false};  // some group prescribes u_x, u_y, u_z
+  const GroupNameIndex known(group_names ? *group_names : std::vector<std::string>{});
   for (const auto& [name, bc] : spec.boundary) {
-    if (group_names &&
-        std::find(group_names->begin(), group_names->end(), name) == group_names->end())
+    if (group_names && known.find(*group_names, name) < 0)
       errors.push_back(unknown_group_problem(name, *group_names));
     dirichlet |= bc.type == BoundaryCondition::Type::kDirichlet;
     for (int c = 0; c < 3; ++c)

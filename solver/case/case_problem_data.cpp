@@ -9,21 +9,23 @@ namespace fosls {
 
 namespace {
 
-RigidObstacle rigid_obstacle(const Obstacle& o) {
-  RigidObstacle r;
-  r.kind = o.kind == Obstacle::Kind::kPlane  ? RigidObstacle::Kind::kPlane
-           : o.kind == Obstacle::Kind::kBall ? RigidObstacle::Kind::kCircle
-                                             : RigidObstacle::Kind::kGap;
-  r.point = o.point.head<2>(), r.normal = o.normal.head<2>(), r.center = o.center.head<2>();
-  r.radius = o.radius;
+RigidObstacle<2> rigid_obstacle(const Obstacle& o) {
+  RigidObstacle<2> r;
+  r.kind = o.kind == Obstacle::Kind::kPlane  ? RigidObstacle<2>::Kind::kPlane
+           : o.kind == Obstacle::Kind::kBall ? RigidObstacle<2>::Kind::kBall
+                                             : RigidObstacle<2>::Kind::kGap;
+  // The reader normalised the normal; normalised once more, as locate_obstacle did before it
+  // took unit normals, so that 2D results stay bit for bit.
+  r.point = o.point.head<2>(), r.normal = o.normal.head<2>().normalized();
+  r.center = o.center.head<2>(), r.radius = o.radius;
   return r;
 }
 
 }  // namespace
 
 /// The case in the assembly layer's terms.
-ProblemData problem_data(const CaseSpec& spec, const Mesh& mesh) {
-  ProblemData d;
+ProblemData<2> problem_data(const CaseSpec& spec, const Mesh& mesh) {
+  ProblemData<2> d;
   d.material = {.mu = spec.material.mu, .lambda = spec.material.lambda};
   const Weights& w = spec.weights;
   // The c1 term in units of the body's size (mesh/length_scale.hpp).
@@ -36,12 +38,11 @@ ProblemData problem_data(const CaseSpec& spec, const Mesh& mesh) {
       d.body_force[i] = compile_scalar(f);
   d.groups.resize(mesh.group_names().size());  // unnamed groups: traction free
   for (const auto& [name, bc] : spec.boundary) {
-    GroupData& g = d.groups[mesh.group_index(name)];
+    GroupData<2>& g = d.groups[mesh.group_index(name)];
     switch (bc.type) {
       case BoundaryCondition::Type::kDirichlet:
-        g.role = !bc.prescribed[1]   ? GroupRole::kDirichletX
-                 : !bc.prescribed[0] ? GroupRole::kDirichletY
-                                     : GroupRole::kDirichlet;
+        g.role = GroupRole::kDirichlet;
+        g.prescribed = (bc.prescribed[0] ? 1 : 0) | (bc.prescribed[1] ? 2 : 0);
         break;
       case BoundaryCondition::Type::kNeumann:
         g.role = GroupRole::kNeumann;

@@ -10,6 +10,6 @@ namespace fosls {
 
 /// `spec.weights` as used (length_scale set, c3 chosen when "auto"); groups indexed like
 /// mesh.group_names(), the unnamed ones traction free.
-ProblemData problem_data(const CaseSpec& spec, const Mesh& mesh);
+ProblemData<2> problem_data(const CaseSpec& spec, const Mesh& mesh);
 
 }  // namespace fosls

@@ -64,7 +64,7 @@ bool has_roller(const CaseSpec& spec) {
 
 /// `spec` carries the weights as used (c3 chosen when "auto").
 CaseException indefinite(const CaseSpec& spec, const MeshHierarchy& meshes,
-                         const ProblemData& data) {
+                         const ProblemData<2>& data) {
   const Weights& w = spec.weights;
   std::ostringstream m;
   m << "the weights c1 = " << w.c1 << ", c2 = " << w.c2 << ", c3 = " << w.c3 << ", c4 = " << w.c4
@@ -117,7 +117,7 @@ std::vector<CaseError> validate_case(const nlohmann::json& j, const CaseReadOpti
 namespace {
 
 /// u at every vertex from a full (rotated) DOF vector.
-std::vector<Point> vertex_displacements(const FoslsSpace& space, const Vector& x_full) {
+std::vector<Point> vertex_displacements(const FoslsSpace<2>& space, const Vector& x_full) {
   const Vector cartesian = space.rotation() * x_full;
   std::vector<Point> u(space.mesh().num_vertices());
   for (int v = 0; v < static_cast<int>(u.size()); ++v)
@@ -139,7 +139,7 @@ RunOutput run_point(const CaseSpec& spec, const RunControl& control, const CaseL
     throw CaseException(std::move(errors));
   CaseSpec used = spec;  // the case with the weights as used
   used.weights.length_scale = length_scale(coarse);
-  ProblemData data = problem_data(used, coarse);
+  ProblemData<2> data = problem_data(used, coarse);
   if (control.reference) data.reference_displacement = *control.reference;
   const Mesh coarse_mesh = coarse;  // small; for the message of indefinite weights
   // The limit counts the whole run: a user sets it for the answer's latency, not the loop's.

@@ -5,6 +5,7 @@
 #include "case/case_sections.hpp"
 #include "case/mesh_factory.hpp"
 #include "case/rule_checker.hpp"
+#include "mesh/group_name_index.hpp"
 
 namespace fosls {
 
@@ -55,9 +56,9 @@ void add_unknown_group_problems(const nlohmann::json& j, const CaseReadOptions& 
   if (!checker.check_object(j["mesh"], *mesh_rule(options, 2), "/mesh")) return;
   std::vector<std::string> groups;
   if (!group_names(read_mesh_section(j["mesh"]), groups)) return;
+  const GroupNameIndex known(groups);
   for (const auto& [name, condition] : j["boundary"].items())
-    if (std::find(groups.begin(), groups.end(), name) == groups.end())
-      errors.push_back(unknown_group_problem(name, groups));
+    if (known.find(groups, name) < 0) errors.push_back(unknown_group_problem(name, groups));
 }
 
 }  // namespace fosls

@@ -45,12 +45,12 @@ void check_plane(const json& j, const std::string& pointer, RuleChecker& checker
 /// (and a sweep parameter) rather than a change of the body's Dirichlet data.
 FieldRule obstacle_displacement_field(int dim) {
   const json none = dim == 3 ? json::array({0, 0, 0}) : json::array({0, 0});
-  return optional_field(
-      "displacement", point_in(dim), dim == 0 ? json() : none,
-      "rigid displacement " + names(dim, "dx, dy", "dx, dy, dz") +
-          " of the obstacle from where point/center put it; " +
-          in_dimension(dim, "[0, 0.01]", "[0, 0, 0.01]") +
-          " moves it 0.01 up, into a body above it" + (dim == 0 ? "; absent: none" : ""));
+  return optional_field("displacement", point_in(dim), dim == 0 ? json() : none,
+                        "rigid displacement " + names(dim, "dx, dy", "dx, dy, dz") +
+                            " of the obstacle from where point/center put it; " +
+                            in_dimension(dim, "[0, 0.01]", "[0, 0, 0.01]") +
+                            " moves it 0.01 up, into a body above it" +
+                            (dim == 0 ? "; absent: none" : ""));
 }
 
 ObjectVariant circle_variant(int dim) {
@@ -155,26 +155,26 @@ void check_contact(const json& j, const std::string& pointer, RuleChecker& check
 
 ObjectVariant contact_variant(const CaseReadOptions& options, int dim) {
   const std::string round = in_dimension(dim, "circle", "sphere");
-  return {"contact",
-          "a contact condition",
-          "contact with a rigid obstacle, frictionless unless `friction` is given",
-          {optional_field("obstacle", object_value(obstacle_rule(options, dim)), nullptr,
-                          "a plane, " + round + " or gap"),
-           plane_point_field(dim, false), plane_normal_field(dim, false),
-           optional_field("friction", object_value(friction_rule(options, dim)), nullptr,
-                          "Coulomb or Tresca friction (docs/method.md §8); absent: frictionless"),
-           optional_field("direction", choice_value({"body_normal", "obstacle_normal"}),
-                          "body_normal",
-                          "the constrained displacement component: u·n with the body's normal, "
-                          "or u·ν with the obstacle's normal")},
-          check_contact,
-          "obstacle_normal needs a plane or " + round +
-              " obstacle; the normal of point and normal is not zero",
-          {{{{"obstacle"}, {"point", "normal"}},
-            "missing field \"obstacle\": a plane, " + round +
-                " or gap (or a plane by the condition's own point and normal)",
-            "give the obstacle either as obstacle or as point and normal (a plane), not {given}",
-            "obstacle"}}};
+  return {
+      "contact",
+      "a contact condition",
+      "contact with a rigid obstacle, frictionless unless `friction` is given",
+      {optional_field("obstacle", object_value(obstacle_rule(options, dim)), nullptr,
+                      "a plane, " + round + " or gap"),
+       plane_point_field(dim, false), plane_normal_field(dim, false),
+       optional_field("friction", object_value(friction_rule(options, dim)), nullptr,
+                      "Coulomb or Tresca friction (docs/method.md §8); absent: frictionless"),
+       optional_field("direction", choice_value({"body_normal", "obstacle_normal"}), "body_normal",
+                      "the constrained displacement component: u·n with the body's normal, "
+                      "or u·ν with the obstacle's normal")},
+      check_contact,
+      "obstacle_normal needs a plane or " + round +
+          " obstacle; the normal of point and normal is not zero",
+      {{{{"obstacle"}, {"point", "normal"}},
+        "missing field \"obstacle\": a plane, " + round +
+            " or gap (or a plane by the condition's own point and normal)",
+        "give the obstacle either as obstacle or as point and normal (a plane), not {given}",
+        "obstacle"}}};
 }
 
 Point3 read_vector(const json& j) {

@@ -12,8 +12,8 @@
 #include "case/case_admission.hpp"
 #include "case/case_error.hpp"
 #include "case/early_group_check.hpp"
+#include "case/expression.hpp"
 #include "case/mesh_factory.hpp"
-#include "case/obstacle3d.hpp"
 #include "case/solve3d_checks.hpp"
 #include "core/non_finite.hpp"
 #include "mesh/gmsh_mesh.hpp"
@@ -77,28 +77,34 @@ void check_groups(const CaseSpec& spec, const TetMesh& mesh) {
   if (!errors.empty()) throw CaseException(std::move(errors));
 }
 
-/// A scalar of the case as a function of a point, compiled once.
-ScalarFunction3 point_function(const Scalar& s) {
-  return [f = compile_scalar_3d(s)](const Point3& x) { return f(x.x(), x.y(), x.z()); };
+/// The obstacle in the assembly layer's terms (the reader added its displacement already).
+RigidObstacle<3> rigid_obstacle(const Obstacle& o) {
+  RigidObstacle<3> r;
+  r.kind = o.kind == Obstacle::Kind::kPlane  ? RigidObstacle<3>::Kind::kPlane
+           : o.kind == Obstacle::Kind::kBall ? RigidObstacle<3>::Kind::kBall
+                                             : RigidObstacle<3>::Kind::kGap;
+  r.point = o.point, r.normal = o.normal, r.center = o.center, r.radius = o.radius;
+  return r;
 }
 
 /// Step 4: the problem data on the mesh's groups.
-TetProblemData problem_data(const CaseSpec& spec, const TetMesh& mesh) {
-  TetProblemData d;
+ProblemData<3> problem_data(const CaseSpec& spec, const TetMesh& mesh) {
+  ProblemData<3> d;
   d.material = {.mu = spec.material.mu, .lambda = spec.material.lambda};
   const Weights& w = spec.weights;
   d.weights = {.c1 = w.c1, .c2 = w.c2, .c3 = w.c3, .c4 = w.c4, .c2_volumetric = w.c2_volumetric};
   // A zero component stays empty: the assembler then adds no body force at all.
   for (int i = 0; i < 3; ++i)
     if (const Scalar& f = spec.body_force[i]; !f.is_constant() || f.value != 0.0)
-      d.body_force[i] = point_function(f);
+      d.body_force[i] = compile_scalar_3d(f);
   d.groups.resize(mesh.group_names().size());
   for (const auto& [name, bc] : spec.boundary) {
-    TetProblemData::Group& group = d.groups[tet_group_index(mesh, name)];
+    GroupData<3>& group = d.groups[tet_group_index(mesh, name)];
     if (bc.type == BoundaryCondition::Type::kContact) {
       group.role = GroupRole::kContact;
-      group.gap_along_normal = [gap = ObstacleGap3d(bc.obstacle)](
-                                   const Point3& x, const Point3& n) { return gap.along(x, n); };
+      group.contact.obstacle = rigid_obstacle(bc.obstacle);
+      if (bc.obstacle.kind == Obstacle::Kind::kGap)
+        group.contact.gap = compile_scalar_3d(bc.obstacle.gap);
       continue;
     }
     const bool dirichlet = bc.type == BoundaryCondition::Type::kDirichlet;
@@ -108,7 +114,7 @@ TetProblemData problem_data(const CaseSpec& spec, const TetMesh& mesh) {
     for (int i = 0; i < 3; ++i) {
       if (dirichlet && !bc.prescribed[i]) continue;
       group.prescribed |= 1 << i;
-      if (i == 0 || !group.normal_pressure) group.values[i] = point_function(bc.values[i]);
+      if (i == 0 || !group.normal_pressure) group.values[i] = compile_scalar_3d(bc.values[i]);
     }
   }
   return d;
@@ -143,7 +149,7 @@ RunOutput run_3d_point(const CaseSpec& spec, const RunControl& control, const Ca
   const double mesh_s = seconds_since(t0);
 
   const auto t1 = Clock::now();
-  TetProblemData data = problem_data(spec, meshes.finest());
+  ProblemData<3> data = problem_data(spec, meshes.finest());
   const TetDiscretization disc(std::move(meshes), std::move(data));
   deadline.check("assembling the finest level");
   const double assembly_s = seconds_since(t1);
@@ -180,7 +186,7 @@ RunOutput run_3d_point(const CaseSpec& spec, const RunControl& control, const Ca
                           {"solve_s", solve_s},
                           {"total_s", seconds_since(t0)}};
   if (control.want_vtu) {
-    const TetAssembler& a = disc.assembler();
+    const FoslsAssembler<3>& a = disc.assembler();
     out.vtu = write_tet_vtu(a, disc.problem(), a.full_vector(disc.problem(), x),
                             control.vtu_ascii ? VtuEncoding::kAscii : VtuEncoding::kBinary);
   }

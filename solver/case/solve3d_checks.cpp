@@ -46,12 +46,7 @@ std::optional<double> builtin_3d_unknowns(const MeshSpec& m) {
   return std::nullopt;
 }
 
-int tet_group_index(const TetMesh& mesh, const std::string& name) {
-  const auto& names = mesh.group_names();
-  for (std::size_t g = 0; g < names.size(); ++g)
-    if (names[g] == name) return static_cast<int>(g);
-  return -1;
-}
+int tet_group_index(const TetMesh& mesh, const std::string& name) { return mesh.group_index(name); }
 
 namespace {
 

@@ -1,84 +1,71 @@
 #include "fem/fosls_space.hpp"
 
 #include <algorithm>
-#include <cmath>
+#include <bit>
 #include <stdexcept>
+
+#include "fem/contact_frame.hpp"
 
 namespace fosls {
 
-int prescribed_components(GroupRole role) {
-  switch (role) {
-    case GroupRole::kDirichlet:
-      return 3;
-    case GroupRole::kDirichletX:
-      return 1;
-    case GroupRole::kDirichletY:
-      return 2;
-    case GroupRole::kNeumann:
-    case GroupRole::kContact:
-      break;
-  }
-  return 0;
-}
-
-struct FoslsSpace::VertexMarks {
-  std::vector<int> prescribed;  ///< bit c: u_c is Dirichlet data at the vertex
-  std::vector<Point> averaged;  ///< sum of the normals of the contact edges at the vertex
-  std::vector<int> curve_of;    ///< the curve of a contact edge at the vertex (−1: none)
+template <int dim>
+struct FoslsSpace<dim>::VertexMarks {
+  std::vector<int> prescribed;     ///< bit c: u_c is Dirichlet data at the vertex
+  std::vector<char> contact;       ///< the vertex lies on a contact facet
+  std::vector<Vec<dim>> averaged;  ///< sum of the normals of the contact facets at the vertex
+  std::vector<int> curve_of;       ///< 2D: the arc of a contact edge at the vertex (−1: none)
 };
 
-FoslsSpace::FoslsSpace(const Mesh& mesh, const std::vector<GroupRole>& roles,
-                       const std::vector<Point>& vertex_normals,
-                       const std::vector<char>& frictional)
+template <int dim>
+FoslsSpace<dim>::FoslsSpace(const MeshType& mesh, const std::vector<BoundaryRole>& groups,
+                            const std::vector<Vec<dim>>& vertex_normals)
     : mesh_(&mesh) {
-  const int nv = mesh.num_vertices(), ne = mesh.num_edges();
-  if (roles.size() != mesh.group_names().size())
+  if (groups.size() != mesh.group_names().size())
     throw std::logic_error("FoslsSpace: one role per boundary group expected");
   roles_.assign(num_dofs(), DofRole::kFree);
-  contact_vertex_.assign(nv, 0);
-  contact_edge_.assign(ne, 0);
-  vertex_normal_.assign(nv, Point::Zero());
-  set_vertex_roles(mark_boundary_edges(roles, frictional), vertex_normals);
+  contact_facet_.assign(mesh.num_facets(), 0);
+  set_vertex_roles(mark_boundary_facets(groups), vertex_normals);
   number_free_dofs();
 }
 
-FoslsSpace::VertexMarks FoslsSpace::mark_boundary_edges(const std::vector<GroupRole>& roles,
-                                                        const std::vector<char>& frictional) {
-  const int nv = mesh_->num_vertices(), ne = mesh_->num_edges();
+template <int dim>
+typename FoslsSpace<dim>::VertexMarks FoslsSpace<dim>::mark_boundary_facets(
+    const std::vector<BoundaryRole>& groups) {
+  const int nv = mesh_->num_vertices();
+  constexpr int every = (1 << dim) - 1;
   VertexMarks m;
   m.prescribed.assign(nv, 0);
-  m.averaged.assign(nv, Point::Zero());
+  m.contact.assign(nv, 0);
+  m.averaged.assign(nv, Vec<dim>::Zero());
   m.curve_of.assign(nv, -1);
-  for (int e = 0; e < ne; ++e) {
-    int g = mesh_->edge_group(e);
+  for (int f = 0; f < mesh_->num_facets(); ++f) {
+    const int g = mesh_->facet_group(f);
     if (g < 0) continue;
-    const auto& pq = mesh_->edge(e);
-    switch (roles[g]) {
-      case GroupRole::kDirichlet:
-        m.prescribed[pq[0]] |= 3;
-        m.prescribed[pq[1]] |= 3;
-        break;
-      case GroupRole::kDirichletX:
-      case GroupRole::kDirichletY: {
-        const int c = roles[g] == GroupRole::kDirichletX ? 0 : 1;
-        m.prescribed[pq[0]] |= 1 << c;
-        m.prescribed[pq[1]] |= 1 << c;
-        roles_[sigma_dof(e, 1 - c)] = DofRole::kFixed;  // the free component's traction is 0
+    switch (groups[g].role) {
+      case GroupRole::kDirichlet: {
+        const int bits = groups[g].prescribed & every;
+        for (int v : mesh_->facet(f)) m.prescribed[v] |= bits;
+        for (int i = 0; i < dim; ++i)  // a free component's traction is zero (a roller)
+          if (!(bits & (1 << i))) roles_[sigma_dof(f, i)] = DofRole::kFixed;
         break;
       }
       case GroupRole::kNeumann:
-        roles_[sigma_dof(e, 0)] = roles_[sigma_dof(e, 1)] = DofRole::kFixed;
+        for (int i = 0; i < dim; ++i) roles_[sigma_dof(f, i)] = DofRole::kFixed;
         break;
       case GroupRole::kContact:
-        contact_edge_[e] = 1;
-        roles_[sigma_dof(e, 0)] = DofRole::kNormalS;
-        roles_[sigma_dof(e, 1)] = !frictional.empty() && frictional[g]
-                                      ? DofRole::kTangentialS
-                                      : DofRole::kFixed;  // σ_nt = 0
-        for (int v : pq) {
-          contact_vertex_[v] = 1;
-          m.averaged[v] += mesh_->edge_normal(e);
-          if (mesh_->edge_curve(e) >= 0) m.curve_of[v] = mesh_->edge_curve(e);
+        if (dim == 3 && groups[g].frictional)
+          throw std::invalid_argument(
+              "friction in 3D: its tangential bound |S_t| ≤ s̄ is a disc, not the box that the "
+              "solvers' bounds are; 3D contact is frictionless so far");
+        contact_facet_[f] = 1;
+        roles_[sigma_dof(f, 0)] = DofRole::kNormalS;
+        for (int i = 1; i < dim; ++i)  // σ_nt = 0, or bounded with friction
+          roles_[sigma_dof(f, i)] = groups[g].frictional ? DofRole::kTangentialS : DofRole::kFixed;
+        for (int v : mesh_->facet(f)) {
+          m.contact[v] = 1;
+          m.averaged[v] += mesh_->facet_normal(f);
+          if constexpr (dim == 2)
+            if (mesh_->edge_curve(f) >= 0) m.curve_of[v] = mesh_->edge_curve(f);
         }
         break;
     }
@@ -86,51 +73,52 @@ FoslsSpace::VertexMarks FoslsSpace::mark_boundary_edges(const std::vector<GroupR
   return m;
 }
 
-Point FoslsSpace::contact_normal(int v, const VertexMarks& marks,
-                                 const std::vector<Point>& vertex_normals) const {
-  const Mesh& mesh = *mesh_;
+template <int dim>
+Vec<dim> FoslsSpace<dim>::contact_normal(int v, const VertexMarks& marks,
+                                         const std::vector<Vec<dim>>& vertex_normals) const {
   if (!vertex_normals.empty()) return vertex_normals[v].normalized();
-  if (const int curve = marks.curve_of[v]; curve >= 0) {
-    // Exact normal of the arc, pointing out of the body like the edge normals do.
-    Point radial = (mesh.vertex(v) - mesh.curves()[curve].center).normalized();
-    return radial.dot(marks.averaged[v]) >= 0 ? radial : Point(-radial);
+  if constexpr (dim == 2) {
+    if (const int curve = marks.curve_of[v]; curve >= 0) {
+      // Exact normal of the arc, pointing out of the body like the edge normals do. (3D takes
+      // the mean of the faces' normals on a sphere too: docs/method.md §11.)
+      const Point radial = (mesh_->vertex(v) - mesh_->curves()[curve].center).normalized();
+      return radial.dot(marks.averaged[v]) >= 0 ? radial : Point(-radial);
+    }
   }
   return marks.averaged[v].normalized();
 }
 
-void FoslsSpace::set_vertex_roles(const VertexMarks& marks,
-                                  const std::vector<Point>& vertex_normals) {
-  const int nv = mesh_->num_vertices();
-  for (int v = 0; v < nv; ++v) {
-    if (marks.prescribed[v] == 3) {
-      contact_vertex_[v] = 0;  // Dirichlet data win over the contact constraint
-      roles_[u_dof(v, 0)] = roles_[u_dof(v, 1)] = DofRole::kFixed;
+template <int dim>
+void FoslsSpace<dim>::set_vertex_roles(const VertexMarks& marks,
+                                       const std::vector<Vec<dim>>& vertex_normals) {
+  constexpr int every = (1 << dim) - 1;
+  frame_of_vertex_.assign(mesh_->num_vertices(), -1);
+  for (int v = 0; v < mesh_->num_vertices(); ++v) {
+    const int bits = marks.prescribed[v];
+    if (bits == every) {  // Dirichlet data win over the contact constraint
+      for (int c = 0; c < dim; ++c) roles_[u_dof(v, c)] = DofRole::kFixed;
       continue;
     }
-    if (!contact_vertex_[v]) {
-      for (int c = 0; c < 2; ++c)
-        if (marks.prescribed[v] & (1 << c)) roles_[u_dof(v, c)] = DofRole::kFixed;
-      continue;
-    }
-    const Point n = contact_normal(v, marks, vertex_normals);
-    if (marks.prescribed[v]) {
-      // Where a roller meets the contact boundary (a symmetry plane through the contact zone)
-      // the prescribed axis is the tangent t = (−n_y, n_x): U_t is prescribed and U_n ≤ g
-      // stays. An oblique roller cannot be both; its Dirichlet data win.
-      const int c = marks.prescribed[v] == 1 ? 0 : 1;
-      if (std::abs(n[c]) > 1e-12) {
-        contact_vertex_[v] = 0;
-        roles_[u_dof(v, c)] = DofRole::kFixed;
+    if (marks.contact[v]) {
+      // Where rollers meet the contact boundary (symmetry planes through the contact zone) the
+      // prescribed axes become the frame's tangents, fixed, and U_n ≤ g stays.
+      const Mat<dim> frame = roller_frame<dim>(contact_normal(v, marks, vertex_normals), bits);
+      if (!frame.isZero()) {
+        frame_of_vertex_[v] = static_cast<int>(frames_.size());
+        frames_.push_back(frame);
+        roles_[u_dof(v, 0)] = DofRole::kNormalU;
+        for (int k = 1; k <= std::popcount(static_cast<unsigned>(bits)); ++k)
+          roles_[u_dof(v, k)] = DofRole::kFixed;
         continue;
       }
     }
-    vertex_normal_[v] = n;
-    roles_[u_dof(v, 0)] = DofRole::kNormalU;
-    roles_[u_dof(v, 1)] = marks.prescribed[v] ? DofRole::kFixed : DofRole::kFree;
+    for (int c = 0; c < dim; ++c)  // an oblique roller cannot be both: its data win
+      if (bits & (1 << c)) roles_[u_dof(v, c)] = DofRole::kFixed;
   }
 }
 
-void FoslsSpace::number_free_dofs() {
+template <int dim>
+void FoslsSpace<dim>::number_free_dofs() {
   full_to_free_.assign(num_dofs(), -1);
   // Reserved exactly: grown by push_back it kept up to twice its size on every level.
   free_to_full_.reserve(num_dofs() - std::count(roles_.begin(), roles_.end(), DofRole::kFixed));
@@ -141,39 +129,41 @@ void FoslsSpace::number_free_dofs() {
     }
 }
 
-Eigen::SparseMatrix<double> FoslsSpace::rotation() const {
+template <int dim>
+std::array<int, FoslsSpace<dim>::kCellDofs> FoslsSpace<dim>::cell_dofs(int t) const {
+  std::array<int, kCellDofs> d;
+  for (int k = 0; k <= dim; ++k)
+    for (int c = 0; c < dim; ++c) {
+      d[dim * k + c] = u_dof(mesh_->cell(t)[k], c);
+      d[dim * (dim + 1) + dim * k + c] = sigma_dof(mesh_->cell_facet(t, k), c);
+    }
+  return d;
+}
+
+template <int dim>
+Eigen::SparseMatrix<double> FoslsSpace<dim>::rotation() const {
   // Formed when asked for (setting up transfers, output), not kept: it is as large as a few
   // vectors of the level and nothing in a solve's iteration uses it.
-  const Mesh& mesh = *mesh_;
-  const int nv = mesh.num_vertices(), ne = mesh.num_edges();
   std::vector<Eigen::Triplet<double>> q;
-  q.reserve(num_dofs() + 2 * nv);
-  auto block = [&q](int d, const Point& n) {
-    // Columns: (n, t) with t = (−n_y, n_x).
-    q.emplace_back(d, d, n.x());
-    q.emplace_back(d + 1, d, n.y());
-    q.emplace_back(d, d + 1, -n.y());
-    q.emplace_back(d + 1, d + 1, n.x());
+  q.reserve(num_dofs() + dim * (dim - 1) * frames_.size());
+  auto block = [&q](int d, const Mat<dim>& frame) {
+    for (int c = 0; c < dim; ++c)
+      for (int r = 0; r < dim; ++r) q.emplace_back(d + r, d + c, frame(r, c));
   };
-  for (int v = 0; v < nv; ++v) {
-    if (contact_vertex_[v]) {
-      block(u_dof(v, 0), vertex_normal_[v]);
-    } else {
-      q.emplace_back(u_dof(v, 0), u_dof(v, 0), 1.0);
-      q.emplace_back(u_dof(v, 1), u_dof(v, 1), 1.0);
-    }
-  }
-  for (int e = 0; e < ne; ++e) {
-    if (contact_edge_[e]) {
-      block(sigma_dof(e, 0), mesh.edge_normal(e));
-    } else {
-      q.emplace_back(sigma_dof(e, 0), sigma_dof(e, 0), 1.0);
-      q.emplace_back(sigma_dof(e, 1), sigma_dof(e, 1), 1.0);
-    }
-  }
+  auto identity = [&q](int d) {
+    for (int r = 0; r < dim; ++r) q.emplace_back(d + r, d + r, 1.0);
+  };
+  for (int v = 0; v < mesh_->num_vertices(); ++v)
+    is_contact_vertex(v) ? block(u_dof(v, 0), vertex_frame(v)) : identity(u_dof(v, 0));
+  for (int f = 0; f < mesh_->num_facets(); ++f)
+    is_contact_facet(f) ? block(sigma_dof(f, 0), normal_frame<dim>(mesh_->facet_normal(f)))
+                        : identity(sigma_dof(f, 0));
   Eigen::SparseMatrix<double> rotation(num_dofs(), num_dofs());
   rotation.setFromTriplets(q.begin(), q.end());
   return rotation;
 }
+
+template class FoslsSpace<2>;
+template class FoslsSpace<3>;
 
 }  // namespace fosls

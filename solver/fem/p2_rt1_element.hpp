@@ -2,7 +2,7 @@
 // P2 and RT1 on one triangle: the local basis of the order-2 space (docs/method.md §10).
 //
 // Triangle T with counter-clockwise vertices a_0, a_1, a_2, edge e_k opposite a_k, as in
-// element_geometry.hpp.
+// simplex_element.hpp.
 // P2 (6 functions): node k < 3 the vertex a_k, λ_k(2λ_k − 1); node 3 + k the midpoint of e_k,
 //     4 λ_{k+1} λ_{k+2}.
 // RT1 (8 functions, each of degree 2 with a linear normal component on every edge and a linear
@@ -16,6 +16,7 @@
 #include <Eigen/Core>
 #include <array>
 
+#include "fem/facet_quadrature.hpp"
 #include "mesh/mesh.hpp"
 
 namespace fosls {
@@ -63,9 +64,5 @@ struct TrianglePoint {
 /// Seven points, exact for degree 5 (Strang–Fix / Dunavant): the order-2 integrands have
 /// degree 4.
 extern const std::array<TrianglePoint, 7> kTriangleDegree5;
-
-/// Gauss–Legendre on [0, 1], three points, exact for degree 5.
-constexpr std::array<double, 3> kEdgeGaussX = {0.1127016653792583, 0.5, 0.8872983346207417};
-constexpr std::array<double, 3> kEdgeGaussW = {5.0 / 18.0, 8.0 / 18.0, 5.0 / 18.0};
 
 }  // namespace fosls

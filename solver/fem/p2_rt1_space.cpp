@@ -4,22 +4,24 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "fem/contact_frame.hpp"
+
 namespace fosls {
 
-P2Rt1Space::P2Rt1Space(const Mesh& mesh, const std::vector<GroupRole>& roles) : mesh_(&mesh) {
-  if (roles.size() != mesh.group_names().size())
+P2Rt1Space::P2Rt1Space(const Mesh& mesh, const std::vector<BoundaryRole>& groups) : mesh_(&mesh) {
+  if (groups.size() != mesh.group_names().size())
     throw std::logic_error("P2Rt1Space: one role per boundary group expected");
   roles_.assign(num_dofs(), DofRole::kFree);
   contact_node_.assign(num_u_nodes(), 0);
   contact_edge_.assign(mesh.num_edges(), 0);
   node_normal_.assign(num_u_nodes(), Point::Zero());
   std::vector<Point> averaged(num_u_nodes(), Point::Zero());
-  const std::vector<int> prescribed = mark_boundary_edges(roles, averaged);
+  const std::vector<int> prescribed = mark_boundary_edges(groups, averaged);
   set_node_roles(prescribed, averaged);
   number_free_dofs();
 }
 
-std::vector<int> P2Rt1Space::mark_boundary_edges(const std::vector<GroupRole>& roles,
+std::vector<int> P2Rt1Space::mark_boundary_edges(const std::vector<BoundaryRole>& groups,
                                                  std::vector<Point>& averaged) {
   std::vector<int> prescribed(num_u_nodes(), 0);
   for (int e = 0; e < mesh_->num_edges(); ++e) {
@@ -30,10 +32,12 @@ std::vector<int> P2Rt1Space::mark_boundary_edges(const std::vector<GroupRole>& r
     auto fix_sigma_row = [&](int i) {
       for (int j = 0; j < 2; ++j) roles_[sigma_edge_dof(e, j, i)] = DofRole::kFixed;
     };
-    if (const int bits = prescribed_components(roles[g])) {
+    if (groups[g].role == GroupRole::kDirichlet) {
+      const int bits = groups[g].prescribed & 3;
       for (int a : nodes) prescribed[a] |= bits;
-      if (bits != 3) fix_sigma_row(bits == 1 ? 1 : 0);  // the free component's traction is 0
-    } else if (roles[g] == GroupRole::kNeumann) {
+      for (int i = 0; i < 2; ++i)  // a free component's traction is 0
+        if (!(bits & (1 << i))) fix_sigma_row(i);
+    } else if (groups[g].role == GroupRole::kNeumann) {
       fix_sigma_row(0);
       fix_sigma_row(1);
     } else {
@@ -58,20 +62,18 @@ std::vector<int> P2Rt1Space::mark_boundary_edges(const std::vector<GroupRole>& r
 void P2Rt1Space::set_node_roles(const std::vector<int>& prescribed,
                                 const std::vector<Point>& averaged) {
   for (int a = 0; a < num_u_nodes(); ++a) {
-    const bool contact = contact_node_[a] && prescribed[a] != 3;
-    Point n = node_normal_[a].squaredNorm() > 0 ? node_normal_[a] : averaged[a].normalized();
-    // A roller meets the contact boundary only where its axis is the tangent (FoslsSpace).
-    const int c = prescribed[a] == 1 ? 0 : 1;
-    if (contact && prescribed[a] && std::abs(n[c]) <= 1e-12) {
-      node_normal_[a] = n;
-      roles_[u_dof(a, 0)] = DofRole::kNormalU;
-      roles_[u_dof(a, 1)] = DofRole::kFixed;
-      continue;
-    }
-    if (contact && !prescribed[a]) {
-      node_normal_[a] = n;
-      roles_[u_dof(a, 0)] = DofRole::kNormalU;
-      continue;
+    if (contact_node_[a] && prescribed[a] != 3) {
+      // FoslsSpace's rule: a roller meets the contact boundary where its axis is a tangent
+      // (contact_frame.hpp).
+      const Point n =
+          node_normal_[a].squaredNorm() > 0 ? node_normal_[a] : averaged[a].normalized();
+      const Mat<2> frame = roller_frame<2>(n, prescribed[a]);
+      if (!frame.isZero()) {
+        node_normal_[a] = frame.col(0);
+        roles_[u_dof(a, 0)] = DofRole::kNormalU;
+        if (prescribed[a]) roles_[u_dof(a, 1)] = DofRole::kFixed;
+        continue;
+      }
     }
     contact_node_[a] = 0;
     node_normal_[a] = Point::Zero();
@@ -99,7 +101,7 @@ Point P2Rt1Space::node_position(int node) const {
                    : mesh_->curves()[curve].project(mesh_->edge_midpoint(e));
 }
 
-std::array<int, 28> P2Rt1Space::triangle_dofs(int t) const {
+std::array<int, P2Rt1Space::kCellDofs> P2Rt1Space::cell_dofs(int t) const {
   std::array<int, 28> d;
   const auto& tri = mesh_->triangle(t);
   for (int k = 0; k < 3; ++k) {

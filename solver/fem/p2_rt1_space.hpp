@@ -17,8 +17,9 @@ namespace fosls {
 /// FoslsSpace: (U_n, U_t) and (S_n, S_t), S_t fixed at 0 (frictionless).
 class P2Rt1Space {
  public:
-  /// `roles[g]` is the role of mesh group g; a frictional contact group is not supported.
-  P2Rt1Space(const Mesh& mesh, const std::vector<GroupRole>& roles);
+  /// `groups[g]` says what mesh group g does (as FoslsSpace's); a frictional contact group is
+  /// not supported.
+  P2Rt1Space(const Mesh& mesh, const std::vector<BoundaryRole>& groups);
 
   const Mesh& mesh() const { return *mesh_; }
   int num_u_nodes() const { return mesh_->num_vertices() + mesh_->num_edges(); }
@@ -31,7 +32,8 @@ class P2Rt1Space {
   }
   /// The 28 DOFs of triangle t in the element's order: u of its six P2 nodes (2n + c), then
   /// σ of its eight RT1 functions (12 + 2m + i).
-  std::array<int, 28> triangle_dofs(int t) const;
+  static constexpr int kCellDofs = 28;
+  std::array<int, kCellDofs> cell_dofs(int t) const;
 
   DofRole role(int dof) const { return roles_[dof]; }
   bool is_contact_node(int node) const { return contact_node_[node] != 0; }
@@ -53,7 +55,7 @@ class P2Rt1Space {
   int triangles() const { return mesh_->num_triangles(); }
   /// Roles of the stress DOFs of boundary edges; returns the prescribed bits of each node and
   /// marks the contact edges and nodes with the sums of their edge normals.
-  std::vector<int> mark_boundary_edges(const std::vector<GroupRole>& roles,
+  std::vector<int> mark_boundary_edges(const std::vector<BoundaryRole>& groups,
                                        std::vector<Point>& averaged);
   void set_node_roles(const std::vector<int>& prescribed, const std::vector<Point>& averaged);
   void number_free_dofs();

@@ -5,7 +5,7 @@
 #include <cmath>
 #include <map>
 
-#include "fem/element_geometry.hpp"
+#include "fem/simplex_element.hpp"
 
 namespace fosls {
 
@@ -43,7 +43,7 @@ Eigen::SparseMatrix<double> cartesian_prolongation(const Mesh& coarse, const Mes
       continue;
     }
     const int tc = maps.parent_triangle[f];
-    ElementGeometry geo(coarse, tc);
+    const SimplexElement<2> geo(coarse, tc);
     Point p = coarse_position(pq[0]), q = coarse_position(pq[1]);
     Point d = q - p;
     Point scaled_normal(d.y(), -d.x());  // |f| n_f
@@ -90,8 +90,8 @@ std::vector<std::pair<int, int>> flux_path(const Mesh& fine, const RefinementMap
   return path;
 }
 
-Eigen::SparseMatrix<double> free_prolongation(const FoslsSpace& coarse, const FoslsSpace& fine,
-                                              const RefinementMaps& maps,
+Eigen::SparseMatrix<double> free_prolongation(const FoslsSpace<2>& coarse,
+                                              const FoslsSpace<2>& fine, const RefinementMaps& maps,
                                               const Eigen::SparseMatrix<double>& cartesian) {
   using RowMajor = Eigen::SparseMatrix<double, Eigen::RowMajor>;
   const Eigen::SparseMatrix<double> rotated =

@@ -42,8 +42,8 @@ std::vector<std::pair<int, int>> flux_path(const Mesh& fine, const RefinementMap
 /// contact functions too stiff to represent tractions on the curve, the two halves' tangential
 /// fluxes are routed into each other through the coarse triangle's interior (they cancel up to
 /// O((h/R)²)).
-Eigen::SparseMatrix<double> free_prolongation(const FoslsSpace& coarse, const FoslsSpace& fine,
-                                              const RefinementMaps& maps,
+Eigen::SparseMatrix<double> free_prolongation(const FoslsSpace<2>& coarse,
+                                              const FoslsSpace<2>& fine, const RefinementMaps& maps,
                                               const Eigen::SparseMatrix<double>& cartesian);
 
 }  // namespace fosls

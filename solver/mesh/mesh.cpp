@@ -31,6 +31,7 @@ Mesh::Mesh(std::vector<Point> vertices, std::vector<std::array<int, 3>> triangle
     : vertices_(std::move(vertices)),
       triangles_(std::move(triangles)),
       group_names_(std::move(group_names)),
+      group_index_(group_names_),
       curves_(std::move(curves)) {
   if (triangles_.empty()) throw std::invalid_argument("the mesh has no triangles");
   const int nv = num_vertices();
@@ -155,9 +156,7 @@ double Mesh::triangle_area(int t) const {
 }
 
 int Mesh::group_index(const std::string& name) const {
-  for (std::size_t g = 0; g < group_names_.size(); ++g)
-    if (group_names_[g] == name) return static_cast<int>(g);
-  return -1;
+  return group_index_.find(group_names_, name);
 }
 
 std::vector<std::vector<int>> Mesh::vertex_edges() const {
@@ -167,6 +166,15 @@ std::vector<std::vector<int>> Mesh::vertex_edges() const {
     out[edges_[e][1]].push_back(e);
   }
   return out;
+}
+
+double Mesh::diameter() const {
+  double lo_x = 1e300, hi_x = -1e300, lo_y = 1e300, hi_y = -1e300;
+  for (const auto& p : vertices_) {
+    lo_x = std::min(lo_x, p.x()), hi_x = std::max(hi_x, p.x());
+    lo_y = std::min(lo_y, p.y()), hi_y = std::max(hi_y, p.y());
+  }
+  return std::hypot(hi_x - lo_x, hi_y - lo_y);
 }
 
 std::pair<double, double> Mesh::edge_length_range() const {

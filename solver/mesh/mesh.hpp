@@ -6,6 +6,8 @@
 #include <string>
 #include <vector>
 
+#include "mesh/group_name_index.hpp"
+
 namespace fosls {
 
 using Point = Eigen::Vector2d;
@@ -72,7 +74,7 @@ class Mesh {
   const std::array<int, 2>& edge_triangles(int e) const { return edge_triangles_[e]; }
 
   const std::vector<std::string>& group_names() const { return group_names_; }
-  /// Index of a group by name, -1 when absent.
+  /// Index of a group by name, -1 when absent (O(log G): group_name_index.hpp).
   int group_index(const std::string& name) const;
   const std::vector<BoundaryCurve>& curves() const { return curves_; }
 
@@ -80,6 +82,29 @@ class Mesh {
   std::vector<std::vector<int>> vertex_edges() const;
   /// Smallest and largest edge length.
   std::pair<double, double> edge_length_range() const;
+  /// The length of the bounding box's diagonal: the body's size.
+  double diameter() const;
+
+  // The vocabulary TetMesh shares (mesh/simplex_mesh.hpp), so that the layers written once for
+  // both dimensions as `template <int dim>` see one interface: a cell is a triangle, a facet
+  // an edge, a facet's measure its length.
+  static constexpr int kDimension = 2;
+  int num_cells() const { return num_triangles(); }
+  const std::array<int, 3>& cell(int t) const { return triangles_[t]; }
+  /// Facet k of cell t: the edge opposite its vertex k.
+  int cell_facet(int t, int k) const { return triangle_edges_[t][k]; }
+  /// +1 when the global normal of facet k of cell t is the cell's outward normal, else −1.
+  int cell_facet_sign(int t, int k) const { return triangle_edge_signs_[t][k]; }
+  double cell_measure(int t) const { return triangle_area(t); }
+  int num_facets() const { return num_edges(); }
+  const std::array<int, 2>& facet(int f) const { return edges_[f]; }
+  Point facet_normal(int f) const { return edge_normal(f); }
+  double facet_measure(int f) const { return edge_length(f); }
+  Point facet_centroid(int f) const { return edge_midpoint(f); }
+  int facet_group(int f) const { return edge_group_[f]; }
+  const std::array<int, 2>& facet_cells(int f) const { return edge_triangles_[f]; }
+  bool is_boundary_facet(int f) const { return edge_triangles_[f][1] < 0; }
+  std::vector<std::vector<int>> vertex_facets() const { return vertex_edges(); }
 
  private:
   void build_topology(const std::vector<BoundarySegment>& segments);
@@ -93,6 +118,7 @@ class Mesh {
   std::vector<int> edge_group_;
   std::vector<int> edge_curve_;
   std::vector<std::string> group_names_;
+  GroupNameIndex group_index_;
   std::vector<BoundaryCurve> curves_;
 };
 

@@ -5,6 +5,7 @@
 #include <cmath>
 #include <sstream>
 #include <stdexcept>
+#include <unordered_map>
 
 #include "mesh/mesh_error.hpp"
 
@@ -435,12 +436,15 @@ std::vector<std::string> msh_boundary_groups(const MshText& m,
   std::sort(tags.begin(), tags.end());
   tags.erase(std::unique(tags.begin(), tags.end()), tags.end());
   std::vector<std::string> names;
+  // Equal names are found by hash: a text may hold hundreds of thousands of them.
+  std::unordered_map<std::string, int> group_of_name;
+  group_of_name.reserve(tags.size());
   for (long long tag : tags) {
     const auto it = m.names.find(tag);
-    const std::string name = it != m.names.end() ? it->second : std::to_string(tag);
-    const auto pos = std::find(names.begin(), names.end(), name);
-    group_of_tag[tag] = static_cast<int>(pos - names.begin());
-    if (pos == names.end()) names.push_back(name);
+    std::string name = it != m.names.end() ? it->second : std::to_string(tag);
+    const auto [known, added] = group_of_name.emplace(name, static_cast<int>(names.size()));
+    group_of_tag[tag] = known->second;
+    if (added) names.push_back(std::move(name));
   }
   return names;
 }

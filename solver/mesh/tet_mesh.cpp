@@ -19,6 +19,7 @@ TetMesh::TetMesh(std::vector<Point3> vertices, std::vector<std::array<int, 4>> t
     : vertices_(std::move(vertices)),
       tets_(std::move(tets)),
       group_names_(std::move(group_names)),
+      group_index_(group_names_),
       group_surfaces_(std::move(group_surfaces)) {
   std::unordered_map<long long, int> index;
   index.reserve(2 * tets_.size() + 16);
@@ -76,9 +77,13 @@ double TetMesh::tet_volume(int t) const {
   return std::abs(a.dot(b.cross(c))) / 6.0;
 }
 
+int TetMesh::cell_facet_sign(int t, int k) const {
+  const int f = tet_faces_[t][k];
+  return face_normals_[f].dot(face_centroid(f) - vertices_[tets_[t][k]]) > 0 ? 1 : -1;
+}
+
 int TetMesh::group_index(const std::string& name) const {
-  const auto it = std::find(group_names_.begin(), group_names_.end(), name);
-  return it == group_names_.end() ? -1 : static_cast<int>(it - group_names_.begin());
+  return group_index_.find(group_names_, name);
 }
 
 std::vector<std::vector<int>> TetMesh::vertex_faces() const {

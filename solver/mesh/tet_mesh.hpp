@@ -7,6 +7,8 @@
 #include <string>
 #include <vector>
 
+#include "mesh/group_name_index.hpp"
+
 namespace fosls {
 
 using Point3 = Eigen::Vector3d;
@@ -61,6 +63,7 @@ class TetMesh {
   int face_group(int f) const { return face_group_[f]; }
   bool is_boundary_face(int f) const { return face_tets_[f][1] < 0; }
   const std::vector<std::string>& group_names() const { return group_names_; }
+  /// Index of a group by name, −1 when absent (O(log G): group_name_index.hpp).
   int group_index(const std::string& name) const;
   /// The sphere group g lies on (not curved() for flat groups).
   SphereSurface group_surface(int g) const {
@@ -70,6 +73,28 @@ class TetMesh {
   const std::vector<SphereSurface>& group_surfaces() const { return group_surfaces_; }
   /// Faces through each vertex (the vertex patches).
   std::vector<std::vector<int>> vertex_faces() const;
+  const std::vector<Point3>& vertices() const { return vertices_; }
+
+  // The vocabulary Mesh shares (mesh/simplex_mesh.hpp): a cell is a tetrahedron, a facet a
+  // face, a facet's measure its area.
+  static constexpr int kDimension = 3;
+  int num_cells() const { return num_tets(); }
+  const std::array<int, 4>& cell(int t) const { return tets_[t]; }
+  /// Facet k of cell t: the face opposite its vertex k.
+  int cell_facet(int t, int k) const { return tet_faces_[t][k]; }
+  /// +1 when the global normal of facet k of cell t points out of the cell, else −1 (computed:
+  /// stored, it would cost four bytes per tetrahedron for what one dot product gives).
+  int cell_facet_sign(int t, int k) const;
+  double cell_measure(int t) const { return tet_volume(t); }
+  int num_facets() const { return num_faces(); }
+  const std::array<int, 3>& facet(int f) const { return faces_[f]; }
+  const Point3& facet_normal(int f) const { return face_normals_[f]; }
+  double facet_measure(int f) const { return face_areas_[f]; }
+  Point3 facet_centroid(int f) const { return face_centroid(f); }
+  int facet_group(int f) const { return face_group_[f]; }
+  const std::array<int, 2>& facet_cells(int f) const { return face_tets_[f]; }
+  bool is_boundary_facet(int f) const { return is_boundary_face(f); }
+  std::vector<std::vector<int>> vertex_facets() const { return vertex_faces(); }
 
  private:
   std::vector<Point3> vertices_;
@@ -81,6 +106,7 @@ class TetMesh {
   std::vector<std::array<int, 2>> face_tets_;
   std::vector<int> face_group_;
   std::vector<std::string> group_names_;
+  GroupNameIndex group_index_;
   std::vector<SphereSurface> group_surfaces_;
 };
 

@@ -1,6 +1,8 @@
 #include "mesh/tet_refinement.hpp"
 
+#include <Eigen/LU>
 #include <algorithm>
+#include <cmath>
 #include <map>
 #include <unordered_map>
 
@@ -37,12 +39,26 @@ std::vector<int> carriers(const TetRefinementMaps& maps, int v) {
   return {e[0], e[1]};
 }
 
-/// Which coarse face or tetrahedron each fine face lies in: a face whose vertices lie between
-/// three coarse vertices is a quarter of their face.
-void map_faces(const TetMesh& coarse, const TetMesh& fine, TetRefinementMaps& maps) {
+/// The area of a fine face as a fraction of the coarse face `parent` it lies in: the determinant
+/// of its vertices' barycentric coordinates in the parent, whose entries 0, ½ and 1 make it exact.
+double face_share(const TetRefinementMaps& maps, const std::array<int, 3>& parent,
+                  const std::array<int, 3>& face) {
+  Eigen::Matrix3d lambda = Eigen::Matrix3d::Zero();
+  for (int i = 0; i < 3; ++i) {
+    const std::vector<int> c = carriers(maps, face[i]);
+    for (int v : c)
+      lambda(i, std::find(parent.begin(), parent.end(), v) - parent.begin()) += 1.0 / c.size();
+  }
+  return std::abs(lambda.determinant());
+}
+
+}  // namespace
+
+void map_fine_faces(const TetMesh& coarse, const TetMesh& fine, TetRefinementMaps& maps) {
   std::unordered_map<long long, int> coarse_face;
   for (int f = 0; f < coarse.num_faces(); ++f) coarse_face.emplace(face_key(coarse.face(f)), f);
   maps.parent_face.assign(fine.num_faces(), -1);
+  maps.parent_face_share.assign(fine.num_faces(), 0.0);
   maps.parent_tet_of_face.assign(fine.num_faces(), -1);
   for (int f = 0; f < fine.num_faces(); ++f) {
     std::vector<int> all;
@@ -54,13 +70,12 @@ void map_faces(const TetMesh& coarse, const TetMesh& fine, TetRefinementMaps& ma
       if (const auto it = coarse_face.find(face_key({all[0], all[1], all[2]}));
           it != coarse_face.end()) {
         maps.parent_face[f] = it->second;
+        maps.parent_face_share[f] = face_share(maps, coarse.face(it->second), fine.face(f));
         continue;
       }
     maps.parent_tet_of_face[f] = maps.tet_parent[fine.face_tets(f)[0]];
   }
 }
-
-}  // namespace
 
 TetRefinement refine_tets_uniformly(const TetMesh& coarse) {
   TetRefinement out;
@@ -103,7 +118,7 @@ TetRefinement refine_tets_uniformly(const TetMesh& coarse) {
   }
   out.fine = TetMesh(std::move(vertices), std::move(tets), boundary, coarse.group_names(),
                      coarse.group_surfaces());
-  map_faces(coarse, out.fine, maps);
+  map_fine_faces(coarse, out.fine, maps);
   return out;
 }
 

@@ -16,8 +16,12 @@ namespace fosls {
 struct TetRefinementMaps {
   int num_coarse_vertices = 0;
   std::vector<std::array<int, 2>> midpoint_ends;
-  /// For each fine face inside a coarse face (a quarter of it): that face; −1 otherwise.
+  /// For each fine face inside a coarse face (a quarter of it under red refinement, a half, a
+  /// quarter … or all of it under bisection): that face; −1 otherwise.
   std::vector<int> parent_face;
+  /// For each fine face inside a coarse face: the fraction of the coarse face's area it covers, a
+  /// power of two (exact: computed from the vertices' barycentric coordinates); 0 otherwise.
+  std::vector<double> parent_face_share;
   /// For each fine face inside a coarse tetrahedron: that tetrahedron; −1 otherwise.
   std::vector<int> parent_tet_of_face;
   /// For each fine tetrahedron: the coarse one that contains it.
@@ -33,6 +37,11 @@ struct TetRefinement {
 /// octahedron, cut along the diagonal x02–x13 (Bey 1995: the vertex order of the children keeps
 /// the shapes of the refinements of a tetrahedron in finitely many classes).
 TetRefinement refine_tets_uniformly(const TetMesh& coarse);
+
+/// Fills maps.parent_face, parent_face_share and parent_tet_of_face of a refinement whose fine
+/// vertices are coarse vertices and midpoints of coarse edges (maps.midpoint_ends and tet_parent
+/// set): a fine face whose vertices all lie between the three vertices of a coarse face is in it.
+void map_fine_faces(const TetMesh& coarse, const TetMesh& fine, TetRefinementMaps& maps);
 
 struct TetHierarchy {
   std::vector<TetMesh> meshes;

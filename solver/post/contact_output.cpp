@@ -4,11 +4,13 @@
 #include <cmath>
 #include <map>
 
+#include "post/contact_force.hpp"
+
 namespace fosls {
 
 namespace {
 /// Contact edges in chain order: each chain starts at an end vertex (used by one contact edge).
-std::vector<int> chain_order(const FoslsSpace& space) {
+std::vector<int> chain_order(const FoslsSpace<2>& space) {
   const Mesh& mesh = space.mesh();
   std::map<int, std::vector<int>> at_vertex;
   std::vector<int> edges;
@@ -44,9 +46,9 @@ std::vector<int> chain_order(const FoslsSpace& space) {
 }
 
 /// Shear, slip and state of contact edge r.edge.
-void set_friction_state(const FoslsAssembler& assembler, const AssembledProblem& problem,
+void set_friction_state(const FoslsAssembler<2>& assembler, const AssembledProblem& problem,
                         const Vector& x_full, double largest_bound, ContactEdgeResult& r) {
-  const FoslsSpace& space = assembler.space();
+  const FoslsSpace<2>& space = assembler.space();
   const Mesh& mesh = space.mesh();
   const int e = r.edge;
   for (int v : mesh.edge(e)) {
@@ -81,9 +83,9 @@ const char* state_name(ContactEdgeResult::State state) {
   return "?";
 }
 
-ContactResult contact_output(const FoslsAssembler& assembler, const AssembledProblem& problem,
+ContactResult contact_output(const FoslsAssembler<2>& assembler, const AssembledProblem& problem,
                              const Vector& x_full) {
-  const FoslsSpace& space = assembler.space();
+  const FoslsSpace<2>& space = assembler.space();
   const Mesh& mesh = space.mesh();
   ContactResult out;
   double s = 0.0;
@@ -100,7 +102,7 @@ ContactResult contact_output(const FoslsAssembler& assembler, const AssembledPro
     r.s = s + 0.5 * len;
     s += len;
     const double sn = x_full[space.sigma_dof(e, 0)] * problem.stress_scale;  // ∫_e σ_nn ds
-    r.pressure = 0.0 - sn / len;                                             // +0.0 where S_n = 0
+    r.pressure = facet_pressure(space, x_full, problem.stress_scale, e);
     const Point ne = mesh.edge_normal(e);
     r.gap = 0.0 - assembler.edge_mean_penetration(x_full, e);  // +0.0, not −0.0, where closed
     r.active = r.pressure > 0.0;

@@ -56,7 +56,7 @@ struct ContactResult {
   ContactZone stick_zone() const;
 };
 
-ContactResult contact_output(const FoslsAssembler& assembler, const AssembledProblem& problem,
+ContactResult contact_output(const FoslsAssembler<2>& assembler, const AssembledProblem& problem,
                              const Vector& x_full);
 
 }  // namespace fosls

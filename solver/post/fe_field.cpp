@@ -2,18 +2,18 @@
 
 #include <cmath>
 
-#include "fem/element_geometry.hpp"
+#include "fem/simplex_element.hpp"
 
 namespace fosls {
 
-FeField::FeField(const FoslsSpace& space, const Vector& x_full, double stress_scale)
+FeField::FeField(const FoslsSpace<2>& space, const Vector& x_full, double stress_scale)
     : space_(space), x_(space.rotation() * x_full) {
   const int nu = 2 * space.mesh().num_vertices();
   x_.tail(x_.size() - nu) *= stress_scale;
 }
 
 Eigen::Vector2d FeField::u(int t, const Point& x) const {
-  ElementGeometry g(space_.mesh(), t);
+  const SimplexElement<2> g(space_.mesh(), t);
   Eigen::Vector2d v = Eigen::Vector2d::Zero();
   for (int k = 0; k < 3; ++k) {
     int vert = space_.mesh().triangle(t)[k];
@@ -24,7 +24,7 @@ Eigen::Vector2d FeField::u(int t, const Point& x) const {
 }
 
 Eigen::Matrix2d FeField::grad_u(int t, const Point&) const {
-  ElementGeometry g(space_.mesh(), t);
+  const SimplexElement<2> g(space_.mesh(), t);
   Eigen::Matrix2d m = Eigen::Matrix2d::Zero();
   for (int k = 0; k < 3; ++k) {
     int vert = space_.mesh().triangle(t)[k];
@@ -34,7 +34,7 @@ Eigen::Matrix2d FeField::grad_u(int t, const Point&) const {
 }
 
 Eigen::Matrix2d FeField::sigma(int t, const Point& x) const {
-  ElementGeometry g(space_.mesh(), t);
+  const SimplexElement<2> g(space_.mesh(), t);
   Eigen::Matrix2d m = Eigen::Matrix2d::Zero();
   for (int k = 0; k < 3; ++k) {
     int e = space_.mesh().triangle_edge(t, k);
@@ -44,7 +44,7 @@ Eigen::Matrix2d FeField::sigma(int t, const Point& x) const {
 }
 
 Eigen::Vector2d FeField::div_sigma(int t) const {
-  ElementGeometry g(space_.mesh(), t);
+  const SimplexElement<2> g(space_.mesh(), t);
   Eigen::Vector2d d = Eigen::Vector2d::Zero();
   for (int k = 0; k < 3; ++k) {
     int e = space_.mesh().triangle_edge(t, k);

@@ -14,7 +14,7 @@ namespace fosls {
 class FeField {
  public:
   /// `x_full` is the full DOF vector in the space's rotated coordinates with scaled stresses.
-  FeField(const FoslsSpace& space, const Vector& x_full, double stress_scale);
+  FeField(const FoslsSpace<2>& space, const Vector& x_full, double stress_scale);
 
   Eigen::Vector2d u(int t, const Point& x) const;
   /// ∇u as a matrix (row i = ∇u_i).
@@ -24,10 +24,10 @@ class FeField {
   Eigen::Vector2d div_sigma(int t) const;
   /// Cartesian value of a DOF (u_c at a vertex, flux of σ_i through an edge).
   double cartesian(int dof) const { return x_[dof]; }
-  const FoslsSpace& space() const { return space_; }
+  const FoslsSpace<2>& space() const { return space_; }
 
  private:
-  const FoslsSpace& space_;
+  const FoslsSpace<2>& space_;
   Vector x_;
 };
 

@@ -9,9 +9,9 @@
 
 namespace fosls {
 
-StrainPeak largest_strain(const FoslsAssembler& assembler, const AssembledProblem& problem,
+StrainPeak largest_strain(const FoslsAssembler<2>& assembler, const AssembledProblem& problem,
                           const Vector& x_full, double area_fraction) {
-  const FoslsSpace& space = assembler.space();
+  const FoslsSpace<2>& space = assembler.space();
   const Mesh& mesh = space.mesh();
   const FeField field(space, x_full, problem.stress_scale);
   StrainPeak peak;

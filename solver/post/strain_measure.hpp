@@ -18,7 +18,7 @@ struct StrainPeak {
 
 /// ε = sym ∇u of the P1 displacement (constant per triangle; plane strain, ε_zz = 0) and its
 /// equivalent strain over the triangles.
-StrainPeak largest_strain(const FoslsAssembler& assembler, const AssembledProblem& problem,
+StrainPeak largest_strain(const FoslsAssembler<2>& assembler, const AssembledProblem& problem,
                           const Vector& x_full, double area_fraction = 0.01);
 
 }  // namespace fosls

@@ -4,7 +4,8 @@
 #include <sstream>
 #include <stdexcept>
 
-#include "fem/tet_element.hpp"
+#include "fem/simplex_element.hpp"
+#include "post/contact_force.hpp"
 
 namespace fosls {
 
@@ -63,9 +64,10 @@ double von_mises(const Eigen::Matrix3d& sigma) {
 }
 
 /// The stress of tetrahedron t at x from Cartesian DOFs: row i is Σ_k S_{f_k, i} ψ_k(x).
-Eigen::Matrix3d stress_at(const TetSpace& space, const Vector& cartesian, int t, const Point3& x) {
+Eigen::Matrix3d stress_at(const FoslsSpace<3>& space, const Vector& cartesian, int t,
+                          const Point3& x) {
   const TetMesh& mesh = space.mesh();
-  const TetElement e(mesh, t);
+  const SimplexElement<3> e(mesh, t);
   Eigen::Matrix3d sigma = Eigen::Matrix3d::Zero();
   for (int k = 0; k < 4; ++k) {
     const Point3 psi = e.rt0(k, x);
@@ -79,9 +81,9 @@ Eigen::Matrix3d stress_at(const TetSpace& space, const Vector& cartesian, int t,
 
 std::span<const VtuArray> tet_vtu_arrays() { return array_table(); }
 
-std::string write_tet_vtu(const TetAssembler& assembler, const TetAssembledProblem& problem,
+std::string write_tet_vtu(const FoslsAssembler<3>& assembler, const AssembledProblem& problem,
                           const Vector& x_full, VtuEncoding encoding) {
-  const TetSpace& space = assembler.space();
+  const FoslsSpace<3>& space = assembler.space();
   const TetMesh& mesh = space.mesh();
   const Vector cartesian = space.rotation() * x_full;  // contact frames back to x, y, z
   const int nv = mesh.num_vertices(), nt = mesh.num_tets();
@@ -91,10 +93,10 @@ std::string write_tet_vtu(const TetAssembler& assembler, const TetAssembledProbl
       points[3 * v + c] = mesh.vertex(v)[c];
       u[3 * v + c] = cartesian[space.u_dof(v, c)];
     }
-  const std::vector<double> face_pressure = assembler.contact_pressure(x_full);
+  const std::vector<double> face_pressure = contact_pressure(space, x_full, problem.stress_scale);
   std::vector<int> faces(nv, 0);
   for (int f = 0; f < mesh.num_faces(); ++f)
-    if (space.is_contact_face(f))
+    if (space.is_contact_facet(f))
       for (int v : mesh.face(f)) {
         on_contact[v] = 1.0;
         pressure[v] += face_pressure[f];

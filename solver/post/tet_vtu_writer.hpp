@@ -7,7 +7,7 @@
 #include <span>
 #include <string>
 
-#include "assembly/tet_assembler.hpp"
+#include "assembly/fosls_assembler.hpp"
 #include "post/vtu_format.hpp"
 
 namespace fosls {
@@ -17,7 +17,7 @@ std::span<const VtuArray> tet_vtu_arrays();
 
 /// The solution x_full (the full DOF vector, contact DOFs in their rotated frames) of
 /// `problem` as a .vtu file.
-std::string write_tet_vtu(const TetAssembler& assembler, const TetAssembledProblem& problem,
+std::string write_tet_vtu(const FoslsAssembler<3>& assembler, const AssembledProblem& problem,
                           const Vector& x_full, VtuEncoding encoding = VtuEncoding::kBinary);
 
 }  // namespace fosls

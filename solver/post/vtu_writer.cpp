@@ -153,11 +153,11 @@ StressArrays stress_arrays(const Mesh& mesh, const FeField& field, double kappa)
 
 std::span<const VtuArray> vtu_arrays() { return array_table(); }
 
-std::string write_vtu(const FoslsAssembler& assembler, const AssembledProblem& problem,
+std::string write_vtu(const FoslsAssembler<2>& assembler, const AssembledProblem& problem,
                       const Vector& x_full, const FunctionalParts& functional,
                       const ContactResult& contact, const std::vector<int>& generation,
                       VtuEncoding encoding) {
-  const FoslsSpace& space = assembler.space();
+  const FoslsSpace<2>& space = assembler.space();
   const Mesh& mesh = space.mesh();
   const FeField field(space, x_full, problem.stress_scale);
   const ElasticMaterial& mat = assembler.data().material;

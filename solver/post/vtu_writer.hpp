@@ -18,7 +18,7 @@ std::span<const VtuArray> vtu_arrays();
 
 /// `generation`: per triangle, the bisections that separate it from its coarse-mesh ancestor
 /// (a red refinement counts as two).
-std::string write_vtu(const FoslsAssembler& assembler, const AssembledProblem& problem,
+std::string write_vtu(const FoslsAssembler<2>& assembler, const AssembledProblem& problem,
                       const Vector& x_full, const FunctionalParts& functional,
                       const ContactResult& contact, const std::vector<int>& generation,
                       VtuEncoding encoding = VtuEncoding::kBinary);

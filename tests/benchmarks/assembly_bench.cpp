@@ -24,7 +24,7 @@ void run_level(int level) {
   const auto t0 = Clock::now();
   MeshHierarchy meshes = build_mesh_hierarchy(make_square({.size = 0.5}), level - 1);
   const auto t1 = Clock::now();
-  ProblemData data;
+  ProblemData<2> data;
   data.groups.resize(4);
   data.groups[0].role = GroupRole::kDirichlet;  // bottom
   data.groups[1].role = data.groups[2].role = data.groups[3].role = GroupRole::kNeumann;

@@ -55,12 +55,12 @@ int main(int argc, char** argv) {
   const auto t0 = Clock::now();
   Mesh coarse = build_coarse_mesh(spec.mesh);
   spec.weights.length_scale = length_scale(coarse);
-  ProblemData data = problem_data(spec, coarse);
+  ProblemData<2> data = problem_data(spec, coarse);
   MeshHierarchy meshes = build_mesh_hierarchy(std::move(coarse), spec.mesh.refinements);
   if (spec.weights.c3_auto)
     data.weights.c3 = automatic_contact_weight(contact_weight_limit(meshes, data));
   const Discretization lowest(std::move(meshes), data);
-  const P2Rt1Space space(lowest.meshes().finest(), data.roles());
+  const P2Rt1Space space(lowest.meshes().finest(), data.boundary_roles());
   const P2Rt1Assembler assembler(space, data);
   const AssembledProblem problem = assembler.assemble_system();
   const double assembly_s = seconds_since(t0);

@@ -46,15 +46,17 @@ Point3 u(const Point3& p) {
   return {std::sin(y) * std::sin(z), std::sin(z) * std::sin(x), std::sin(x) * std::sin(y)};
 }
 
-TetProblemData problem(double lambda) {
-  TetProblemData d;
+ProblemData<3> problem(double lambda) {
+  ProblemData<3> d;
   d.material = {.mu = 1.0, .lambda = lambda};
   for (int i = 0; i < 3; ++i)
-    d.body_force[i] = [i](const Point3& x) { return 2.0 * M_PI * M_PI * u(x)[i]; };
+    d.body_force[i] =
+        testing::of_point([i](const Point3& x) { return 2.0 * M_PI * M_PI * u(x)[i]; });
   d.groups.resize(6);  // Neumann data are not needed for a table of solver costs: t = 0
   for (int g = 0; g < 6; g += 2) {
     d.groups[g].role = GroupRole::kDirichlet;
-    for (int i = 0; i < 3; ++i) d.groups[g].values[i] = [i](const Point3& x) { return u(x)[i]; };
+    for (int i = 0; i < 3; ++i)
+      d.groups[g].values[i] = testing::of_point([i](const Point3& x) { return u(x)[i]; });
   }
   return d;
 }
@@ -83,7 +85,7 @@ bool parse_word(const std::string& w, Options& o) {
 }
 
 TetDiscretization discretization(const Options& o, double lambda, int r) {
-  TetProblemData p = o.hertz     ? testing::hertz_half_ball(lambda, o.delta)
+  ProblemData<3> p = o.hertz     ? testing::hertz_half_ball(lambda, o.delta)
                      : o.contact ? testing::signorini_block(lambda)
                                  : problem(lambda);
   p.weights.c2_volumetric = o.volumetric;
@@ -103,7 +105,8 @@ TetDiscretization discretization(const Options& o, double lambda, int r) {
 /// the outermost loaded one), p0 as the largest face pressure (a face mean: slightly low).
 std::array<double, 2> contact_radius_and_peak(const TetDiscretization& disc, const Vector& full) {
   const TetMesh& mesh = disc.meshes().finest();
-  const std::vector<double> p = disc.assembler().contact_pressure(full);
+  const std::vector<double> p =
+      contact_pressure(disc.finest_space(), full, disc.problem().stress_scale);
   double force = 0.0, moment = 0.0, peak = 0.0;
   for (int f = 0; f < mesh.num_faces(); ++f) {
     const Point3 c = mesh.face_centroid(f);
@@ -119,7 +122,7 @@ std::array<double, 2> contact_radius_and_peak(const TetDiscretization& disc, con
 /// body exerts there; μ = 1 in these problems, and σ's rows are Cartesian off the contact).
 Point3 force_through_group(const TetDiscretization& disc, const Vector& full, int group) {
   const TetMesh& mesh = disc.meshes().finest();
-  const TetSpace& space = disc.assembler().space();
+  const FoslsSpace<3>& space = disc.assembler().space();
   Point3 force = Point3::Zero();
   for (int f = 0; f < mesh.num_faces(); ++f)
     if (mesh.is_boundary_face(f) && mesh.face_group(f) == group)
@@ -159,11 +162,12 @@ int main(int argc, char** argv) {
   options.multilevel.strip = !o.no_strip;
   const SolverReport report = solve_box_qp(
       disc.problem().qp, o.pdas ? LevelHierarchy{} : disc.build_level_hierarchy(), options, {}, x);
-  const TetAssembler& a = disc.assembler();
+  const FoslsAssembler<3>& a = disc.assembler();
   const Vector full = a.full_vector(disc.problem(), x);
   // The quarter ball's forces stand for the whole ball's: four times its z component.
   const double whole = o.ball.quarter ? 4.0 : 1.0;
-  const Point3 force = whole * a.contact_force(full);
+  const Point3 force =
+      whole * contact_force(disc.finest_space(), full, disc.problem().stress_scale);
   std::printf("| %s | %d | %d | %d | %s %d%s | %.2f s | %.2f s | %.0f MiB |", argv[1], r,
               disc.meshes().finest().num_tets(), disc.problem().qp.size(), o.pdas ? "pdas" : "mmg",
               report.iterations, report.converged ? "" : " (NOT converged)", assembly_s,

@@ -15,7 +15,19 @@ class ForwardingStore : public JobStore {
   std::optional<std::string> result_json(std::int64_t id) override {
     return inner_.result_json(id);
   }
+  std::optional<std::int64_t> result_json_size(std::int64_t id) override {
+    return inner_.result_json_size(id);
+  }
+  std::optional<std::string> result_json_bytes(std::int64_t id, std::int64_t offset,
+                                               std::int64_t length) override {
+    return inner_.result_json_bytes(id, offset, length);
+  }
   std::optional<std::string> vtu(std::int64_t id) override { return inner_.vtu(id); }
+  std::optional<StoredVtu> stored_vtu(std::int64_t id) override { return inner_.stored_vtu(id); }
+  std::optional<std::string> stored_vtu_bytes(std::int64_t id, std::int64_t offset,
+                                              std::int64_t length) override {
+    return inner_.stored_vtu_bytes(id, offset, length);
+  }
   std::optional<std::string> case_json(std::int64_t id) override { return inner_.case_json(id); }
   JobPage list(const JobListQuery& q) override { return inner_.list(q); }
   CancelOutcome cancel(std::int64_t id) override { return inner_.cancel(id); }

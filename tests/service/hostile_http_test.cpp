@@ -24,40 +24,24 @@
 #include <thread>
 #include <vector>
 
+#include "hostile_cases.hpp"
 #include "http_client.hpp"
+#include "server_watch.hpp"
 #include "service_fixture.hpp"
 
 namespace fosls::service {
 namespace {
 
 using nlohmann::json;
+using testing::connect_loopback;
+using testing::grid_msh;
+using testing::kMiB;
+using testing::percentile;
+using testing::proc_status_bytes;
 using testing::raw_body;
 using testing::raw_http;
 using testing::RawResponse;
 using testing::Service;
-
-constexpr std::size_t kMiB = 1024 * 1024;
-
-/// A line of /proc/PID/status in bytes ("VmRSS", "VmHWM").
-std::size_t proc_status_bytes(pid_t pid, const std::string& key) {
-  std::ifstream in("/proc/" + std::to_string(pid) + "/status");
-  for (std::string line; std::getline(in, line);)
-    if (line.rfind(key + ":", 0) == 0) return std::stoull(line.substr(key.size() + 1)) * 1024;
-  return 0;
-}
-
-int connect_loopback(int port) {
-  const int fd = socket(AF_INET, SOCK_STREAM, 0);
-  sockaddr_in addr{};
-  addr.sin_family = AF_INET;
-  addr.sin_port = htons(static_cast<uint16_t>(port));
-  addr.sin_addr.s_addr = htonl(INADDR_LOOPBACK);
-  if (connect(fd, reinterpret_cast<sockaddr*>(&addr), sizeof addr) != 0) {
-    close(fd);
-    return -1;
-  }
-  return fd;
-}
 
 struct Flood {
   std::size_t sent = 0;  ///< bytes the server's socket took before it answered or closed
@@ -246,60 +230,6 @@ TEST(HostileHttp, AnEmptiedDatabaseFileIsRefusedNotStartedOver) {
         << e.what();
   }
   EXPECT_EQ(std::filesystem::file_size(db), 0u) << "the file was written to";
-}
-
-/// A gmsh 4.1 text of the unit square as an n × n grid of triangle pairs, with the boundary
-/// groups "bottom", "right", "top" and "left": about 70 bytes per grid cell.
-std::string grid_msh(int n) {
-  const int m = n + 1;
-  auto node = [m](int i, int j) { return j * m + i + 1; };
-  std::ostringstream out;
-  out << "$MeshFormat\n4.1 0 8\n$EndMeshFormat\n$PhysicalNames\n5\n1 1 \"bottom\"\n"
-         "1 2 \"right\"\n1 3 \"top\"\n1 4 \"left\"\n2 5 \"body\"\n$EndPhysicalNames\n"
-         "$Entities\n0 4 1 0\n1 0 0 0 1 0 0 1 1 0\n2 1 0 0 1 1 0 1 2 0\n3 0 1 0 1 1 0 1 3 0\n"
-         "4 0 0 0 0 1 0 1 4 0\n1 0 0 0 1 1 0 1 5 4 1 2 3 4\n$EndEntities\n";
-  out << "$Nodes\n1 " << m * m << " 1 " << m * m << "\n2 1 0 " << m * m << "\n";
-  for (int k = 1; k <= m * m; ++k) out << k << "\n";
-  for (int j = 0; j < m; ++j)
-    for (int i = 0; i < m; ++i) out << double(i) / n << " " << double(j) / n << " 0\n";
-  out << "$EndNodes\n$Elements\n5 " << 4 * n + 2 * n * n << " 1 " << 4 * n + 2 * n * n << "\n";
-  int tag = 1;
-  const std::array<std::function<std::pair<int, int>(int)>, 4> sides = {
-      [&](int k) {
-        return std::pair{node(k, 0), node(k + 1, 0)};
-      },
-      [&](int k) {
-        return std::pair{node(n, k), node(n, k + 1)};
-      },
-      [&](int k) {
-        return std::pair{node(n - k, n), node(n - k - 1, n)};
-      },
-      [&](int k) {
-        return std::pair{node(0, n - k), node(0, n - k - 1)};
-      }};
-  for (int c = 0; c < 4; ++c) {
-    out << "1 " << c + 1 << " 1 " << n << "\n";
-    for (int k = 0; k < n; ++k) {
-      const auto [a, b] = sides[c](k);
-      out << tag++ << " " << a << " " << b << "\n";
-    }
-  }
-  out << "2 1 2 " << 2 * n * n << "\n";
-  for (int j = 0; j < n; ++j)
-    for (int i = 0; i < n; ++i) {
-      out << tag++ << " " << node(i, j) << " " << node(i + 1, j) << " " << node(i + 1, j + 1)
-          << "\n";
-      out << tag++ << " " << node(i, j) << " " << node(i + 1, j + 1) << " " << node(i, j + 1)
-          << "\n";
-    }
-  out << "$EndElements\n";
-  return out.str();
-}
-
-double percentile(std::vector<double> v, double p) {
-  if (v.empty()) return 0;
-  std::sort(v.begin(), v.end());
-  return v[static_cast<std::size_t>(p * (v.size() - 1))];
 }
 
 TEST(HostileHttp, LargeBodiesDoNotStallHealthAndTheirMemoryGoesBack) {

@@ -31,16 +31,19 @@ using testing::raw_body;
 using testing::raw_http;
 using testing::TempDir;
 
-/// Test double for validate_case: objects are valid unless they carry "bad".
-std::vector<CaseError> fake_validator(const json& j) {
-  std::vector<CaseError> errors;
+/// Test double for validate_case: objects are valid unless they carry "bad"; a valid case is
+/// estimated at 1.5 s.
+CaseVerdict fake_validator(const json& j) {
+  CaseVerdict verdict;
   if (!j.is_object()) {
-    errors.push_back({"", "the case must be a JSON object"});
+    verdict.errors.push_back({"", "the case must be a JSON object"});
   } else if (j.contains("bad")) {
-    errors.push_back({"/bad", "remove this field"});
-    errors.push_back({"/material/nu", "must be in [0, 0.5]"});
+    verdict.errors.push_back({"/bad", "remove this field"});
+    verdict.errors.push_back({"/material/nu", "must be in [0, 0.5]"});
+  } else {
+    verdict.estimate_seconds = 1.5;
   }
-  return errors;
+  return verdict;
 }
 
 /// A complete service (store, workers, API, server) on a free loopback port.

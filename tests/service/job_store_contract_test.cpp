@@ -12,6 +12,7 @@
 #include <thread>
 #include <vector>
 
+#include "gzip.hpp"
 #include "store_test_support.hpp"
 
 namespace fosls::service {
@@ -147,12 +148,14 @@ TEST_P(JobStoreContract, ProgressStepsRoundTripAndSurviveAnOlderSchema) {
   {
     auto c = db_->connect();
     const auto latest = c->query("SELECT max(version) AS v FROM schema_migrations")[0].int64("v");
+    // Back to the schema before progress steps (and the time estimates that came after).
     c->exec(
         "ALTER TABLE jobs DROP COLUMN progress_step; "
         "ALTER TABLE jobs DROP COLUMN progress_steps; "
-        "DELETE FROM schema_migrations WHERE version = " +
-        std::to_string(latest));
-    if (db_->kind() == "sqlite") c->exec("PRAGMA user_version = " + std::to_string(latest - 1));
+        "ALTER TABLE jobs DROP COLUMN time_estimate_s; "
+        "DELETE FROM schema_migrations WHERE version >= " +
+        std::to_string(latest - 1));
+    if (db_->kind() == "sqlite") c->exec("PRAGMA user_version = " + std::to_string(latest - 2));
   }
   store_ = db_->open();
   const auto migrated = store().find(id);
@@ -163,6 +166,83 @@ TEST_P(JobStoreContract, ProgressStepsRoundTripAndSurviveAnOlderSchema) {
   store().update_progress(lease, JobProgress{2, 0.5, -1.0, 1, 3});
   EXPECT_EQ(job_to_json(*store().find(id))["progress"]["step"], 1);
   EXPECT_TRUE(store().complete_succeeded(lease, "{}", ""));
+}
+
+TEST_P(JobStoreContract, TheTimeEstimateGoesFromSubmitToClaim) {
+  NewJob estimated = make_job(R"({"a":1})");
+  estimated.time_estimate_seconds = 12.5;
+  store().submit(estimated, kUnlimited);
+  store().submit(make_job(R"({"a":2})"), kUnlimited);  // admitted without an estimate
+  const auto first = store().claim_next(claim_as());
+  ASSERT_TRUE(first);
+  EXPECT_EQ(first->time_estimate_seconds, std::optional<double>(12.5));
+  const auto second = store().claim_next(claim_as());
+  ASSERT_TRUE(second);
+  EXPECT_FALSE(second->time_estimate_seconds);
+
+  // A job queued before the column existed is claimed without one.
+  store_.reset();
+  {
+    auto c = db_->connect();
+    const auto latest = c->query("SELECT max(version) AS v FROM schema_migrations")[0].int64("v");
+    c->exec(
+        "ALTER TABLE jobs DROP COLUMN time_estimate_s; "
+        "DELETE FROM schema_migrations WHERE version = " +
+        std::to_string(latest));
+    if (db_->kind() == "sqlite") c->exec("PRAGMA user_version = " + std::to_string(latest - 1));
+    c->exec(
+        "INSERT INTO jobs (name, state, case_json, body_hash, created_at) "
+        "VALUES ('old', 'queued', '{}', 'h', 0)");
+  }
+  store_ = db_->open();
+  const auto old = store().claim_next(claim_as());
+  ASSERT_TRUE(old);
+  EXPECT_EQ(old->case_json, "{}");
+  EXPECT_FALSE(old->time_estimate_seconds);
+}
+
+TEST_P(JobStoreContract, TheVtuIsReadInPartsOfItsStoredBytes) {
+  const auto id = submit("{}");
+  const Lease lease = store().claim_next(claim_as())->lease;
+  std::string vtu = "<VTKFile>";
+  for (int i = 0; vtu.size() < 300000; ++i) vtu += std::to_string(i * 0.37) + " ";
+  ASSERT_TRUE(store().complete_succeeded(lease, "{}", vtu + "</VTKFile>"));
+  const auto stored = store().stored_vtu(id);
+  ASSERT_TRUE(stored);
+  EXPECT_TRUE(stored->gzip);
+  EXPECT_GT(stored->bytes, 1000);
+  EXPECT_LT(stored->bytes, static_cast<std::int64_t>(vtu.size()));
+  std::string joined;  // odd part sizes, the last one past the end
+  for (std::int64_t at = 0; at < stored->bytes; at += 7777) {
+    const auto part = store().stored_vtu_bytes(id, at, 7777);
+    ASSERT_TRUE(part);
+    EXPECT_EQ(static_cast<std::int64_t>(part->size()),
+              std::min<std::int64_t>(7777, stored->bytes - at));
+    joined += *part;
+  }
+  EXPECT_EQ(static_cast<std::int64_t>(joined.size()), stored->bytes);
+  EXPECT_EQ(gzip_decompress(joined), vtu + "</VTKFile>");
+  EXPECT_EQ(gzip_recorded_size(joined.substr(joined.size() - 4)), vtu.size() + 10);
+  EXPECT_EQ(store().stored_vtu_bytes(id, stored->bytes, 10), std::optional<std::string>(""));
+  EXPECT_FALSE(store().stored_vtu(id + 1));
+  EXPECT_FALSE(store().stored_vtu_bytes(id + 1, 0, 10));
+}
+
+TEST_P(JobStoreContract, TheResultIsReadInPartsOfItsBytes) {
+  const auto id = submit("{}");
+  const Lease lease = store().claim_next(claim_as())->lease;
+  std::string result = R"({"converged":true,"name":"Prüfung σ ✓","steps":[)";
+  for (int i = 0; result.size() < 100000; ++i) result += R"({"k":)" + std::to_string(i) + "},";
+  result += R"({"k":-1}]})";
+  ASSERT_TRUE(store().complete_succeeded(lease, result, "<VTKFile/>"));
+  EXPECT_EQ(store().result_json_size(id), std::optional<std::int64_t>(result.size()));
+  std::string joined;  // odd part sizes that cut multi-byte characters, the last past the end
+  for (std::int64_t at = 0; at < static_cast<std::int64_t>(result.size()); at += 37)
+    joined += store().result_json_bytes(id, at, 37).value_or("<gone>");
+  EXPECT_EQ(joined, result);
+  EXPECT_EQ(store().result_json_bytes(id, result.size(), 10), std::optional<std::string>(""));
+  EXPECT_FALSE(store().result_json_size(id + 1));
+  EXPECT_FALSE(store().result_json_bytes(id + 1, 0, 10));
 }
 
 TEST_P(JobStoreContract, OnlyTheLeaseHolderChangesARunningJob) {

@@ -101,13 +101,13 @@ TEST(SqliteJobStore, NewDatabaseRecordsItsVersionAndVacuumsIncrementally) {
   TempDir dir;
   const std::string path = dir.file("jobs.db");
   { SqliteJobStore store(path); }
-  // 1–3 SQLite's own steps, 4 and 5 the steps both stores share (worker budgets, progress
-  // steps).
-  EXPECT_EQ(sql_int(path, "SELECT max(version) FROM schema_migrations"), 5);
-  EXPECT_EQ(sql_int(path, "PRAGMA user_version"), 5);
+  // 1–3 SQLite's own steps, 4 to 6 the steps both stores share (worker budgets, progress
+  // steps, time estimates).
+  EXPECT_EQ(sql_int(path, "SELECT max(version) FROM schema_migrations"), 6);
+  EXPECT_EQ(sql_int(path, "PRAGMA user_version"), 6);
   EXPECT_EQ(sql_int(path, "PRAGMA auto_vacuum"), 2);  // incremental
   { SqliteJobStore again(path); }                     // opening again changes nothing
-  EXPECT_EQ(sql_int(path, "SELECT count(*) FROM schema_migrations"), 5);
+  EXPECT_EQ(sql_int(path, "SELECT count(*) FROM schema_migrations"), 6);
 }
 
 // A file written by the first release (schema version 1, no auto-vacuum, VTU as text, a job
@@ -141,7 +141,7 @@ PRAGMA user_version = 1;
 
   SqliteJobStore store(path);
   EXPECT_EQ(sql_int(path, "PRAGMA auto_vacuum"), 2);  // converted by VACUUM
-  EXPECT_EQ(sql_int(path, "SELECT max(version) FROM schema_migrations"), 5);
+  EXPECT_EQ(sql_int(path, "SELECT max(version) FROM schema_migrations"), 6);
   EXPECT_EQ(store.result_json(1),
             R"({"old":true,"converged":false,"stop_reason":"max_iterations"})");
   // Convergence is copied from results stored before the columns existed.

@@ -2,7 +2,7 @@
 #  - unit: the store, workers and HTTP layer in-process, with a fake solver step (test code).
 #  - integration: the real build/bin/fosls-serve on a free loopback port, driven over HTTP.
 set(SERVICE_TEST_DIR ${CMAKE_CURRENT_LIST_DIR})
-foreach(name request_checks_test sqlite_job_store_test worker_pool_test http_api_test large_body_test
+foreach(name request_checks_test sqlite_job_store_test worker_pool_test http_api_test stored_body_test
              job_process_test store_url_test postgres_job_store_test request_head_test
              bounded_http_server_test)
   add_executable(${name} ${SERVICE_TEST_DIR}/${name}.cpp)
@@ -26,7 +26,7 @@ endforeach()
 
 # Integration: needs the real solver behind fosls-serve.
 foreach(name service_integration_test service_isolation_test service_convergence_test
-             service_3d_test hostile_http_test)
+             service_3d_test hostile_http_test hostile_probes_test)
   add_executable(${name} ${SERVICE_TEST_DIR}/${name}.cpp)
   target_link_libraries(${name} PRIVATE GTest::gtest_main PkgConfig::HTTPLIB PkgConfig::SQLITE3
                                         nlohmann_json::nlohmann_json)

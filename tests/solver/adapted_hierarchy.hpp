@@ -10,7 +10,8 @@
 namespace fosls::testing {
 
 /// Each step solves the finest level with pdas and refines the Dörfler set of θ = 0.5.
-inline MeshHierarchy adapted_hierarchy(MeshHierarchy meshes, const ProblemData& data, int steps) {
+inline MeshHierarchy adapted_hierarchy(MeshHierarchy meshes, const ProblemData<2>& data,
+                                       int steps) {
   BisectionState state = longest_edge_state(meshes.finest(), 2 * (meshes.num_levels() - 1));
   for (int step = 0; step < steps; ++step) {
     const Discretization disc(meshes, data);

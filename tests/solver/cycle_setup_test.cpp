@@ -12,7 +12,7 @@ namespace fosls {
 namespace {
 
 TEST(CycleSetup, CoarseLevelsAreBuiltOncePerTruncatedSetAndNotBeforeTheFirstCycle) {
-  const ProblemData data = testing::hertz(1.0);
+  const ProblemData<2> data = testing::hertz(1.0);
   const Discretization disc(
       testing::adapted_hierarchy(build_mesh_hierarchy(make_hertz({.size = 0.1}), 1), data, 3),
       data);
@@ -34,7 +34,7 @@ TEST(CycleSetup, CoarseLevelsAreBuiltOncePerTruncatedSetAndNotBeforeTheFirstCycl
 }
 
 TEST(CycleSetup, ASingleLevelHasItsExactSolverAtOnce) {
-  const ProblemData data = testing::signorini_square(1.0);
+  const ProblemData<2> data = testing::signorini_square(1.0);
   const Discretization disc(build_mesh_hierarchy(make_square({.size = 0.5}), 0), data);
   const LevelHierarchy h = disc.build_level_hierarchy();
   ASSERT_EQ(h.num_levels(), 1);

@@ -1,11 +1,14 @@
-// solver.time_limit_s before the first iterate: the spaces and the assembly's element loop poll
-// the run's deadline and throw TimeLimitReached once it has passed, and a deadline that does not
-// pass changes nothing (the assembled problem is the same bit for bit).
+// solver.time_limit_s before the first iterate: the spaces and the assembly's element loop (of
+// triangles, tetrahedra and order 2) poll the run's deadline and throw TimeLimitReached once it has
+// passed, and a deadline that does not pass changes nothing (the assembled problem is the same bit
+// for bit).
 #include <gtest/gtest.h>
 
 #include <chrono>
 #include <cstring>
 
+#include "../tet_problems.hpp"
+#include "assembly/p2_rt1_assembler.hpp"
 #include "contact_problems.hpp"
 #include "core/deadline.hpp"
 
@@ -33,6 +36,30 @@ TEST(Deadline, TheElementLoopStopsOnceItHasPassed) {
     FAIL() << "the assembly ran to its end past its deadline";
   } catch (const TimeLimitReached& e) {
     EXPECT_EQ(e.stage(), "assembling the finest level");
+  }
+}
+
+// The tetrahedra's and order 2's assemblies share the scatter, and with it the deadline.
+TEST(Deadline, TheElementLoopStopsOnceItHasPassedIn3DAndAtOrderTwo) {
+  const TetHierarchy tets = build_tet_hierarchy(make_box({2, 2, 2}), 2);  // 3 072 tetrahedra
+  ASSERT_GT(tets.finest().num_cells(), 2 * Deadline::kPollEvery);
+  const ProblemData<3> block = testing::signorini_block(1.0);
+  const FoslsSpace<3> space3(tets.finest(), block.boundary_roles());
+  const FoslsAssembler<3> assembler3(space3, block);
+  const MeshHierarchy meshes = build_mesh_hierarchy(make_square({.size = 0.25}), 4);
+  const ProblemData<2> square = testing::signorini_square(1.0);
+  const P2Rt1Space space2(meshes.finest(), square.boundary_roles());
+  const P2Rt1Assembler assembler2(space2, square);
+  for (int order = 1; order <= 2; ++order) {
+    try {
+      if (order == 1)
+        assembler3.assemble_system(Deadline(Clock::now()));
+      else
+        assembler2.assemble_system(Deadline(Clock::now()));
+      FAIL() << "the assembly ran to its end past its deadline";
+    } catch (const TimeLimitReached& e) {
+      EXPECT_EQ(e.stage(), "assembling the finest level");
+    }
   }
 }
 

@@ -71,7 +71,7 @@ void expect_weights_refused(const nlohmann::json& j, const std::string& what) {
 }
 
 TEST(IndefiniteSystem, TheCaseLayerReportsTheWeightsWhenASolverFindsIt) {
-  ProblemData d = testing::flat_square(1.0);
+  ProblemData<2> d = testing::flat_square(1.0);
   d.weights.c3 = 0.35;
   const Discretization disc(build_mesh_hierarchy(make_square({.size = 0.25}), 3), d);
   ASSERT_TRUE(contact_layer_is_definite(disc.finest_space(), disc.problem().qp))

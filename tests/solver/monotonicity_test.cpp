@@ -28,7 +28,8 @@ struct Case {
 Discretization discretization(const Case& c) {
   // Adapted hierarchies: two uniform levels and five bisection levels (7 levels in all).
   const int uniform = c.adaptive_steps > 0 ? 1 : 3;
-  const ProblemData data = c.hertz ? testing::hertz(c.lambda) : testing::signorini_square(c.lambda);
+  const ProblemData<2> data =
+      c.hertz ? testing::hertz(c.lambda) : testing::signorini_square(c.lambda);
   MeshHierarchy meshes = build_mesh_hierarchy(
       c.hertz ? make_hertz({.size = 0.1}) : make_square({.size = 0.25}), uniform);
   if (c.adaptive_steps > 0)

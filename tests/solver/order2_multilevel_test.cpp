@@ -27,12 +27,12 @@ class Order2Multilevel : public ::testing::TestWithParam<Case> {
  protected:
   void SetUp() override {
     const Case& c = GetParam();
-    const ProblemData data =
+    const ProblemData<2> data =
         c.hertz ? testing::hertz(c.lambda) : testing::signorini_square(c.lambda);
     lowest_ = std::make_unique<Discretization>(
         build_mesh_hierarchy(c.hertz ? make_hertz({.size = 0.1}) : make_square({.size = 0.25}), 2),
         data);
-    space_ = std::make_unique<P2Rt1Space>(lowest_->meshes().finest(), data.roles());
+    space_ = std::make_unique<P2Rt1Space>(lowest_->meshes().finest(), data.boundary_roles());
     assembler_ = std::make_unique<P2Rt1Assembler>(*space_, lowest_->data());
     problem_ = assembler_->assemble_system();
     hierarchy_ = lowest_->build_level_hierarchy();
@@ -49,7 +49,7 @@ TEST_P(Order2Multilevel, HierarchyIsConsistentAndTheEmbeddingExact) {
   EXPECT_EQ(hierarchy_inconsistency(hierarchy_, problem_.qp.size()), "");
   // A lowest-order field and its embedding have the same c1 and c2 terms (the spaces are nested
   // and both assemblies integrate exactly): the embedding is the identity on functions.
-  const FoslsSpace& lowest = lowest_->finest_space();
+  const FoslsSpace<2>& lowest = lowest_->finest_space();
   Vector x1 = Vector::Zero(lowest.num_dofs());
   for (int d = 0; d < lowest.num_dofs(); ++d) x1[d] = std::sin(0.37 * d + 0.1);
   const Eigen::SparseMatrix<double> embed =

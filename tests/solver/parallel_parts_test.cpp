@@ -10,6 +10,7 @@
 #include <random>
 
 #include "../tet_problems.hpp"
+#include "assembly/p2_rt1_assembler.hpp"
 #include "assembly/tet_hierarchy.hpp"
 #include "contact_problems.hpp"
 #include "solvers/galerkin_product.hpp"
@@ -51,6 +52,35 @@ TEST(ParallelParts, AssemblyIsTheSameBitForBitOnOneAndTwoThreads) {
   EXPECT_TRUE(identical(one.problem().qp.A, two.problem().qp.A));
   EXPECT_TRUE(identical(one.problem().qp.b, two.problem().qp.b));
   EXPECT_GT(one.problem().qp.A.nonZeros(), 0);
+}
+
+// The one scatter (assembly_pattern.hpp) serves the tetrahedra and order 2 as well: the same
+// matrix and b on one thread and on two, and order 2's constant, summed cell by cell, too.
+TEST(ParallelParts, ThreeDAndOrderTwoAssemblyAreTheSameBitForBitOnOneAndTwoThreads) {
+  const TetHierarchy tets = build_tet_hierarchy(make_box({2, 2, 2}), 2);
+  const ProblemData<3> block = testing::signorini_block(1.0);
+  const FoslsSpace<3> space3(tets.finest(), block.boundary_roles());
+  const FoslsAssembler<3> assembler3(space3, block);
+  auto assemble3 = [&](int threads) {
+    return with_threads(threads, [&] { return assembler3.assemble_system(); });
+  };
+  const AssembledProblem one3 = assemble3(1), two3 = assemble3(2);
+  EXPECT_TRUE(identical(one3.qp.A, two3.qp.A));
+  EXPECT_TRUE(identical(one3.qp.b, two3.qp.b));
+  EXPECT_GT(one3.qp.A.nonZeros(), 0);
+
+  const MeshHierarchy meshes = build_mesh_hierarchy(make_square({.size = 0.25}), 2);
+  const ProblemData<2> square = testing::signorini_square(1.0);
+  const P2Rt1Space space2(meshes.finest(), square.boundary_roles());
+  const P2Rt1Assembler assembler2(space2, square);
+  auto assemble2 = [&](int threads) {
+    return with_threads(threads, [&] { return assembler2.assemble_system(); });
+  };
+  const AssembledProblem one2 = assemble2(1), two2 = assemble2(2);
+  EXPECT_TRUE(identical(one2.qp.A, two2.qp.A));
+  EXPECT_TRUE(identical(one2.qp.b, two2.qp.b));
+  EXPECT_EQ(one2.qp.constant, two2.qp.constant);
+  EXPECT_NE(one2.qp.constant, 0.0);
 }
 
 TEST(ParallelParts, AssembledQuadraticProgramIsTheFunctional) {

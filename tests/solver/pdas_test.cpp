@@ -25,7 +25,7 @@ Vector solve_by_pdas(const BoxQp& qp, SolverReport& report) {
 
 TEST(Pdas, MatchesEnumerationOnAnAssembledContactProblem) {
   for (const bool curved_gap : {true, false}) {
-    const ProblemData data =
+    const ProblemData<2> data =
         curved_gap ? testing::signorini_square(1.0) : testing::flat_square(1.0);
     const Discretization disc(build_mesh_hierarchy(make_square({.size = 0.25}), 0), data);
     const BoxQp& qp = disc.problem().qp;

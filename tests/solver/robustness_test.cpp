@@ -18,7 +18,7 @@ namespace {
 
 constexpr double kInf = std::numeric_limits<double>::infinity();
 
-int mmg_iterations(const Mesh& coarse, int levels, const ProblemData& data) {
+int mmg_iterations(const Mesh& coarse, int levels, const ProblemData<2>& data) {
   const Discretization disc(build_mesh_hierarchy(coarse, levels - 1), data);
   const LevelHierarchy h = disc.build_level_hierarchy();
   SolverOptions o;

@@ -27,7 +27,7 @@ std::vector<int> triangles_near(const Mesh& mesh, double y, double distance) {
 TEST(SolutionProlongation, KeepsTheFunctionalNextToDirichletAndContactBoundaries) {
   // A plane obstacle: the gap is linear along the bottom, so nothing of the data changes with
   // the mesh either.
-  const ProblemData data = testing::flat_square(1.0);
+  const ProblemData<2> data = testing::flat_square(1.0);
   MeshHierarchy meshes = build_mesh_hierarchy(make_square({.size = 0.25}), 1);
   BisectionState state = longest_edge_state(meshes.finest(), 2);
   // Two steps at the Dirichlet top (y = 1), two at the contact bottom (y = 0).
@@ -57,7 +57,7 @@ TEST(SolutionProlongation, KeepsTheFunctionalNextToDirichletAndContactBoundaries
 }
 
 TEST(SolutionProlongation, RefusesAVectorOfTheWrongLevel) {
-  const ProblemData data = testing::signorini_square(1.0);
+  const ProblemData<2> data = testing::signorini_square(1.0);
   const Discretization disc(build_mesh_hierarchy(make_square({.size = 0.5}), 1), data);
   EXPECT_THROW(prolongate_to_finest(disc, Vector::Zero(disc.space(0).num_free())),
                std::invalid_argument);

@@ -66,7 +66,7 @@ Discretization hertz(double lambda, int refinements) {
 }
 
 /// `refinements` uniform levels, then four adaptive bisection steps.
-Discretization adapted(const ProblemData& data, Mesh coarse, int refinements) {
+Discretization adapted(const ProblemData<2>& data, Mesh coarse, int refinements) {
   return Discretization(
       testing::adapted_hierarchy(build_mesh_hierarchy(std::move(coarse), refinements), data, 4),
       data);
@@ -94,13 +94,13 @@ TEST(Agreement, HertzIncompressible) {
   check_agreement(hertz(kInf, 1), kSingleLevel);
 }
 TEST(Agreement, AdaptedCurvedGapSquare) {
-  const ProblemData data = testing::signorini_square(1.0);
+  const ProblemData<2> data = testing::signorini_square(1.0);
   check_agreement(adapted(data, make_square({.size = 0.25}), 1), kMultilevel);
   check_agreement(adapted(data, make_square({.size = 0.25}), 0), kSingleLevel);
 }
 TEST(Agreement, AdaptedHertz) {
   for (double lambda : {1.0, kInf}) {
-    const ProblemData data = testing::hertz(lambda);
+    const ProblemData<2> data = testing::hertz(lambda);
     check_agreement(adapted(data, make_hertz({.size = 0.1}), 1), kMultilevel);
   }
   check_agreement(adapted(testing::hertz(1.0), make_hertz({.size = 0.1}), 0), kSingleLevel);

@@ -149,8 +149,9 @@ TEST(TetHertzForce, TwoRefinementsApproachTheFinestMeshFromAboveWithNoLateralFor
   const SolverReport mmg =
       solve_box_qp(disc.problem().qp, disc.build_level_hierarchy(), SolverOptions{}, {}, x);
   EXPECT_TRUE(mmg.converged);
-  const TetAssembler& a = disc.assembler();
-  const Point3 f = a.contact_force(a.full_vector(disc.problem(), x));
+  const FoslsAssembler<3>& a = disc.assembler();
+  const Point3 f = contact_force(disc.finest_space(), a.full_vector(disc.problem(), x),
+                                 disc.problem().stress_scale);
   std::printf("r = 2: F_z = %.7f in %d iterations, Hertz %.7f\n", f.z(), mmg.iterations,
               testing::hertz_force_3d(1.0));
   EXPECT_GT(f.z(), 0.0037693);

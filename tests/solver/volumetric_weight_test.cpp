@@ -19,8 +19,8 @@
 namespace fosls {
 namespace {
 
-ProblemData hertz_with(double lambda, double volumetric) {
-  ProblemData d = testing::hertz(lambda);
+ProblemData<2> hertz_with(double lambda, double volumetric) {
+  ProblemData<2> d = testing::hertz(lambda);
   d.weights.c2_volumetric = volumetric;
   return d;
 }

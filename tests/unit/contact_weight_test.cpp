@@ -16,7 +16,7 @@ namespace {
 
 constexpr double kInf = std::numeric_limits<double>::infinity();
 
-bool is_definite(const MeshHierarchy& meshes, ProblemData data, double c3) {
+bool is_definite(const MeshHierarchy& meshes, ProblemData<2> data, double c3) {
   data.weights.c3 = c3;
   Discretization disc(meshes, std::move(data));
   Eigen::CholmodSupernodalLLT<SparseMatrix> llt(disc.problem().qp.A);

@@ -37,7 +37,7 @@ TEST(Definiteness, DefaultWeightsGiveSpdMatricesOnTheBenchmarks) {
 
 TEST(Definiteness, ChecksAgreeWithCholmodOnTheFinestMatrix) {
   for (double c3 : {0.2, 0.35, 2.0}) {
-    ProblemData d = testing::signorini_square(1.0);
+    ProblemData<2> d = testing::signorini_square(1.0);
     d.weights.c3 = c3;
     Discretization sq(build_mesh_hierarchy(make_square({.size = 0.25}), 3), d);
     const bool definite = cholmod_llt_succeeds(sq);

@@ -17,7 +17,7 @@ const Eigen::Vector2d kShift(0.4, -0.25);
 const Eigen::Matrix2d kSigma = (Eigen::Matrix2d() << 1.5, -0.4, 0.9, -2.2).finished();
 
 /// Interpolant of u(x) = kShift + kGrad x and σ = kSigma (Cartesian, no contact groups).
-Vector interpolate(const FoslsSpace& s) {
+Vector interpolate(const FoslsSpace<2>& s) {
   const Mesh& m = s.mesh();
   Vector x(s.num_dofs());
   for (int v = 0; v < m.num_vertices(); ++v) {
@@ -33,13 +33,13 @@ Vector interpolate(const FoslsSpace& s) {
 
 using testing::perturbed_square;
 
-std::vector<GroupRole> neumann_everywhere(const Mesh& m) {
-  return std::vector<GroupRole>(m.group_names().size(), GroupRole::kNeumann);
+std::vector<BoundaryRole> neumann_everywhere(const Mesh& m) {
+  return std::vector<BoundaryRole>(m.group_names().size(), {GroupRole::kNeumann});
 }
 
 TEST(Exactness, P1ReproducesLinearAndRt0ConstantFields) {
   Mesh m = perturbed_square();
-  FoslsSpace s(m, neumann_everywhere(m));
+  FoslsSpace<2> s(m, neumann_everywhere(m));
   FeField field(s, interpolate(s), 1.0);
   for (int t = 0; t < m.num_triangles(); ++t) {
     const auto& tri = m.triangle(t);
@@ -56,8 +56,8 @@ TEST(Exactness, P1ReproducesLinearAndRt0ConstantFields) {
 TEST(Exactness, ProlongationOfACoarseInterpolantIsTheFineInterpolant) {
   MeshHierarchy h = build_mesh_hierarchy(perturbed_square(), 2);
   for (int j = 1; j < h.num_levels(); ++j) {
-    FoslsSpace coarse(h.meshes[j - 1], neumann_everywhere(h.meshes[j - 1]));
-    FoslsSpace fine(h.meshes[j], neumann_everywhere(h.meshes[j]));
+    FoslsSpace<2> coarse(h.meshes[j - 1], neumann_everywhere(h.meshes[j - 1]));
+    FoslsSpace<2> fine(h.meshes[j], neumann_everywhere(h.meshes[j]));
     SparseMatrix p = cartesian_prolongation(h.meshes[j - 1], h.meshes[j], h.maps[j]);
     Vector diff = p * interpolate(coarse) - interpolate(fine);
     EXPECT_LT(diff.lpNorm<Eigen::Infinity>(), 1e-12);
@@ -74,8 +74,8 @@ TEST(Exactness, ProlongationOnBisectedMeshesIsExact) {
     std::vector<int> marked;
     for (int t = 0; t < mesh.num_triangles(); t += 3 + step) marked.push_back(t);
     Bisection b = refine_by_bisection(mesh, state, marked);
-    FoslsSpace coarse(mesh, neumann_everywhere(mesh));
-    FoslsSpace fine(b.fine, neumann_everywhere(b.fine));
+    FoslsSpace<2> coarse(mesh, neumann_everywhere(mesh));
+    FoslsSpace<2> fine(b.fine, neumann_everywhere(b.fine));
     SparseMatrix p = cartesian_prolongation(mesh, b.fine, b.maps);
     Vector diff = p * interpolate(coarse) - interpolate(fine);
     EXPECT_LT(diff.lpNorm<Eigen::Infinity>(), 1e-12) << "step " << step;

@@ -2,6 +2,7 @@
 #include <gtest/gtest.h>
 
 #include "mesh/builtin_meshes.hpp"
+#include "mesh/group_name_index.hpp"
 #include "mesh/refinement.hpp"
 
 namespace fosls {
@@ -53,6 +54,21 @@ TEST(Refinement, RedRefinementQuadruplesAndKeepsGroups) {
 TEST(Mesh, RejectsBoundaryEdgeWithoutGroup) {
   std::vector<Point> v = {{0, 0}, {1, 0}, {0, 1}};
   EXPECT_THROW(Mesh(v, {{0, 1, 2}}, {{0, 1, 0, -1}}, {"g"}), std::invalid_argument);
+}
+
+TEST(GroupNameIndex, FindsTheFirstGroupOfANameAndNothingElse) {
+  const std::vector<std::string> names = {"top", "bottom", "", "top", "a b", "bottom2", "Bottom"};
+  const GroupNameIndex index(names);
+  EXPECT_EQ(index.find(names, "top"), 0);  // the first of two, as a linear search finds it
+  EXPECT_EQ(index.find(names, "bottom"), 1);
+  EXPECT_EQ(index.find(names, ""), 2);
+  EXPECT_EQ(index.find(names, "a b"), 4);
+  EXPECT_EQ(index.find(names, "bottom2"), 5);
+  EXPECT_EQ(index.find(names, "Bottom"), 6);
+  for (const char* absent : {"bot", "bottom ", "topp", "z", "A"})
+    EXPECT_EQ(index.find(names, absent), -1) << absent;
+  const std::vector<std::string> none;
+  EXPECT_EQ(GroupNameIndex(none).find(none, "top"), -1);
 }
 
 }  // namespace

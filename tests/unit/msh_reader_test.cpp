@@ -105,6 +105,41 @@ class MshReader : public ::testing::Test {
   static inline std::string* valid_ = nullptr;
 };
 
+/// Two triangles of the unit square, its sides in physical curves 1–4, and `extra` more
+/// physical names of dimension 1 (tags 10, 11, …) that no curve uses: the name of tag 10 + k
+/// is "g" + (k % distinct), so names repeat once `extra` exceeds `distinct`.
+std::string square_with_names(int extra, int distinct) {
+  std::ostringstream out;
+  out << "$MeshFormat\n4.1 0 8\n$EndMeshFormat\n$PhysicalNames\n"
+      << extra + 4 << "\n"
+      << "1 1 \"bottom\"\n1 2 \"right\"\n1 3 \"top\"\n1 4 \"left\"\n";
+  for (int k = 0; k < extra; ++k) out << "1 " << 10 + k << " \"g" << k % distinct << "\"\n";
+  out << "$EndPhysicalNames\n$Entities\n0 4 1 0\n1 0 0 0 1 0 0 1 1 0\n2 1 0 0 1 1 0 1 2 0\n"
+         "3 0 1 0 1 1 0 1 3 0\n4 0 0 0 0 1 0 1 4 0\n1 0 0 0 1 1 0 0 4 1 2 3 4\n$EndEntities\n"
+         "$Nodes\n1 4 1 4\n2 1 0 4\n1\n2\n3\n4\n0 0 0\n1 0 0\n1 1 0\n0 1 0\n$EndNodes\n"
+         "$Elements\n5 6 1 6\n1 1 1 1\n1 1 2\n1 2 1 1\n2 2 3\n1 3 1 1\n3 3 4\n1 4 1 1\n4 4 1\n"
+         "2 1 2 2\n5 1 2 3\n6 1 3 4\n$EndElements\n";
+  return out.str();
+}
+
+TEST(MshReaderNames, EveryPhysicalNameIsOneGroupAndEqualNamesShareIt) {
+  // 150 000 names, 50 000 of them distinct: each distinct name is one group, in the order of
+  // its first tag, after the four sides (issue 50's probe had 190 000; the search for equal
+  // names was quadratic in them).
+  const Mesh m = mesh_from_msh(square_with_names(150000, 50000));
+  ASSERT_EQ(m.group_names().size(), 4u + 50000u);
+  EXPECT_EQ(m.group_names()[0], "bottom");
+  EXPECT_EQ(m.group_names()[4], "g0");
+  EXPECT_EQ(m.group_names()[4 + 49999], "g49999");
+  for (int k : {0, 1, 777, 49999}) EXPECT_EQ(m.group_index("g" + std::to_string(k)), 4 + k);
+  EXPECT_EQ(m.group_index("top"), 2);
+  EXPECT_EQ(m.group_index("g50000"), -1);
+  EXPECT_EQ(m.group_index(""), -1);
+  int on_sides = 0;  // the sides' edges keep their groups
+  for (int e = 0; e < m.num_edges(); ++e) on_sides += m.is_boundary_edge(e) && m.edge_group(e) < 4;
+  EXPECT_EQ(on_sides, 4);
+}
+
 TEST_F(MshReader, ReadsTheSquareWrittenByGmsh) {
   const Mesh m = mesh_from_msh(valid());
   ASSERT_EQ(m.group_names(), (std::vector<std::string>{"bottom", "rest of boundary"}));

@@ -46,13 +46,13 @@ Vector solved(const TetDiscretization& disc) {
 
 TEST(TetVtuWriter, ALinearFieldComesBackExactly) {
   const Eigen::Vector3d strain(0.01, -0.02, 0.03);  // u = (0.01 x, −0.02 y, 0.03 z)
-  TetProblemData d;
+  ProblemData<3> d;
   d.material = {.mu = 1.5, .lambda = 2.0};
   d.groups.resize(6);
   for (auto& g : d.groups) {
     g.role = GroupRole::kDirichlet;
     for (int c = 0; c < 3; ++c)
-      g.values[c] = [c, strain](const Point3& x) { return strain[c] * x[c]; };
+      g.values[c] = testing::of_point([c, strain](const Point3& x) { return strain[c] * x[c]; });
   }
   const TetDiscretization disc(build_tet_hierarchy(make_box({2, 2, 2}), 1), std::move(d));
   const std::string vtu =

@@ -88,7 +88,7 @@ int main(int argc, char** argv) {
   }
   const CornerSolution sol{.beta = o.beta};
   const fosls::ExactSolution exact = sol.exact();
-  const fosls::ProblemData data = sol.problem(o.lambda);
+  const fosls::ProblemData<2> data = sol.problem(o.lambda);
   const fosls::Mesh coarse = fosls::testing::corner_mesh(o.coarse);
   nlohmann::json out = {
       {"lambda", std::isinf(o.lambda) ? nlohmann::json("inf") : nlohmann::json(o.lambda)},

@@ -60,8 +60,8 @@ struct CornerSolution {
   }
 
   /// Groups of corner_mesh: 0 Dirichlet (left, bottom, the corner's edges), 1 right, 2 top.
-  ProblemData problem(double lambda) const {
-    ProblemData d;
+  ProblemData<2> problem(double lambda) const {
+    ProblemData<2> d;
     d.material.mu = mu;
     d.material.lambda = lambda;
     for (int i = 0; i < 2; ++i) d.body_force[i] = [](double, double) { return 0.0; };

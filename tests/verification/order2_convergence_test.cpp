@@ -28,7 +28,7 @@ std::pair<double, double> error_norms(const P2Rt1Space& space, const Vector& x_c
   double eu = 0.0, es = 0.0;
   for (int t = 0; t < mesh.num_triangles(); ++t) {
     const P2Rt1Element el(mesh, t);
-    const auto dofs = space.triangle_dofs(t);
+    const auto dofs = space.cell_dofs(t);
     for (const TrianglePoint& p : kTriangleDegree5) {
       const Point x = el.point(p.l0, p.l1);
       const double w = p.weight * el.area();
@@ -61,8 +61,8 @@ std::vector<Row> convergence_table(double lambda) {
   std::vector<Row> rows;
   for (int r = 0; r <= 4; ++r) {
     const MeshHierarchy meshes = build_mesh_hierarchy(make_square({.size = 0.5}), r);
-    const ProblemData data = sol.problem(lambda);
-    const P2Rt1Space space(meshes.finest(), data.roles());
+    const ProblemData<2> data = sol.problem(lambda);
+    const P2Rt1Space space(meshes.finest(), data.boundary_roles());
     const P2Rt1Assembler assembler(space, data);
     const AssembledProblem p = assembler.assemble_system();
     Eigen::CholmodSupernodalLLT<SparseMatrix> llt(p.qp.A);

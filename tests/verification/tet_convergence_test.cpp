@@ -9,8 +9,9 @@
 #include <cstdio>
 #include <limits>
 
+#include "../tet_problems.hpp"
 #include "assembly/tet_hierarchy.hpp"
-#include "fem/tet_element.hpp"
+#include "fem/simplex_element.hpp"
 #include "solvers/solve_loop.hpp"
 
 namespace fosls {
@@ -38,10 +39,11 @@ struct SmoothSolution3 {
   static Point3 f(const Point3& p) { return 2.0 * M_PI * M_PI * u(p); }
 
   /// Dirichlet on left, front and bottom, Neumann (t = σn) on right, back and top.
-  static TetProblemData problem(double lambda) {
-    TetProblemData d;
+  static ProblemData<3> problem(double lambda) {
+    ProblemData<3> d;
     d.material = {.mu = 1.0, .lambda = lambda};
-    for (int i = 0; i < 3; ++i) d.body_force[i] = [i](const Point3& x) { return f(x)[i]; };
+    for (int i = 0; i < 3; ++i)
+      d.body_force[i] = testing::of_point([i](const Point3& x) { return f(x)[i]; });
     d.groups.resize(6);  // left, right, front, back, bottom, top
     for (int g = 0; g < 6; ++g) {
       const bool dirichlet = g % 2 == 0;
@@ -50,8 +52,8 @@ struct SmoothSolution3 {
       d.groups[g].role = dirichlet ? GroupRole::kDirichlet : GroupRole::kNeumann;
       for (int i = 0; i < 3; ++i)
         d.groups[g].values[i] =
-            dirichlet ? ScalarFunction3([i](const Point3& x) { return u(x)[i]; })
-                      : ScalarFunction3([i, n](const Point3& x) { return (sigma(x) * n)[i]; });
+            dirichlet ? testing::of_point([i](const Point3& x) { return u(x)[i]; })
+                      : testing::of_point([i, n](const Point3& x) { return (sigma(x) * n)[i]; });
     }
     return d;
   }
@@ -64,12 +66,12 @@ struct Row {
 };
 
 /// ‖u − u_h‖_H1 and ‖σ − σ_h‖_H(div) by the four-point rule.
-std::pair<double, double> error_norms(const TetSpace& space, const Vector& x, double scale) {
+std::pair<double, double> error_norms(const FoslsSpace<3>& space, const Vector& x, double scale) {
   double eu = 0, es = 0;
   const TetMesh& mesh = space.mesh();
   for (int t = 0; t < mesh.num_tets(); ++t) {
-    const TetElement e(mesh, t);
-    const auto dofs = space.tet_dofs(t);
+    const SimplexElement<3> e(mesh, t);
+    const auto dofs = space.cell_dofs(t);
     Eigen::Matrix3d grad = Eigen::Matrix3d::Zero();
     Point3 div = Point3::Zero();
     for (int k = 0; k < 4; ++k)
@@ -77,7 +79,7 @@ std::pair<double, double> error_norms(const TetSpace& space, const Vector& x, do
         grad.row(c) += x[dofs[3 * k + c]] * e.grad[k].transpose();
         div[c] += scale * x[dofs[12 + 3 * k + c]] * e.rt0_div(k);
       }
-    for (const Point3& q : tet_quadrature_points(e)) {
+    for (const Point3& q : e.quadrature_points()) {
       Point3 u = Point3::Zero();
       Eigen::Matrix3d sigma = Eigen::Matrix3d::Zero();
       for (int k = 0; k < 4; ++k)
@@ -85,7 +87,7 @@ std::pair<double, double> error_norms(const TetSpace& space, const Vector& x, do
           u[c] += e.p1(k, q) * x[dofs[3 * k + c]];
           sigma.row(c) += scale * x[dofs[12 + 3 * k + c]] * e.rt0(k, q).transpose();
         }
-      const double w = 0.25 * e.volume;
+      const double w = 0.25 * e.measure;
       eu += w * ((u - SmoothSolution3::u(q)).squaredNorm() +
                  (grad - SmoothSolution3::grad_u(q)).squaredNorm());
       es += w * ((sigma - SmoothSolution3::sigma(q)).squaredNorm() +
@@ -100,7 +102,7 @@ std::vector<Row> convergence_table(double lambda, int finest) {
   for (int r = 1; r <= finest; ++r) {
     const TetDiscretization disc(build_tet_hierarchy(make_box({2, 2, 2}), r),
                                  SmoothSolution3::problem(lambda));
-    const TetAssembledProblem& p = disc.problem();
+    const AssembledProblem& p = disc.problem();
     Eigen::CholmodSupernodalLLT<SparseMatrix> llt(p.qp.A);
     EXPECT_EQ(llt.info(), Eigen::Success);
     const Vector exact = llt.solve(p.qp.b);

@@ -38,8 +38,8 @@ struct SmoothSolution {
   }
 
   /// Unit square, Dirichlet on left and bottom, Neumann (t = σn) on right and top.
-  ProblemData problem(double lambda) const {
-    ProblemData d;
+  ProblemData<2> problem(double lambda) const {
+    ProblemData<2> d;
     d.material.mu = mu;
     d.material.lambda = lambda;
     for (int i = 0; i < 2; ++i)
