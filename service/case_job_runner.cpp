@@ -1,8 +1,5 @@
 #include "case_job_runner.hpp"
 
-#include "case/case3d_admission.hpp"
-#include "case/case3d_reader.hpp"
-#include "case/case3d_runner.hpp"
 #include "case/case_admission.hpp"
 #include "case/case_reader.hpp"
 #include "case/case_runner.hpp"
@@ -44,16 +41,10 @@ CaseValidator submitted_case_validator(std::function<MemoryBudget()> budget,
       options.limits.memory_budget_name = now.name;
     }
     CaseVerdict verdict;
-    if (is_3d_case(case_json)) {
-      Case3dAdmission admission = admit_case_3d(case_json, options);
-      verdict.errors = std::move(admission.errors);
-      if (admission.estimate) verdict.estimate_seconds = admission.estimate->seconds;
-    } else {
-      CaseAdmission admission = admit_case(case_json, options);
-      verdict.errors = std::move(admission.errors);
-      if (admission.time) verdict.estimate_seconds = admission.time->seconds;
-    }
-    if (!verdict.errors.empty()) verdict.estimate_seconds.reset();
+    CaseAdmission admission = admit_case(case_json, options);
+    verdict.errors = std::move(admission.errors);
+    if (admission.time && verdict.errors.empty())
+      verdict.estimate_seconds = admission.time->seconds;
     return verdict;
   };
 }
@@ -118,31 +109,10 @@ std::function<void(const IterationRecord&)> progress_reporter(JobProgress& progr
   };
 }
 
-/// A 3D case (case3d_runner.hpp): one solve, its iterations reported as the 2D case's are.
-JobRunOutcome run_3d_case_job(const nlohmann::json& case_json, const JobRunContext& context,
-                              std::size_t job_memory_bytes) {
-  const CaseReadOptions options = service_read_options(job_memory_bytes);
-  Case3dReadResult read = read_case_3d(case_json, options);
-  if (!read.spec) return failed("invalid case: " + describe(read.errors));
-  JobProgress progress;
-  progress.steps = 1;  // one solve: no "step 1 of …" in the job's progress
-  Run3dControl control;
-  control.cancel = &context.cancel;
-  control.want_vtu = true;
-  control.on_iteration = progress_reporter(progress, context);
-  try {
-    Run3dOutput output = run_case_3d(*read.spec, control, options.limits);
-    return finished(output.cancelled, output.result, std::move(output.vtu));
-  } catch (const CaseException& e) {
-    return failed("invalid case: " + describe(e.errors()));
-  }
-}
-
 }  // namespace
 
 JobRunOutcome run_case_job(const nlohmann::json& case_json, const JobRunContext& context,
                            std::size_t job_memory_bytes) {
-  if (is_3d_case(case_json)) return run_3d_case_job(case_json, context, job_memory_bytes);
   const CaseReadOptions options = service_read_options(job_memory_bytes);
   CaseReadResult read = read_case(case_json, options);
   // Only reachable if validation rules changed between submit and run (e.g. an upgrade).

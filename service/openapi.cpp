@@ -58,7 +58,7 @@ json openapi_document() {
 
 std::optional<json> published_schema(const std::string& name) {
   if (name == "case.json") return case_json_schema();
-  if (name == "case3d.json") return case3d_json_schema();
+  if (name == "case3d.json") return case_json_schema();  // one schema for both dimensions
   if (name == "result.json") return result_json_schema();
   if (name == "result3d.json") return result3d_json_schema();
   return std::nullopt;

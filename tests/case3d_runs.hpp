@@ -7,9 +7,11 @@
 #include <string>
 #include <vector>
 
-#include "case/case3d_reader.hpp"
-#include "case/case3d_runner.hpp"
+#include "case/case_admission.hpp"
 #include "case/case_error.hpp"
+#include "case/case_reader.hpp"
+#include "case/case_runner.hpp"
+#include "case/solve3d_checks.hpp"
 #include "shipped_example.hpp"
 
 namespace fosls::testing {
@@ -22,9 +24,9 @@ inline nlohmann::json hertz_3d(int refinements) {
 
 /// The result of a case that must read cleanly (a read error is a test failure).
 inline nlohmann::json run_3d(const nlohmann::json& j) {
-  const auto read = read_case_3d(j);
+  const auto read = read_case(j);
   EXPECT_TRUE(read.errors.empty()) << (read.errors.empty() ? "" : read.errors[0].detail);
-  return run_case_3d(*read.spec).result;
+  return run_case(*read.spec).result;
 }
 
 /// The first problem the run of a cleanly read case throws (a CaseException: what only the
@@ -38,10 +40,10 @@ inline CaseError run_3d_problem(const nlohmann::json& j) {
   return {};
 }
 
-/// The pointers of the problems read_case_3d reports for `j`.
+/// The pointers of the problems admission reports for `j` (what the case alone shows).
 inline std::vector<std::string> case3d_problems(const nlohmann::json& j) {
   std::vector<std::string> pointers;
-  for (const auto& e : read_case_3d(j).errors) pointers.push_back(e.pointer);
+  for (const auto& e : admit_case(j).errors) pointers.push_back(e.pointer);
   return pointers;
 }
 

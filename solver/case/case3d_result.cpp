@@ -3,9 +3,11 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <map>
 #include <string>
 #include <vector>
 
+#include "case/obstacle3d.hpp"
 #include "case/result_json.hpp"
 #include "case/result_warnings.hpp"
 #include "case/solver_methods.hpp"
@@ -49,32 +51,36 @@ ContactSummary contact_summary(const Discretization<3>& disc, const Vector& x_fu
 struct SmallestGap {
   double gap = std::numeric_limits<double>::infinity();
   Point3 at = Point3::Zero();
-  const Obstacle3d* obstacle = nullptr;
+  const Obstacle* obstacle = nullptr;
 };
 
 /// `at_rest`: to the obstacles where the case puts them, before their displacement.
-SmallestGap smallest_gap(const Case3dSpec& spec, const TetMesh& mesh, bool at_rest) {
+SmallestGap smallest_gap(const CaseSpec& spec, const TetMesh& mesh, bool at_rest) {
   SmallestGap out;
+  std::map<std::string, ObstacleGap3d> gaps;
+  for (const auto& [name, bc] : spec.boundary)
+    if (bc.type == BoundaryCondition::Type::kContact)
+      gaps.emplace(name, ObstacleGap3d(bc.obstacle));
   for (int f = 0; f < mesh.num_faces(); ++f) {
     if (mesh.face_group(f) < 0) continue;  // an interior face
-    const auto it = spec.boundary.find(mesh.group_names()[mesh.face_group(f)]);
-    if (it == spec.boundary.end() || it->second.type != Condition3d::Type::kContact) continue;
+    const auto it = gaps.find(mesh.group_names()[mesh.face_group(f)]);
+    if (it == gaps.end()) continue;
+    const Obstacle& o = spec.boundary.at(it->first).obstacle;
     for (int v : mesh.face(f)) {
-      const Obstacle3d& o = it->second.obstacle;
-      const double g = at_rest ? o.gap_at_rest(mesh.vertex(v), mesh.face_normal(f))
-                               : o.gap_along(mesh.vertex(v), mesh.face_normal(f));
-      if (g < out.gap || !out.obstacle) out = {g, mesh.vertex(v), &it->second.obstacle};
+      const double g = at_rest ? it->second.at_rest(mesh.vertex(v), mesh.face_normal(f))
+                               : it->second.along(mesh.vertex(v), mesh.face_normal(f));
+      if (g < out.gap || !out.obstacle) out = {g, mesh.vertex(v), &o};
     }
   }
   return out;
 }
 
 /// What to move when the body starts inside an obstacle.
-std::string move_hint(const Obstacle3d& o) {
+std::string move_hint(const Obstacle& o) {
   switch (o.kind) {
-    case Obstacle3d::Kind::kPlane:
+    case Obstacle::Kind::kPlane:
       return "Move the plane's point";
-    case Obstacle3d::Kind::kSphere:
+    case Obstacle::Kind::kBall:
       return "Move the sphere's center";
     default:
       return "Check the gap g";
@@ -88,13 +94,13 @@ std::string where(const Point3& x) {
 
 /// The contact warnings 2D gives for the same findings, with the same codes; overlaps below
 /// kTouchingOverlap of the body's size are touching, as in 2D.
-std::vector<ResultWarning> contact_warnings(const Case3dSpec& spec, const TetMesh& mesh,
+std::vector<ResultWarning> contact_warnings(const CaseSpec& spec, const TetMesh& mesh,
                                             const ContactSummary& c) {
   std::vector<ResultWarning> warnings;
   if (c.faces == 0) return warnings;
   // An overlap where the case puts the obstacle is a mistake; its displacement is not.
   const SmallestGap rest = smallest_gap(spec, mesh, true);
-  const std::string noun = rest.obstacle->noun();
+  const std::string noun = obstacle_noun_3d(*rest.obstacle);
   if (rest.gap < -kTouchingOverlap * mesh.diameter())
     warnings.push_back({"initial_penetration",
                         "the body starts inside the " + noun +
@@ -151,7 +157,7 @@ std::vector<ResultWarning> roller_warnings(const FoslsSpace<3>& space) {
 
 }  // namespace
 
-json case3d_result(const Case3dSpec& spec, const Discretization<3>& disc, const Vector& x_free,
+json case3d_result(const CaseSpec& spec, const Discretization<3>& disc, const Vector& x_free,
                    const SolverReport& report) {
   const FoslsAssembler<3>& a = disc.assembler();
   const Vector x_full = a.full_vector(disc.problem(), x_free);

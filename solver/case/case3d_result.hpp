@@ -6,13 +6,13 @@
 #include <nlohmann/json.hpp>
 
 #include "assembly/discretization.hpp"
-#include "case/case3d_spec.hpp"
+#include "case/case_spec.hpp"
 #include "solvers/solve_loop.hpp"
 
 namespace fosls {
 
 /// Everything but `timing`, which the runner adds.
-nlohmann::json case3d_result(const Case3dSpec& spec, const Discretization<3>& disc,
+nlohmann::json case3d_result(const CaseSpec& spec, const Discretization<3>& disc,
                              const Vector& x_free, const SolverReport& report);
 
 }  // namespace fosls

@@ -34,7 +34,8 @@ std::vector<CaseLimitRow> case_limit_table(const CaseLimits& l) {
       {"`mesh.geo_file` path", std::to_string(l.max_path_length) + " characters"},
       {"geometry points, curves and groups; boundary conditions",
        grouped(static_cast<long long>(l.max_geometry_entities)) + " each"},
-      {"`mesh.refinements`", "at most " + std::to_string(l.max_refinements)},
+      {"`mesh.refinements`", "at most " + std::to_string(l.max_refinements) + " (2D), " +
+                                 std::to_string(l.max_refinements_3d) + " (3D)"},
       {"estimated coarse triangles (builtin and geometry meshes)",
        grouped(static_cast<long long>(kMaxCoarseTriangles))},
       {"estimated coarse boundary edges (geometry meshes)",

@@ -12,6 +12,8 @@ namespace fosls {
 
 struct CaseLimits {
   int max_refinements = 8;
+  /// A 3D case's: each refinement multiplies its unknowns by about 8.
+  int max_refinements_3d = 5;
   /// DOFs of the finest level. 10 million: level 9 of the square (8.4M) fits, and mmg needs
   /// about 0.8 KB per unknown (docs/performance.md); whether a case fits the machine is the
   /// memory estimate's question (the service refuses what exceeds a job's budget).

@@ -11,12 +11,13 @@ namespace {
 
 RigidObstacle<2> rigid_obstacle(const Obstacle& o) {
   RigidObstacle<2> r;
-  r.kind = o.kind == Obstacle::Kind::kPlane    ? RigidObstacle<2>::Kind::kPlane
-           : o.kind == Obstacle::Kind::kCircle ? RigidObstacle<2>::Kind::kBall
-                                               : RigidObstacle<2>::Kind::kGap;
+  r.kind = o.kind == Obstacle::Kind::kPlane  ? RigidObstacle<2>::Kind::kPlane
+           : o.kind == Obstacle::Kind::kBall ? RigidObstacle<2>::Kind::kBall
+                                             : RigidObstacle<2>::Kind::kGap;
   // The reader normalised the normal; normalised once more, as locate_obstacle did before it
   // took unit normals, so that 2D results stay bit for bit.
-  r.point = o.point, r.normal = o.normal.normalized(), r.center = o.center, r.radius = o.radius;
+  r.point = o.point.head<2>(), r.normal = o.normal.head<2>().normalized();
+  r.center = o.center.head<2>(), r.radius = o.radius;
   return r;
 }
 

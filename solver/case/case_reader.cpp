@@ -1,9 +1,10 @@
 #include "case/case_reader.hpp"
 
 #include <algorithm>
+#include <optional>
 
-#include "case/case3d_reader.hpp"
 #include "case/case_sections.hpp"
+#include "case/dimension_support.hpp"
 #include "case/early_group_check.hpp"
 #include "case/force_accuracy.hpp"
 #include "case/rule_checker.hpp"
@@ -11,11 +12,13 @@
 
 namespace fosls {
 
-ObjectRulePtr case_rule(const CaseReadOptions& options) {
+ObjectRulePtr case_rule(const CaseReadOptions& options, int dim) {
   const CaseSpec defaults;
   auto r = std::make_shared<ObjectRule>();
   r->title = "the case";
   r->anchor = "case";
+  const nlohmann::json no_force =
+      dim == 3 ? nlohmann::json::array({0, 0, 0}) : nlohmann::json::array({0, 0});
   r->fields = {
       optional_field("name", name_value(options.limits.max_name_length, "the name"), defaults.name,
                      "a label copied to the result"),
@@ -23,14 +26,16 @@ ObjectRulePtr case_rule(const CaseReadOptions& options) {
                      "the units the case's numbers are in, named in the outputs (absent: not "
                      "declared; the numbers are used as they are either way)"),
       optional_field("dimension", integer_value(Range::closed(2, 3)), 2,
-                     "2 for this format (plane strain); 3 for a 3D case, whose own format is "
-                     "described under \"3D cases\""),
-      required_field("mesh", object_value(mesh_rule(options)), "the mesh of the body"),
+                     "2: a plane-strain body of triangles; 3: a body of tetrahedra (\"3D "
+                     "cases\"), whose vectors have three components"),
+      required_field("mesh", object_value(mesh_rule(options, dim)), "the mesh of the body"),
       required_field("material", object_value(material_rule()),
                      "the material (mu and lambda, or E and nu)"),
-      optional_field("body_force", scalar_pair_value(options), nlohmann::json::array({0, 0}),
-                     "volume force f = [f_x, f_y]"),
-      required_field("boundary", boundary_rule(options), "the conditions on the boundary groups"),
+      optional_field("body_force", scalars_value(options, dim), dim == 0 ? nullptr : no_force,
+                     "volume force f = " + in_dimension(dim, "[f_x, f_y]", "[f_x, f_y, f_z]") +
+                         (dim == 0 ? "; absent: zero" : "")),
+      required_field("boundary", boundary_rule(options, dim),
+                     "the conditions on the boundary groups"),
       optional_field("weights", object_value(weights_rule()), nullptr,
                      "weights of the least-squares functional"),
       optional_field("solver", object_value(solver_rule()), nullptr,
@@ -51,6 +56,13 @@ ObjectRulePtr case_rule(const CaseReadOptions& options) {
                      "continuation"),
   };
   return r;
+}
+
+int case_dimension(const nlohmann::json& j) {
+  return j.is_object() && j.contains("dimension") && j["dimension"].is_number() &&
+                 j["dimension"] == 3
+             ? 3
+             : 2;
 }
 
 namespace {
@@ -106,6 +118,33 @@ void check_order2_support(const nlohmann::json& j, const CaseSpec& spec,
     refuse("is solved by mmg or pdas only (solver.method)");
 }
 
+std::vector<CaseError> rule_problems(const nlohmann::json& j, const CaseReadOptions& options,
+                                     int dim) {
+  RuleChecker checker(options);
+  checker.check_object(j, *case_rule(options, dim), "");
+  return checker.take_errors();
+}
+
+/// A case without "dimension" that the 3D rules take better than the 2D ones is a 3D case whose
+/// dimension was left out: one sentence at /dimension, then its problems as a 3D case, rather
+/// than every 3-vector refused as a 2D one.
+std::optional<std::vector<CaseError>> problems_as_3d(const nlohmann::json& j,
+                                                     const CaseReadOptions& options,
+                                                     const std::vector<CaseError>& as_2d) {
+  const bool looks_3d = std::any_of(as_2d.begin(), as_2d.end(), [](const CaseError& e) {
+    return e.detail.find(kNeedsDimension3) != std::string::npos;
+  });
+  if (!looks_3d) return std::nullopt;
+  std::vector<CaseError> as_3d = rule_problems(j, options, 3);
+  if (as_3d.size() >= as_2d.size()) return std::nullopt;
+  as_3d.insert(as_3d.begin(),
+               {"/dimension",
+                std::string("missing: the case has 3D data (3-component vectors or a 3D builtin), "
+                            "which a 2D case refuses; ") +
+                    kNeedsDimension3});
+  return as_3d;
+}
+
 }  // namespace
 
 CaseReadResult read_case(const nlohmann::json& j, const CaseReadOptions& options) {
@@ -116,30 +155,29 @@ CaseReadResult read_case(const nlohmann::json& j, const CaseReadOptions& options
                  describe_value(j)});
     return result;
   }
-  if (is_3d_case(j)) {
-    result.errors.push_back(
-        {"/dimension",
-         "a 3D case is solved by fosls-contact solve and bench and by the service and checked "
-         "by fosls-contact estimate (its own format and reader, docs/case-format.md, \"3D "
-         "cases\")"});
-    return result;
-  }
-  RuleChecker checker(options);
-  checker.check_object(j, *case_rule(options), "");
-  result.errors = checker.take_errors();
+  const int dim = case_dimension(j);
+  result.errors = rule_problems(j, options, dim);
   if (!result.errors.empty()) {
-    add_unknown_group_problems(j, options, result.errors);  // all problems in one round
+    if (dim == 2 && !j.contains("dimension"))
+      if (auto as_3d = problems_as_3d(j, options, result.errors)) {
+        result.errors = std::move(*as_3d);
+        return result;
+      }
+    if (dim == 2) add_unknown_group_problems(j, options, result.errors);  // in one round
     return result;
   }
 
   CaseSpec spec;
   spec.name = j.value("name", spec.name);
+  spec.dimension = dim;
   if (j.contains("units")) spec.units = read_units_section(j["units"]);
   spec.mesh = read_mesh_section(j["mesh"]);
   spec.material = read_material_section(j["material"]);
-  if (j.contains("body_force")) spec.body_force = read_scalar_pair(j["body_force"]);
+  if (j.contains("body_force")) spec.body_force = read_scalars(j["body_force"]);
   spec.boundary = read_boundary_section(j["boundary"]);
   if (j.contains("weights")) spec.weights = read_weights_section(j["weights"]);
+  // 3D has no "auto" c3 yet (dimension_support.hpp): its contact term keeps the weight 0.1.
+  if (dim == 3 && spec.weights.c3_auto) spec.weights.c3_auto = false;
   if (j.contains("solver")) spec.solver = read_solver_section(j["solver"]);
   if (j.contains("adaptivity"))
     spec.adaptivity = read_adaptivity_section(j["adaptivity"], options.limits);
@@ -157,6 +195,7 @@ CaseReadResult read_case(const nlohmann::json& j, const CaseReadOptions& options
   check_friction_support(spec, result.errors);
   check_accuracy_support(j, spec, result.errors);
   check_order2_support(j, spec, result.errors);
+  for (CaseError& e : dimension_support_problems(j, spec)) result.errors.push_back(std::move(e));
   if (!result.errors.empty()) return result;
   if (j.contains("load_steps")) {
     read_load_steps_section(j, options, spec, result.errors);

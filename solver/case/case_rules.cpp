@@ -86,14 +86,31 @@ ValueRule scalar_value(std::size_t max_expression_length) {
   return r;
 }
 
-ValueRule scalar3_value(std::size_t max_expression_length) {
+ValueRule scalar_value_in(int dim, std::size_t max_expression_length) {
   ValueRule r = scalar_value(max_expression_length);
-  r.variables = 3;
+  r.variables = dim == 2 ? 2 : 3;
   return r;
 }
 
-ValueRule vector3_value(const std::string& names) {
-  return tuple_value(number_value(), 3, "an array of 3 numbers " + names);
+ValueRule vector_value(int dim, ValueRule element, const std::string& what2,
+                       const std::string& what3) {
+  if (dim == 0) {
+    ValueRule r = tuple_value(std::move(element), 2, in_dimension(0, what2, what3));
+    r.range.hi = 3;
+    return r;
+  }
+  ValueRule r = tuple_value(std::move(element), dim, dim == 2 ? what2 : what3);
+  r.hint_count = dim == 2 ? 3 : 2;
+  r.count_hint = dim == 2 ? std::string(" (") + kNeedsDimension3 + ")"
+                          : " (a 3D case has three components: x, y and z)";
+  return r;
+}
+
+std::string in_dimension(int dim, const std::string& two, const std::string& three,
+                         const std::string& joint) {
+  if (dim == 2) return two;
+  if (dim == 3) return three;
+  return two + " (2D)" + joint + three + " (3D)";
 }
 
 ValueRule null_value() {
@@ -183,6 +200,20 @@ FieldRule output_field(std::string key, ValueRule value, std::string unit, std::
   return f;
 }
 
+FieldRule refused_field(std::string key, std::string why) {
+  FieldRule f;
+  f.key = std::move(key);
+  f.refused = std::move(why);
+  return f;
+}
+
+ObjectVariant refused_variant(std::string value, std::string why) {
+  ObjectVariant v;
+  v.value = std::move(value);
+  v.refused = std::move(why);
+  return v;
+}
+
 // ---- words ------------------------------------------------------------------------------------
 
 std::string format_number(double v) {
@@ -241,7 +272,8 @@ std::string value_noun(const ValueRule& rule) {
     case ValueKind::kChoice:
       return "a string (one of " + join_words(rule.choices, ", ") + ")";
     case ValueKind::kScalar:
-      return "a number or a string with an expression of x and y";
+      return rule.variables == 3 ? "a number or a string with an expression of x, y and z"
+                                 : "a number or a string with an expression of x and y";
     case ValueKind::kNull:
       return "null";
     case ValueKind::kBoolean:

@@ -80,6 +80,13 @@ struct ValueRule {
   int variables = 2;                    ///< kScalar: expressions of x, y (2) or x, y, z (3)
   /// Appended to a range error, e.g. why the bound is there.
   std::string range_note;
+  /// kChoice: values known but refused here, each with the sentence that says where it belongs
+  /// (a builtin of the other dimension); absent from the docs and the schema.
+  std::vector<std::pair<std::string, std::string>> refused_choices;
+  /// kArray: appended to the error of an array of `hint_count` entries (a 3-vector in a 2D
+  /// case: "a 3D case needs \"dimension\": 3").
+  std::size_t hint_count = 0;
+  std::string count_hint;
   /// A semantic rule; `notes` says it in words for the docs.
   ValueHook hook;
   std::string notes;
@@ -93,6 +100,9 @@ struct FieldRule {
   nlohmann::json default_value;  ///< null when there is no default
   std::string meaning;           ///< for docs and for "missing field" messages
   std::string unit;              ///< for the docs of results ("L", "S·L", "s"); empty for none
+  /// Known but not allowed in this document (a field of the other dimension): giving it is an
+  /// error with this sentence. Absent from the docs and the schema.
+  std::string refused = {};
 };
 
 /// A semantic rule on a whole object whose fields all passed their checks.
@@ -106,16 +116,22 @@ struct ExclusiveFields {
   std::vector<std::vector<std::string>> sets;
   std::string missing;
   std::string several;
+  /// The field `missing` is reported at (as a missing field's error); empty: the object.
+  std::string missing_at = {};
 };
 
 /// A variant of an object with a discriminator field ("type": "plane" → the plane's fields).
 struct ObjectVariant {
-  std::string value;              ///< the discriminator's value
-  std::string title;              ///< "a plane obstacle"
-  std::string meaning;            ///< for the docs
-  std::vector<FieldRule> fields;  ///< besides the object's common fields
-  ObjectHook hook;                ///< on the whole object when its fields passed
-  std::string notes;              ///< the hook's rule in words
+  std::string value;                            ///< the discriminator's value
+  std::string title;                            ///< "a plane obstacle"
+  std::string meaning;                          ///< for the docs
+  std::vector<FieldRule> fields;                ///< besides the object's common fields
+  ObjectHook hook;                              ///< on the whole object when its fields passed
+  std::string notes;                            ///< the hook's rule in words
+  std::vector<ExclusiveFields> exclusive = {};  ///< of the variant's fields, as ObjectRule's
+  /// A value of the other dimension: choosing it is an error with this sentence (at the
+  /// discriminator). Absent from the docs and the schema.
+  std::string refused = {};
 };
 
 /// The rule for a JSON object: its fields, and optionally variants chosen by a discriminator.
@@ -143,10 +159,22 @@ ValueRule string_value(std::size_t max_length, std::string what);
 ValueRule name_value(std::size_t max_length, std::string what);
 ValueRule choice_value(std::vector<std::string> choices);
 ValueRule scalar_value(std::size_t max_expression_length);
-/// A 3D case's scalar: a number or an expression of x, y and z.
-ValueRule scalar3_value(std::size_t max_expression_length);
-/// Three numbers, e.g. a 3D point or vector; `names` says which ("[x, y, z]").
-ValueRule vector3_value(const std::string& names);
+/// A scalar of a case in `dim` dimensions: a number or an expression of x and y (2D) or of x, y
+/// and z (3D, and 0: the docs and the schema of both).
+ValueRule scalar_value_in(int dim, std::size_t max_expression_length);
+/// A vector of a case in `dim` dimensions: `dim` entries of `element`, named `what2` (2D) or
+/// `what3` (3D); for `dim` 0 (the docs and the schema of both) 2 or 3 entries. An array of the
+/// other dimension's length is refused with a sentence that says so.
+ValueRule vector_value(int dim, ValueRule element, const std::string& what2,
+                       const std::string& what3);
+/// What the 2D rules say of 3D data: a case whose refusals say it is probably a 3D case without
+/// its dimension (case_reader.cpp).
+inline constexpr const char* kNeedsDimension3 = "a 3D case needs \"dimension\": 3";
+
+/// Words that differ by dimension: `two` in 2D, `three` in 3D, "two (2D) or three (3D)" for the
+/// docs (`dim` 0; `joint` instead of " or ").
+std::string in_dimension(int dim, const std::string& two, const std::string& three,
+                         const std::string& joint = " or ");
 ValueRule null_value();
 ValueRule boolean_value();
 /// An array of exactly `count` entries.
@@ -169,6 +197,10 @@ FieldRule optional_field(std::string key, ValueRule value, nlohmann::json defaul
                          std::string meaning);
 /// A field of an output document: always present, with a unit.
 FieldRule output_field(std::string key, ValueRule value, std::string unit, std::string meaning);
+/// A field of the other dimension: known, and refused with `why` when given.
+FieldRule refused_field(std::string key, std::string why);
+/// A variant of the other dimension: refused with `why` when chosen.
+ObjectVariant refused_variant(std::string value, std::string why);
 
 // ---- words --------------------------------------------------------------------------------
 

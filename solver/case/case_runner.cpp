@@ -1,6 +1,7 @@
 #include "case/case_runner.hpp"
 
 #include "case/load_step_runner.hpp"
+#include "case/solve3d_backend.hpp"
 #include "case/sweep_runner.hpp"
 
 #include <chrono>
@@ -34,18 +35,14 @@ double seconds(Clock::time_point a, Clock::time_point b) {
 /// Problems that need the coarse mesh: unknown groups, no Dirichlet group, size limits.
 std::vector<CaseError> check_against_mesh(const CaseSpec& spec, const Mesh& mesh,
                                           const CaseLimits& limits) {
+  const auto unknowns = [&mesh](int refinements, int order) {
+    return unknowns_after_refinement(mesh.num_triangles(), mesh.num_edges(), mesh.num_vertices(),
+                                     refinements, order);
+  };
   return check_against_groups(
       spec, mesh.group_names(),
-      unknowns_after_refinement(mesh.num_triangles(), mesh.num_edges(), mesh.num_vertices(),
-                                spec.mesh.refinements, spec.mesh.order),
-      true, limits);
-}
-
-/// solver.time_limit_s from the run's start, or none.
-Deadline run_deadline(Clock::time_point t0, double time_limit_s) {
-  if (time_limit_s <= 0) return {};
-  return Deadline(t0 + std::chrono::duration_cast<Clock::duration>(
-                           std::chrono::duration<double>(time_limit_s)));
+      {unknowns(spec.mesh.refinements, spec.mesh.order), unknowns(0, 1), true, spec.mesh.order, 2},
+      limits);
 }
 
 /// What a run stopped by its time limit before the first iterate says (no result to return).
@@ -93,10 +90,22 @@ CaseException indefinite(const CaseSpec& spec, const MeshHierarchy& meshes,
 
 }  // namespace
 
+Deadline run_deadline(Clock::time_point start, double time_limit_s) {
+  if (time_limit_s <= 0) return {};
+  return Deadline(start + std::chrono::duration_cast<Clock::duration>(
+                              std::chrono::duration<double>(time_limit_s)));
+}
+
 std::vector<CaseError> validate_case(const nlohmann::json& j, const CaseReadOptions& options,
                                      const MeshingControl& meshing) {
   CaseReadResult read = read_case(j, options);
   if (!read.errors.empty()) return read.errors;
+  if (read.spec->dimension == 3) {
+    // The groups' rule here, the size and what the mesh shows once it is built.
+    std::vector<CaseError> errors =
+        check_against_groups(*read.spec, std::nullopt, ProblemCount{}, CaseLimits{});
+    return errors.empty() ? check_3d_mesh(*read.spec, options.limits) : errors;
+  }
   try {
     const Mesh mesh = build_coarse_mesh(read.spec->mesh, meshing);
     return check_against_mesh(*read.spec, mesh, options.limits);
@@ -220,6 +229,7 @@ RunOutput run_case(const CaseSpec& spec, const RunControl& control, const CaseLi
       control.on_solve(solves++, most);
     };
   try {
+    if (spec.dimension == 3) return run_3d_point(spec, counted, limits);
     if (!spec.load_step_points.empty())
       return run_load_steps(spec, counted, [&limits](const CaseSpec& step, const RunControl& c) {
         return run_point(step, c, limits);

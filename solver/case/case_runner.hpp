@@ -3,6 +3,7 @@
 // VTU text. Used by the CLI and, in-process, by the job service.
 
 #include <atomic>
+#include <chrono>
 #include <functional>
 #include <nlohmann/json.hpp>
 #include <string>
@@ -53,6 +54,9 @@ struct RunOutput {
   std::vector<Point> displacement;  ///< u at each vertex of the finest mesh, for load steps
 };
 
+/// solver.time_limit_s counted from `start`; none for a limit of 0.
+Deadline run_deadline(std::chrono::steady_clock::time_point start, double time_limit_s);
+
 /// How many solves run_case makes at most: load steps + 1, sweep points, adaptivity.steps + 1
 /// per point (a product for a sweep of adaptive runs); 0 when not known before the run (an
 /// accuracy loop stops once its estimate is within the tolerance, at a level it finds).
@@ -64,7 +68,8 @@ int most_solves(const CaseSpec& spec);
 std::vector<CaseError> validate_case(const nlohmann::json& j, const CaseReadOptions& options = {},
                                      const MeshingControl& meshing = {});
 
-/// Runs a case from read_case; a case with a sweep runs every point in order (sweep_runner.hpp).
+/// Runs a case from read_case, 2D or 3D (a case of dimension 3 through the 3D backend,
+/// solve3d_backend.hpp); a case with a sweep runs every point in order (sweep_runner.hpp).
 /// Throws CaseException for problems a user caused that show up only with the coarse mesh (mesh
 /// errors, groups the mesh lacks, DOF limits: validate_case's checks, made here once the mesh is
 /// built) or while running (for example weights that make the matrix indefinite). A cancel while

@@ -19,10 +19,20 @@
 
 namespace fosls {
 
-ObjectRulePtr mesh_rule(const CaseReadOptions& options);
+/// The rules of a case's sections in `dim` dimensions: 2 or 3, what the reader checks; 0, what
+/// the docs and the schema show of both (docs/architecture.md, "One case path for 2D and 3D").
+ObjectRulePtr mesh_rule(const CaseReadOptions& options, int dim);
+/// mesh.builtin: square and hertz (2D), box and half_ball (3D); the other dimension's refused.
+ObjectRulePtr builtin_rule(int dim);
+ValueRule builtin_value(int dim);
+std::string builtin_meaning(int dim);
+/// Reads mesh.builtin (a name or an object) into `m`: its kind, name and every parameter.
+void read_builtin(const nlohmann::json& j, MeshSpec& m);
+/// Estimated coarse triangles of a 2D builtin with edge length `size`.
+double builtin_triangles(const nlohmann::json& j, double size);
 /// The rules of mesh.geo_file and mesh.msh_file (command line only, the file must exist; an msh
 /// file must hold msh text within the limit, `contents` says what for the docs), shared by the
-/// 3D case's mesh (case3d_reader.hpp).
+/// mesh section of both dimensions.
 ValueRule geo_file_value(const CaseLimits& limits);
 ValueRule msh_file_value(const CaseLimits& limits, const std::string& contents);
 /// The rule of mesh.msh, gmsh ASCII 4.1 text given in the case (2D and 3D).
@@ -40,8 +50,14 @@ CoarseMeshEstimate estimated_coarse_mesh(const GeometrySpec& geometry, double si
 ObjectRulePtr material_rule();
 Material read_material_section(const nlohmann::json& j);
 
-ValueRule boundary_rule(const CaseReadOptions& options);
+ValueRule boundary_rule(const CaseReadOptions& options, int dim);
 std::map<std::string, BoundaryCondition> read_boundary_section(const nlohmann::json& j);
+/// The contact variant of a boundary condition: its obstacle, friction and direction
+/// (obstacle_section.cpp).
+ObjectVariant contact_variant(const CaseReadOptions& options, int dim);
+/// The obstacle of a contact condition that passed contact_variant's rules: `obstacle`, or the
+/// plane of the condition's own point and normal.
+Obstacle read_obstacle(const nlohmann::json& condition);
 
 ObjectRulePtr weights_rule();
 Weights read_weights_section(const nlohmann::json& j);
@@ -73,10 +89,13 @@ ValueRule load_steps_rule(const CaseReadOptions& options);
 void read_load_steps_section(const nlohmann::json& case_json, const CaseReadOptions& options,
                              CaseSpec& spec, std::vector<CaseError>& errors);
 
-/// [f_x, f_y], [u_x, u_y], ...: two numbers or expressions of x and y.
-ValueRule scalar_pair_value(const CaseReadOptions& options);
+/// [f_x, f_y] or [f_x, f_y, f_z], ...: `dim` numbers or expressions (vector_value).
+ValueRule scalars_value(const CaseReadOptions& options, int dim);
 Scalar read_scalar(const nlohmann::json& j);
 Point read_point(const nlohmann::json& j);
-std::array<Scalar, 2> read_scalar_pair(const nlohmann::json& j);
+/// Two or three numbers as a 3-vector (z = 0 for two).
+Point3 read_vector(const nlohmann::json& j);
+/// Two or three scalars (the third empty for two).
+std::array<Scalar, 3> read_scalars(const nlohmann::json& j);
 
 }  // namespace fosls

@@ -1,7 +1,8 @@
 #pragma once
-// The contact case as the library sees it after the case JSON has been validated.
-// The JSON format is documented in docs/case-format.md; reading lives in case_reader.hpp, the
-// format's rules in the case_sections.hpp files.
+// The contact case as the library sees it after the case JSON has been validated, in 2D or 3D
+// (`dimension`). Vectors have three components; a 2D case uses the first two (docs/architecture.md,
+// "One case path for 2D and 3D"). The JSON format is documented in docs/case-format.md; reading
+// lives in case_reader.hpp, the format's rules in the case_sections.hpp files.
 
 #include <array>
 #include <limits>
@@ -13,11 +14,12 @@
 
 #include "case/units.hpp"
 #include "mesh/geometry_spec.hpp"
+#include "mesh/tet_half_ball.hpp"
 #include "solvers/solve_loop.hpp"
 
 namespace fosls {
 
-/// A scalar datum: a number, or an expression of x and y (muParser syntax).
+/// A scalar datum: a number, or an expression of x and y (and z in 3D; muParser syntax).
 struct Scalar {
   std::string expression;  ///< empty when `value` is a plain number
   double value = 0.0;
@@ -27,14 +29,17 @@ struct Scalar {
 struct MeshSpec {
   enum class Kind { kBuiltin, kGeometry, kMsh, kGeoFile };
   Kind kind = Kind::kBuiltin;
-  std::string builtin = "square";        ///< "square" or "hertz"
-  std::map<std::string, double> params;  ///< builtin parameters (x0, y0, width, height; radius,
+  std::string builtin = "square";        ///< "square" or "hertz" (2D), "box" or "half_ball" (3D)
+  std::map<std::string, double> params;  ///< 2D builtin parameters (x0, y0, width, height; radius,
                                          ///< contact_fraction, grading)
-  GeometrySpec geometry;                 ///< kind == kGeometry
-  std::string msh_text;                  ///< kind == kMsh (ASCII 4.1)
+  std::array<int, 3> box_cells = {2, 2, 2};  ///< box: cubes (six tetrahedra each) per direction
+  Point3 box_lengths = Point3(1, 1, 1);      ///< box: [0, lx] × [0, ly] × [0, lz]
+  HalfBallSpec half_ball;                    ///< half_ball
+  GeometrySpec geometry;                     ///< kind == kGeometry
+  std::string msh_text;                      ///< kind == kMsh (ASCII 4.1)
   std::string msh_path;  ///< kind == kMsh read from mesh.msh_file (CLI only), else empty
   std::string geo_path;  ///< kind == kGeoFile (CLI only, never from the network)
-  double size = 0.25;    ///< coarse mesh size
+  double size = 0.25;    ///< coarse mesh size (3D: geo_file only)
   int refinements = 0;   ///< levels = refinements + 1
   /// Polynomial order of the space on the finest mesh: 1 (P1 × RT0) or 2 (P2 × RT1 on top of
   /// the lowest-order hierarchy, docs/method.md §10).
@@ -47,17 +52,21 @@ struct Material {
   bool incompressible() const { return lambda == std::numeric_limits<double>::infinity(); }
 };
 
+/// A rigid obstacle; its points and vectors have a zero third component in 2D.
 struct Obstacle {
-  enum class Kind { kPlane, kCircle, kGap };
+  enum class Kind { kPlane, kBall, kGap };
   Kind kind = Kind::kPlane;
-  Point point = Point::Zero();   ///< plane: a point on it
-  Point normal = Point(0, 1);    ///< plane: unit normal from the obstacle into the body
-  Point center = Point::Zero();  ///< circle
-  double radius = 0.0;           ///< circle (the body lies outside the circle)
-  Scalar gap;                    ///< gap: g(x, y) measured along the body normal
+  Point3 point = Point3::Zero();    ///< plane: a point on it
+  Point3 normal = Point3(0, 1, 0);  ///< plane: unit normal from the obstacle into the body
+  Point3 center = Point3::Zero();   ///< ball: a circle (2D) or sphere (3D)
+  double radius = 0.0;              ///< ball (the body lies outside it)
+  Scalar gap;                       ///< gap: g(x, y) measured along the body normal
   /// The obstacle's rigid displacement, already added to point and center (a prescribed
   /// indentation: result_warnings.hpp tells it from an initial overlap).
-  Point displacement = Point::Zero();
+  Point3 displacement = Point3::Zero();
+  /// A plane given by the contact condition's own point and normal, not as `obstacle`: where
+  /// problems of its normal are reported.
+  bool short_form = false;
 };
 
 enum class ContactDirection { kBodyNormal, kObstacleNormal };
@@ -65,11 +74,11 @@ enum class ContactDirection { kBodyNormal, kObstacleNormal };
 struct BoundaryCondition {
   enum class Type { kDirichlet, kNeumann, kPressure, kContact };
   Type type = Type::kNeumann;
-  /// displacement (Dirichlet), traction (Neumann) or [p, 0] (pressure)
-  std::array<Scalar, 2> values;
+  /// displacement (Dirichlet), traction (Neumann) or [p, 0, 0] (pressure); 2D uses two
+  std::array<Scalar, 3> values;
   /// Dirichlet: false for a component given as null, which is free with zero traction (a
   /// roller or symmetry plane).
-  std::array<bool, 2> prescribed = {true, true};
+  std::array<bool, 3> prescribed = {true, true, true};
   Obstacle obstacle;  ///< contact
   ContactDirection direction = ContactDirection::kBodyNormal;
   /// Contact: Coulomb's coefficient 𝔣 (0: none), or Tresca's slip bound s (docs/method.md §8).
@@ -123,9 +132,12 @@ struct SweepSpec {
 
 struct CaseSpec {
   std::string name = "case";
+  /// 2: plane strain on triangles; 3: a body of tetrahedra. What 3D cannot do yet is refused
+  /// when the case is read (dimension_support.hpp).
+  int dimension = 2;
   MeshSpec mesh;
   Material material;
-  std::array<Scalar, 2> body_force;
+  std::array<Scalar, 3> body_force;  ///< 2D uses two
   /// Condition per boundary group; groups not named are traction free.
   std::map<std::string, BoundaryCondition> boundary;
   Weights weights;

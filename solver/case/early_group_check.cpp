@@ -53,7 +53,7 @@ void add_unknown_group_problems(const nlohmann::json& j, const CaseReadOptions& 
                   [](const CaseError& e) { return under_mesh(e.pointer); }))
     return;
   RuleChecker checker(options);
-  if (!checker.check_object(j["mesh"], *mesh_rule(options), "/mesh")) return;
+  if (!checker.check_object(j["mesh"], *mesh_rule(options, 2), "/mesh")) return;
   std::vector<std::string> groups;
   if (!group_names(read_mesh_section(j["mesh"]), groups)) return;
   const GroupNameIndex known(groups);

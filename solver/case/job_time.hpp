@@ -10,6 +10,7 @@
 
 #include "case/case_error.hpp"
 #include "case/case_spec.hpp"
+#include "case/resource_estimate.hpp"
 
 namespace fosls {
 
@@ -27,14 +28,14 @@ struct CaseTimeEstimate {
   std::string limited_by = "/mesh/refinements";
 };
 
-/// The estimate for `unknowns` on the finest uniform level (adaptivity.max_dofs for an adaptive
+/// The estimate for `count` on the finest uniform level (adaptivity.max_dofs for an adaptive
 /// run when larger).
-CaseTimeEstimate estimate_case_time(const CaseSpec& spec, long long unknowns);
+CaseTimeEstimate estimate_case_time(const CaseSpec& spec, const ProblemCount& count);
 
 /// The problem (at estimate.limited_by) of a case estimated above `budget_seconds`, naming the
 /// time, the budget and what to change; nothing when it fits.
 std::optional<CaseError> check_time_budget(const CaseTimeEstimate& estimate, const CaseSpec& spec,
-                                           long long unknowns, double budget_seconds,
+                                           const ProblemCount& count, double budget_seconds,
                                            const std::string& budget_name);
 
 /// "1 h", "20 min", "2 s", "1.5 s": a time budget as it was given.

@@ -27,7 +27,8 @@ std::string change_pointer(std::size_t k, const std::string& target) {
 
 /// Why a step may not change `target`, or empty.
 std::string forbidden(const std::string& target) {
-  for (const char* fixed : {"/load_steps", "/sweep", "/adaptivity", "/mesh", "/name", "/units"}) {
+  for (const char* fixed :
+       {"/load_steps", "/sweep", "/adaptivity", "/mesh", "/name", "/units", "/dimension"}) {
     const std::string prefix = fixed;
     if (target == prefix || target.rfind(prefix + "/", 0) == 0)
       return "a load step cannot change " + prefix +

@@ -118,6 +118,10 @@ Mesh build_coarse_mesh(const MeshSpec& spec, const MeshingControl& control) {
   throw CaseException("/mesh", "unknown kind of mesh source");
 }
 
+std::string mesh_source_pointer(const MeshSpec& spec) {
+  return spec.msh_path.empty() ? source_pointer(spec.kind) : "/mesh/msh_file";
+}
+
 std::optional<GmshOutline> gmsh_outline(const MeshSpec& spec) {
   if (spec.kind == MeshSpec::Kind::kGeometry) {
     SizeField size;

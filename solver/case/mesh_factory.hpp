@@ -30,6 +30,10 @@ std::optional<GmshOutline> gmsh_outline(const MeshSpec& spec);
 /// user wrote; a declarative geometry's groups by their names (the case's groups object).
 std::string mesh_problem_pointer(const MeshProblem& problem, const MeshSpec& spec);
 
+/// The field that gave the mesh ("/mesh/builtin", "/mesh/msh_file", ...): where a problem of
+/// the mesh as a whole is reported.
+std::string mesh_source_pointer(const MeshSpec& spec);
+
 /// A MeshError of `spec` as the case's problems, at mesh_problem_pointer().
 CaseException to_case_exception(const MeshError& error, const MeshSpec& spec);
 

@@ -19,79 +19,6 @@ namespace {
 
 using nlohmann::json;
 
-/// The builtin geometries and their parameters; the defaults are those of the mesh builders.
-const ObjectRule& builtin_rule() {
-  static const ObjectRule rule = [] {
-    const SquareParams square;
-    const HertzParams hertz;
-    ObjectRule r;
-    r.title = "the builtin geometry";
-    r.anchor = "builtin";
-    r.discriminator = "name";
-    r.discriminator_meaning = "the builtin geometry, square or hertz";
-    r.variants = {
-        {"square",
-         "the square",
-         "the rectangle [x0, x0 + width] × [y0, y0 + height]; boundary groups bottom, right, "
-         "top, left",
-         {optional_field("x0", number_value(), square.x0, "left edge"),
-          optional_field("y0", number_value(), square.y0, "bottom edge"),
-          optional_field("width", number_value(Range::positive()), square.width, "width"),
-          optional_field("height", number_value(Range::positive()), square.height, "height")},
-         {},
-         ""},
-        {"hertz",
-         "the hertz geometry",
-         "the lower half of the disk of radius R centred at (0, R), touching y = 0 at the "
-         "origin; boundary groups top, contact, free",
-         {optional_field("radius", number_value(Range::positive()), hertz.radius, "radius R"),
-          optional_field("contact_fraction", number_value(Range::open(0, 1)),
-                         hertz.contact_fraction,
-                         "arc points with |x| ≤ contact_fraction · R form the group contact"),
-          optional_field("grading", number_value(Range::closed(1, 100)), hertz.grading,
-                         "coarse edges grow from size near the origin to grading · size")},
-         {},
-         ""},
-    };
-    return r;
-  }();
-  return rule;
-}
-
-std::vector<std::string> builtin_names() {
-  std::vector<std::string> names;
-  for (const auto& v : builtin_rule().variants) names.push_back(v.value);
-  return names;
-}
-
-/// The name of a builtin and the object with its parameters (empty for the name alone).
-std::pair<std::string, json> builtin_parts(const json& j) {
-  if (j.is_string()) return {j.get<std::string>(), json::object()};
-  return {j.at("name").get<std::string>(), j};
-}
-
-/// Every parameter of a builtin, defaults included, so that the mesh builder needs none.
-std::map<std::string, double> builtin_params(const json& j) {
-  const auto [name, given] = builtin_parts(j);
-  std::map<std::string, double> params;
-  for (const auto& f : builtin_rule().variant(name)->fields)
-    params[f.key] = given.value(f.key, f.default_value).get<double>();
-  return params;
-}
-
-/// Estimated coarse triangles of a builtin with edge length `size`.
-double builtin_triangles(const json& j, double size) {
-  const auto name = builtin_parts(j).first;
-  auto p = builtin_params(j);
-  if (name == "square") {
-    const double nx = std::max(1.0, std::ceil(p["width"] / size));
-    const double ny = std::max(1.0, std::ceil(p["height"] / size));
-    return 2.0 * nx * ny;
-  }
-  // Ungraded (an upper bound): half disk area over the area of a triangle of edge `size`.
-  return 0.5 * std::numbers::pi * p["radius"] * p["radius"] / (0.433 * size * size);
-}
-
 bool check_msh_text(const json& j, const std::string& pointer, RuleChecker& checker) {
   const auto& text = j.get_ref<const std::string&>();
   const auto start = text.find_first_not_of(" \t\r\n");
@@ -153,7 +80,8 @@ std::optional<std::string> read_text_file(const std::string& path, std::size_t m
 }
 
 /// A tiny `size` must not build a huge coarse mesh before the DOF limit can be checked: the
-/// mesh layer's estimate and limits, checked before anything is meshed.
+/// mesh layer's estimate and limits, checked before anything is meshed (2D: a 3D builtin's size
+/// is its cells, and a .geo file's is known once meshed).
 void check_coarse_size(const json& j, const std::string& pointer, RuleChecker& checker) {
   if (!checker.usable(j, pointer, {"size"})) return;
   const double size = j.value("size", MeshSpec{}.size);
@@ -221,47 +149,75 @@ ValueRule msh_file_value(const CaseLimits& limits, const std::string& contents) 
   return r;
 }
 
-ObjectRulePtr mesh_rule(const CaseReadOptions& options) {
+namespace {
+
+/// mesh.geometry: a 2D outline; refused in 3D with where a 3D mesh comes from.
+FieldRule geometry_field(const CaseReadOptions& options, int dim) {
+  if (dim == 3)
+    return refused_field("geometry",
+                         "geometry (points, lines and arcs meshed by gmsh) describes a 2D body; a "
+                         "3D mesh comes from builtin, msh, msh_file or geo_file");
+  return optional_field(
+      "geometry", object_value(geometry_rule(options)), nullptr,
+      std::string(dim == 0 ? "(2D) " : "") + "points, lines and arcs, meshed with gmsh");
+}
+
+/// Refinements in 2D, and in 3D, where each multiplies the unknowns by about 8, fewer.
+FieldRule refinements_field(const CaseLimits& limits, int dim) {
+  const int most = dim == 3 ? std::min(limits.max_refinements, limits.max_refinements_3d)
+                            : limits.max_refinements;
+  std::string meaning = "uniform refinements of the coarse mesh (" +
+                        in_dimension(dim, "each triangle into 4", "each tetrahedron into 8", ", ") +
+                        "); the multilevel hierarchy has refinements + 1 levels";
+  if (dim == 0) meaning += "; at most " + std::to_string(limits.max_refinements_3d) + " in 3D";
+  return optional_field("refinements", integer_value(Range::closed(0, most)),
+                        MeshSpec{}.refinements, meaning);
+}
+
+}  // namespace
+
+ObjectRulePtr mesh_rule(const CaseReadOptions& options, int dim) {
   const CaseLimits& limits = options.limits;
   const MeshSpec defaults;
   auto r = std::make_shared<ObjectRule>();
   r->title = "the mesh";
   r->anchor = "mesh";
-
-  ValueRule builtin = one_of_value(
-      {choice_value(builtin_names()),
-       object_value(std::make_shared<const ObjectRule>(builtin_rule()))},
-      "the name of a builtin geometry (\"square\" or \"hertz\") or an object {\"name\": ..., "
-      "parameters}");
-  ValueRule refinements = integer_value(Range::closed(0, limits.max_refinements));
-
+  const std::string of = dim == 2 ? "" : ": " + in_dimension(dim, "triangles", "tetrahedra");
   r->fields = {
-      optional_field("builtin", builtin, nullptr, "a shipped geometry, square or hertz"),
-      optional_field("geometry", object_value(geometry_rule(options)), nullptr,
-                     "points, lines and arcs, meshed with gmsh"),
+      optional_field("builtin", builtin_value(dim), nullptr, builtin_meaning(dim)),
+      geometry_field(options, dim),
       optional_field("msh", msh_text_value(limits), nullptr,
-                     "the text of a gmsh mesh file (ASCII 4.1)"),
-      optional_field("msh_file", msh_file_value(limits, "msh text"), nullptr,
-                     "the path of a gmsh mesh file (ASCII 4.1), read like msh"),
-      optional_field("geo_file", geo_file_value(limits), nullptr, "the path of a gmsh .geo script"),
+                     "the text of a gmsh mesh file (ASCII 4.1)" + of),
+      optional_field("msh_file",
+                     msh_file_value(limits, dim == 3 ? "msh text with tetrahedra" : "msh text"),
+                     nullptr, "the path of a gmsh mesh file (ASCII 4.1)" + of + ", read like msh"),
+      optional_field(
+          "geo_file", geo_file_value(limits), nullptr,
+          "the path of a gmsh .geo script" + std::string(dim == 3 ? ", meshed in 3D" : "")),
       optional_field("size", number_value(Range::positive()), defaults.size,
-                     "target edge length of the coarse mesh (not used by msh)"),
-      optional_field("refinements", refinements, defaults.refinements,
-                     "uniform refinements of the coarse mesh; the multilevel hierarchy has "
-                     "refinements + 1 levels"),
+                     "target edge length of the coarse mesh (" +
+                         in_dimension(dim, "not used by msh", "geo_file only") + ")"),
+      refinements_field(limits, dim),
       optional_field("order", integer_value(Range::closed(1, 2)), defaults.order,
                      "polynomial order of the space on the finest mesh: 1 (P1 displacement × RT0 "
                      "stress rows) or 2 (P2 × RT1, solved by the multilevel method on the "
-                     "order-1 levels of the same meshes)"),
+                     "order-1 levels of the same meshes" +
+                         std::string(dim == 2 ? "" : "; 2D only for now") + ")"),
   };
-  r->exclusive = {{{{"builtin"}, {"geometry"}, {"msh"}, {"msh_file"}, {"geo_file"}},
-                   "no mesh source: give exactly one of builtin, geometry, msh, msh_file or "
-                   "geo_file",
-                   "give exactly one mesh source, not {given}"}};
+  if (dim == 3)
+    r->exclusive = {{{{"builtin"}, {"msh"}, {"msh_file"}, {"geo_file"}},
+                     "no mesh source: give exactly one of builtin, msh, msh_file or geo_file",
+                     "give exactly one mesh source, not {given}"}};
+  else
+    r->exclusive = {{{{"builtin"}, {"geometry"}, {"msh"}, {"msh_file"}, {"geo_file"}},
+                     "no mesh source: give exactly one of builtin, geometry, msh, msh_file or "
+                     "geo_file",
+                     "give exactly one mesh source, not {given}"}};
+  if (dim == 3) return r;
   r->hook = check_coarse_size;
-  r->notes =
-      "a size whose coarse mesh would have more than the limit of coarse triangles is "
-      "refused before meshing";
+  r->notes = std::string(dim == 0 ? "2D: " : "") +
+             "a size whose coarse mesh would have more than the limit of coarse triangles is "
+             "refused before meshing";
   return r;
 }
 
@@ -271,9 +227,7 @@ MeshSpec read_mesh_section(const json& j) {
   m.refinements = j.value("refinements", m.refinements);
   m.order = j.value("order", m.order);
   if (const auto it = j.find("builtin"); it != j.end()) {
-    m.kind = MeshSpec::Kind::kBuiltin;
-    m.builtin = builtin_parts(*it).first;
-    m.params = builtin_params(*it);
+    read_builtin(*it, m);
   } else if (const auto it = j.find("geometry"); it != j.end()) {
     m.kind = MeshSpec::Kind::kGeometry;
     m.geometry = read_geometry_section(*it);

@@ -1,23 +1,28 @@
-// The gap of a 3D contact condition's rigid obstacle along the body normal (case3d_spec.hpp).
+// The gap of a 3D contact condition's rigid obstacle along the body normal (obstacle3d.hpp).
+
+#include "case/obstacle3d.hpp"
 
 #include <cmath>
 #include <limits>
 
-#include "case/case3d_spec.hpp"
-
 namespace fosls {
 
-double Obstacle3d::gap_from(const Point3& x, const Point3& n, const Point3& shift) const {
+ObstacleGap3d::ObstacleGap3d(const Obstacle& obstacle) : obstacle_(obstacle) {
+  if (obstacle.kind == Obstacle::Kind::kGap) gap_ = compile_scalar_3d(obstacle.gap);
+}
+
+double ObstacleGap3d::from(const Point3& x, const Point3& n, const Point3& shift) const {
   constexpr double kInf = std::numeric_limits<double>::infinity();
-  switch (kind) {
-    case Kind::kPlane: {
-      const double approach = -n.dot(normal);  // how directly n points at the plane
-      return (x - (point + shift)).dot(normal) / approach;
+  const Obstacle& o = obstacle_;
+  switch (o.kind) {
+    case Obstacle::Kind::kPlane: {
+      const double approach = -n.dot(o.normal);  // how directly n points at the plane
+      return (x - (o.point + shift)).dot(o.normal) / approach;
     }
-    case Kind::kSphere: {
+    case Obstacle::Kind::kBall: {
       // The ray x + s n meets the sphere where s² + 2 b s + c = 0, c = |x − centre|² − R².
-      const Point3 rel = x - (center + shift);
-      const double b = n.dot(rel), c = rel.squaredNorm() - radius * radius;
+      const Point3 rel = x - (o.center + shift);
+      const double b = n.dot(rel), c = rel.squaredNorm() - o.radius * o.radius;
       const double disc = b * b - c;
       if (disc < 0) return kInf;
       const double s = -b - std::sqrt(disc);
@@ -26,17 +31,17 @@ double Obstacle3d::gap_from(const Point3& x, const Point3& n, const Point3& shif
       if (c < 0) return s;
       return s >= 0 ? s : kInf;
     }
-    case Kind::kGap:
-      return gap(x.x(), x.y(), x.z());
+    case Obstacle::Kind::kGap:
+      return gap_(x.x(), x.y(), x.z());
   }
   return kInf;
 }
 
-const char* Obstacle3d::noun() const {
-  switch (kind) {
-    case Kind::kPlane:
+const char* obstacle_noun_3d(const Obstacle& o) {
+  switch (o.kind) {
+    case Obstacle::Kind::kPlane:
       return "plane";
-    case Kind::kSphere:
+    case Obstacle::Kind::kBall:
       return "sphere";
     default:
       return "obstacle";

@@ -1,6 +1,5 @@
 #include "case/published_formats.hpp"
 
-#include "case/case3d_reader.hpp"
 #include "case/case_reader.hpp"
 #include "case/result_rules.hpp"
 #include "case/rules_markdown.hpp"
@@ -95,21 +94,15 @@ std::map<std::string, std::string> result_format_blocks() {
 }
 
 nlohmann::json case_json_schema() {
-  return rules_json_schema(*case_rule(), "https://fosls-contact.invalid/schemas/case.json",
-                           "A contact case of fosls-contact (docs/case-format.md).");
-}
-
-nlohmann::json case3d_json_schema() {
-  return rules_json_schema(*case3d_rule(), "https://fosls-contact.invalid/schemas/case3d.json",
-                           "A 3D contact case of fosls-contact (docs/case-format.md, \"3D "
-                           "cases\").");
+  return rules_json_schema_by_dimension(
+      *case_rule({}, 2), *case_rule({}, 3), "https://fosls-contact.invalid/schemas/case.json",
+      "A contact case of fosls-contact, 2D or 3D (docs/case-format.md).");
 }
 
 std::map<std::string, std::string> case_format_blocks() {
-  auto blocks = object_tables(*case_rule(), TableKind::kInput);
-  // The 3D case's own objects (case3d, mesh3d, builtin3d, condition3d); material and solver
-  // are the same rules as 2D's, so their tables are already there.
-  blocks.merge(object_tables(*case3d_rule(), TableKind::kInput));
+  // The rules of both dimensions in one table each (docs/architecture.md, "One case path for
+  // 2D and 3D").
+  auto blocks = object_tables(*case_rule({}, 0), TableKind::kInput);
   blocks["methods"] = methods_table();
   blocks["limits"] = limits_table();
   return blocks;

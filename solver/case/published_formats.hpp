@@ -9,12 +9,11 @@
 
 namespace fosls {
 
-/// JSON Schema (draft 2020-12) of a case, with the default limits. Rules that a schema cannot
+/// JSON Schema (draft 2020-12) of a case of either dimension, with the default limits: the 2D
+/// and 3D rules joined by `if dimension is 3` (rules_schema.hpp). Rules that a schema cannot
 /// express (an expression parses, a geometry is one closed loop, ...) are `$comment`s; the
 /// reader checks them.
 nlohmann::json case_json_schema();
-/// The JSON Schema of a 3D case (docs/case-format.md, "3D cases"): `fosls-contact schema case3d`.
-nlohmann::json case3d_json_schema();
 /// The JSON Schema of a 3D case's result (docs/result-format.md, "3D results"):
 /// `fosls-contact schema result3d`.
 nlohmann::json result3d_json_schema();

@@ -34,8 +34,8 @@ json plane_normal(const CaseSpec& spec) {
   for (const auto& [name, bc] : spec.boundary) {
     if (bc.type != BoundaryCondition::Type::kContact) continue;
     if (bc.obstacle.kind != Obstacle::Kind::kPlane) return nullptr;
-    if (normal && (*normal - bc.obstacle.normal).norm() > 1e-12) return nullptr;
-    normal = bc.obstacle.normal;
+    if (normal && (*normal - bc.obstacle.normal.head<2>()).norm() > 1e-12) return nullptr;
+    normal = bc.obstacle.normal.head<2>();
   }
   return normal ? json({normal->x(), normal->y()}) : json(nullptr);
 }

@@ -14,12 +14,12 @@ using nlohmann::json;
 
 std::string short_number(double v) { return sentence_number(v, 3); }
 
-const char* obstacle_name(Obstacle::Kind kind) {
+const char* obstacle_name(Obstacle::Kind kind, int dim) {
   switch (kind) {
     case Obstacle::Kind::kPlane:
       return "plane";
-    case Obstacle::Kind::kCircle:
-      return "circle";
+    case Obstacle::Kind::kBall:
+      return dim == 3 ? "sphere" : "circle";
     case Obstacle::Kind::kGap:
       return "gap";
   }
@@ -57,7 +57,7 @@ json contact_json(const ContactResult& contact, const CaseSpec& spec) {
   for (const auto& [name, bc] : spec.boundary)
     if (bc.type == BoundaryCondition::Type::kContact) {
       obstacle_normal |= bc.direction == ContactDirection::kObstacleNormal;
-      obstacles[name] = obstacle_name(bc.obstacle.kind);
+      obstacles[name] = obstacle_name(bc.obstacle.kind, spec.dimension);
     }
   c["direction"] = obstacle_normal ? "obstacle_normal" : "body_normal";
   c["obstacles"] = obstacles;

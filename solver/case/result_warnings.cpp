@@ -30,9 +30,9 @@ const BoundaryCondition* condition_of(const CaseSpec& spec, const Mesh& mesh, in
 double overlap(const Obstacle& o, const Point& p) {
   switch (o.kind) {
     case Obstacle::Kind::kPlane:
-      return -(p - (o.point - o.displacement)).dot(o.normal);
-    case Obstacle::Kind::kCircle:
-      return o.radius - (p - (o.center - o.displacement)).norm();
+      return -(p - (o.point - o.displacement).head<2>()).dot(o.normal.head<2>());
+    case Obstacle::Kind::kBall:
+      return o.radius - (p - (o.center - o.displacement).head<2>()).norm();
     case Obstacle::Kind::kGap:
       break;
   }
@@ -65,12 +65,12 @@ ContactGeometry contact_geometry(const CaseSpec& spec, const Mesh& mesh,
     const int group = mesh.edge_group(e.edge);
     const BoundaryCondition* bc = condition_of(spec, mesh, group);
     if (bc && bc->obstacle.kind == Obstacle::Kind::kPlane)
-      faces[group] |= mesh.edge_normal(e.edge).dot(bc->obstacle.normal) < 0.0;
+      faces[group] |= mesh.edge_normal(e.edge).dot(bc->obstacle.normal.head<2>()) < 0.0;
   }
   for (const auto& [group, facing] : faces)
     if (!facing)
       g.facing_away.push_back(
-          {mesh.group_names()[group], condition_of(spec, mesh, group)->obstacle.normal});
+          {mesh.group_names()[group], condition_of(spec, mesh, group)->obstacle.normal.head<2>()});
   // Overlaps below 1e-6 of the body's size are touching: a meshed arc's vertices lie on the
   // arc only to gmsh's tolerance (3e-7 on the robustness cases' annulus sector, a body of 2).
   Point lo = mesh.vertex(0), hi = mesh.vertex(0);

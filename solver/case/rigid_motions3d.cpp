@@ -40,7 +40,7 @@ std::string describe_motion(const Vector6& m, const Point3& centre) {
 
 }  // namespace
 
-std::optional<CaseError> check_rigid_motions(const Case3dSpec& spec, const TetMesh& mesh) {
+std::optional<CaseError> check_rigid_motions(const CaseSpec& spec, const TetMesh& mesh) {
   // Each prescribed component c at a vertex x asks v_c(x) = 0 of a rigid motion
   // v(x) = t + ω × (x − centre), a linear condition on (t, ω); the motions that meet them all
   // are the null space of the sum of the conditions' outer products. Lengths are measured in
@@ -55,8 +55,11 @@ std::optional<CaseError> check_rigid_motions(const Case3dSpec& spec, const TetMe
     const int g = mesh.face_group(f);
     if (g < 0) continue;
     const auto it = spec.boundary.find(names[g]);
-    if (it == spec.boundary.end() || it->second.type != Condition3d::Type::kDirichlet) continue;
-    for (int v : mesh.face(f)) prescribed[v] |= it->second.prescribed;
+    if (it == spec.boundary.end() || it->second.type != BoundaryCondition::Type::kDirichlet)
+      continue;
+    const auto& held = it->second.prescribed;
+    for (int v : mesh.face(f))
+      prescribed[v] |= (held[0] ? 1 : 0) | (held[1] ? 2 : 0) | (held[2] ? 4 : 0);
   }
   Matrix6 gram = Matrix6::Zero();
   for (int v = 0; v < mesh.num_vertices(); ++v) {

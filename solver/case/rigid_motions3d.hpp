@@ -5,8 +5,8 @@
 
 #include <optional>
 
-#include "case/case3d_spec.hpp"
 #include "case/case_error.hpp"
+#include "case/case_spec.hpp"
 #include "mesh/tet_mesh.hpp"
 
 namespace fosls {
@@ -14,6 +14,6 @@ namespace fosls {
 /// A problem at /boundary naming the rigid motions (translations along and rotations about
 /// which axes) that every prescribed displacement component of the case's dirichlet groups
 /// leaves at zero on `mesh`; nothing when there is none.
-std::optional<CaseError> check_rigid_motions(const Case3dSpec& spec, const TetMesh& mesh);
+std::optional<CaseError> check_rigid_motions(const CaseSpec& spec, const TetMesh& mesh);
 
 }  // namespace fosls

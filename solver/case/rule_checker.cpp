@@ -171,6 +171,11 @@ bool RuleChecker::check_choice(const json& j, const ValueRule& rule, const std::
   }
   const auto& s = j.get_ref<const std::string&>();
   if (std::find(rule.choices.begin(), rule.choices.end(), s) != rule.choices.end()) return true;
+  for (const auto& [value, why] : rule.refused_choices)
+    if (s == value) {
+      error(pointer, why);
+      return false;
+    }
   const std::string value =
       s.size() > 40 ? describe_value(j) : j.dump(-1, ' ', false, json::error_handler_t::replace);
   if (rule.choices.size() == 1)
@@ -199,8 +204,10 @@ bool RuleChecker::check_array(const json& j, const ValueRule& rule, const std::s
   const bool tuple = rule.range.lo == rule.range.hi;
   if (!j.is_array() || static_cast<double>(j.size()) < rule.range.lo ||
       (tuple && static_cast<double>(j.size()) != rule.range.hi)) {
+    const bool hinted = j.is_array() && rule.hint_count > 0 && j.size() == rule.hint_count;
     error(pointer, "expected " + std::string(tuple || rule.range.lo < 1 ? "" : "a non-empty ") +
-                       value_noun(rule) + ", got " + describe_value(j));
+                       value_noun(rule) + ", got " + describe_value(j) +
+                       (hinted ? rule.count_hint : ""));
     return false;
   }
   if (static_cast<double>(j.size()) > rule.range.hi) {
@@ -261,7 +268,8 @@ void RuleChecker::check_exclusive(const json& j, const ExclusiveFields& rule,
     sets_given += any ? 1 : 0;
   }
   if (sets_given == 0) {
-    error(pointer, rule.missing);
+    error(rule.missing_at.empty() ? pointer : child_pointer(pointer, rule.missing_at),
+          rule.missing);
   } else if (sets_given > 1) {
     std::string message = rule.several;
     if (auto at = message.find("{given}"); at != std::string::npos)
@@ -284,27 +292,39 @@ bool RuleChecker::check_object(const json& j, const ObjectRule& rule, const std:
             "missing field " + quoted(rule.discriminator) + ": " + rule.discriminator_meaning);
       return false;
     }
-    std::vector<std::string> values;
-    for (const auto& v : rule.variants) values.push_back(v.value);
-    if (!check(*it, choice_value(values), child_pointer(pointer, rule.discriminator))) return false;
+    ValueRule values = choice_value({});
+    for (const auto& v : rule.variants)
+      if (v.refused.empty())
+        values.choices.push_back(v.value);
+      else
+        values.refused_choices.emplace_back(v.value, v.refused);
+    if (!check(*it, values, child_pointer(pointer, rule.discriminator))) return false;
     variant = rule.variant(it->get<std::string>());
   }
 
-  std::vector<std::string> known;
-  if (!rule.discriminator.empty()) known.push_back(rule.discriminator);
-  for (const auto& f : rule.fields) known.push_back(f.key);
+  // Refused fields are known (their own sentence, not "unknown field") but not offered.
+  std::vector<std::string> known, offered;
+  auto know = [&](const std::string& key, bool refused) {
+    known.push_back(key);
+    if (!refused) offered.push_back(key);
+  };
+  if (!rule.discriminator.empty()) know(rule.discriminator, false);
+  for (const auto& f : rule.fields) know(f.key, !f.refused.empty());
   if (variant)
-    for (const auto& f : variant->fields) known.push_back(f.key);
+    for (const auto& f : variant->fields) know(f.key, !f.refused.empty());
   const std::string title = variant ? variant->title : rule.title;
   for (const auto& [key, value] : j.items())
     if (std::find(known.begin(), known.end(), key) == known.end())
       error(child_pointer(pointer, key), "unknown field " + quoted(key) + " in " + title +
-                                             ", expected one of: " + join_words(known, ", "));
+                                             ", expected one of: " + join_words(offered, ", "));
 
-  for (const auto& exclusive : rule.exclusive) check_exclusive(j, exclusive, pointer);
+  std::vector<ExclusiveFields> exclusives = rule.exclusive;
+  if (variant)
+    exclusives.insert(exclusives.end(), variant->exclusive.begin(), variant->exclusive.end());
+  for (const auto& exclusive : exclusives) check_exclusive(j, exclusive, pointer);
   auto required = [&](const FieldRule& f) {
     if (f.required) return true;
-    for (const auto& exclusive : rule.exclusive)
+    for (const auto& exclusive : exclusives)
       for (const auto& set : exclusive.sets)
         if (std::find(set.begin(), set.end(), f.key) != set.end())
           for (const auto& member : set)
@@ -314,9 +334,11 @@ bool RuleChecker::check_object(const json& j, const ObjectRule& rule, const std:
   auto check_fields = [&](const std::vector<FieldRule>& fields) {
     for (const auto& f : fields) {
       auto it = j.find(f.key);
-      if (it != j.end())
+      if (it != j.end() && !f.refused.empty())
+        error(child_pointer(pointer, f.key), f.refused);
+      else if (it != j.end())
         check(*it, f.value, child_pointer(pointer, f.key));
-      else if (required(f))
+      else if (f.refused.empty() && required(f))
         error(child_pointer(pointer, f.key), "missing field " + quoted(f.key) + ": " + f.meaning);
     }
   };

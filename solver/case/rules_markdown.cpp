@@ -22,6 +22,17 @@ std::string count_range(const Range& r, const std::string& unit) {
   return "at most " + number_text(r.hi) + " " + unit;
 }
 
+/// "`builtin` or `msh`", "`point` and `normal` or `obstacle`".
+std::string exclusive_text(const ExclusiveFields& e) {
+  std::vector<std::string> sets;
+  for (const auto& set : e.sets) {
+    std::vector<std::string> keys;
+    for (const auto& k : set) keys.push_back(code(k));
+    sets.push_back(join_words(keys, " and "));
+  }
+  return join_words(sets, " or ");
+}
+
 }  // namespace
 
 std::string value_type_text(const ValueRule& rule) {
@@ -44,11 +55,15 @@ std::string value_type_text(const ValueRule& rule) {
       return "boolean";
     case ValueKind::kArray: {
       const std::string element = value_type_text(*rule.element);
-      if (rule.range.lo == rule.range.hi) {
+      auto tuple = [&element](int n) {
         std::string s = "[";
-        for (int i = 0; i < static_cast<int>(rule.range.lo); ++i) s += (i ? ", " : "") + element;
+        for (int i = 0; i < n; ++i) s += (i ? ", " : "") + element;
         return s + "]";
-      }
+      };
+      if (rule.range.lo == rule.range.hi) return tuple(static_cast<int>(rule.range.lo));
+      // A vector of the case's dimension: 2 numbers in 2D, 3 in 3D.
+      if (rule.range.lo == 2 && rule.range.hi == 3)
+        return tuple(2) + " (2D) or " + tuple(3) + " (3D)";
       return "array of " + element;
     }
     case ValueKind::kMap:
@@ -120,10 +135,11 @@ std::string rules_markdown_table(const ObjectRule& rule, TableKind kind) {
   if (kind == TableKind::kOutput) {
     std::string s = "| field | type | unit | meaning |\n|---|---|---|---|\n";
     for (const auto& f : rule.fields)
-      s += "| " + code(f.key) + " | " +
-           cell(f.value.kind == ValueKind::kChoice ? "one of " + value_allowed_text(f.value)
-                                                   : value_type_text(f.value)) +
-           " | " + f.unit + " | " + cell(f.meaning) + (f.required ? "" : " (optional)") + " |\n";
+      if (f.refused.empty())
+        s += "| " + code(f.key) + " | " +
+             cell(f.value.kind == ValueKind::kChoice ? "one of " + value_allowed_text(f.value)
+                                                     : value_type_text(f.value)) +
+             " | " + f.unit + " | " + cell(f.meaning) + (f.required ? "" : " (optional)") + " |\n";
     return s;
   }
   auto default_text = [](const FieldRule& f) {
@@ -141,26 +157,24 @@ std::string rules_markdown_table(const ObjectRule& rule, TableKind kind) {
   if (variants) {
     s += "| " + code(rule.discriminator) + " | field | type | default | allowed | meaning |\n";
     s += "|---|---|---|---|---|---|\n";
-    for (const auto& f : rule.fields) s += row(" (all) |", f);
+    for (const auto& f : rule.fields)
+      if (f.refused.empty()) s += row(" (all) |", f);
     for (const auto& v : rule.variants) {
+      if (!v.refused.empty()) continue;
       s += "| " + code("\"" + v.value + "\"") + " | | | | | " + cell(v.meaning) + " |\n";
-      for (const auto& f : v.fields) s += row(" |", f);
+      for (const auto& f : v.fields)
+        if (f.refused.empty()) s += row(" |", f);
+      for (const auto& e : v.exclusive)
+        s += "| | | | | | give exactly one of: " + cell(exclusive_text(e)) + " |\n";
       if (!v.notes.empty()) s += "| | | | | | checked: " + cell(v.notes) + " |\n";
     }
   } else {
     s += "| field | type | default | allowed | meaning |\n";
     s += "|---|---|---|---|---|\n";
-    for (const auto& f : rule.fields) s += row("", f);
+    for (const auto& f : rule.fields)
+      if (f.refused.empty()) s += row("", f);
   }
-  for (const auto& e : rule.exclusive) {
-    std::vector<std::string> sets;
-    for (const auto& set : e.sets) {
-      std::vector<std::string> keys;
-      for (const auto& k : set) keys.push_back(code(k));
-      sets.push_back(join_words(keys, " and "));
-    }
-    s += "\nGive exactly one of: " + join_words(sets, " or ") + ".\n";
-  }
+  for (const auto& e : rule.exclusive) s += "\nGive exactly one of: " + exclusive_text(e) + ".\n";
   if (!rule.notes.empty()) s += "\nAlso checked: " + rule.notes + ".\n";
   return s;
 }

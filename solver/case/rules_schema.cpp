@@ -1,6 +1,8 @@
 #include "case/rules_schema.hpp"
 
 #include <algorithm>
+#include <map>
+#include <set>
 
 namespace fosls {
 
@@ -35,6 +37,7 @@ class SchemaWriter {
       json values = json::array();
       json variants = json::array();
       for (const auto& v : rule.variants) {
+        if (!v.refused.empty()) continue;
         values.push_back(v.value);
         json fields = properties(rule.fields);
         fields.update(properties(v.fields));
@@ -49,6 +52,7 @@ class SchemaWriter {
                         {"required", req},
                         {"additionalProperties", false}};
         if (!v.notes.empty()) variant["$comment"] = v.notes;
+        if (v.exclusive.size() == 1) variant.update(exclusive(v.exclusive[0]));
         variants.push_back(variant);
       }
       s["required"] = {rule.discriminator};
@@ -148,6 +152,7 @@ class SchemaWriter {
   json properties(const std::vector<FieldRule>& fields) {
     json p = json::object();
     for (const auto& f : fields) {
+      if (!f.refused.empty()) continue;  // the other dimension's: not allowed here
       json s = value(f.value);
       if (s.contains("$ref")) s = {{"allOf", {s}}};  // keep the description beside the $ref
       s["description"] = f.meaning;
@@ -160,7 +165,7 @@ class SchemaWriter {
   static json required(const std::vector<FieldRule>& fields) {
     json r = json::array();
     for (const auto& f : fields)
-      if (f.required) r.push_back(f.key);
+      if (f.required && f.refused.empty()) r.push_back(f.key);
     return r;
   }
 
@@ -181,6 +186,83 @@ class SchemaWriter {
 };
 
 }  // namespace
+
+namespace {
+
+/// Replaces every "$ref": "#/$defs/<old>" of `s` by the name `renamed` gives it.
+void rename_refs(json& s, const std::map<std::string, std::string>& renamed) {
+  if (s.is_object()) {
+    for (auto& [key, value] : s.items()) {
+      if (key == "$ref" && value.is_string()) {
+        const std::string target = value.get<std::string>().substr(std::string("#/$defs/").size());
+        if (auto it = renamed.find(target); it != renamed.end()) value = "#/$defs/" + it->second;
+      } else {
+        rename_refs(value, renamed);
+      }
+    }
+  } else if (s.is_array()) {
+    for (auto& value : s) rename_refs(value, renamed);
+  }
+}
+
+/// Whether `s` refers to any of `names` in $defs.
+bool refers_to(const json& s, const std::set<std::string>& names) {
+  if (s.is_object()) {
+    for (const auto& [key, value] : s.items())
+      if (key == "$ref" && value.is_string()
+              ? names.count(value.get<std::string>().substr(std::string("#/$defs/").size())) > 0
+              : refers_to(value, names))
+        return true;
+  } else if (s.is_array()) {
+    for (const auto& value : s)
+      if (refers_to(value, names)) return true;
+  }
+  return false;
+}
+
+}  // namespace
+
+json rules_json_schema_by_dimension(const ObjectRule& root2, const ObjectRule& root3,
+                                    const std::string& id, const std::string& description) {
+  SchemaWriter w2, w3;
+  const json s2 = w2.object(root2), s3 = w3.object(root3);
+  json defs2 = w2.defs(), defs3 = w3.defs();
+  defs2[root2.anchor] = s2;
+  defs3[root3.anchor] = s3;
+  // A definition differs by dimension when its text does, or when it refers to one that does
+  // (its 2D and 3D copies then point at different objects).
+  std::set<std::string> differ;
+  for (const auto& [name, d] : defs2.items())
+    if (!defs3.contains(name) || defs3[name] != d) differ.insert(name);
+  for (const auto& [name, d] : defs3.items())
+    if (!defs2.contains(name)) differ.insert(name);
+  for (bool grew = true; grew;) {
+    grew = false;
+    for (const auto& [name, d] : defs2.items())
+      if (!differ.count(name) && (refers_to(d, differ) || refers_to(defs3[name], differ)))
+        grew |= differ.insert(name).second;
+  }
+  std::map<std::string, std::string> as2, as3;
+  for (const auto& name : differ) as2[name] = name + "_2d", as3[name] = name + "_3d";
+  json defs = json::object();
+  for (auto [defs_d, as] : {std::pair{&defs2, &as2}, std::pair{&defs3, &as3}})
+    for (auto& [name, d] : defs_d->items()) {
+      rename_refs(d, *as);
+      defs[as->count(name) ? as->at(name) : name] = d;
+    }
+  const std::string root2_name = as2.count(root2.anchor) ? as2[root2.anchor] : root2.anchor;
+  const std::string root3_name = as3.count(root3.anchor) ? as3[root3.anchor] : root3.anchor;
+  return {{"$schema", "https://json-schema.org/draft/2020-12/schema"},
+          {"$id", id},
+          {"description", description},
+          {"$comment",
+           "one schema for both dimensions: a document with \"dimension\": 3 is checked against " +
+               root3_name + ", any other against " + root2_name},
+          {"if", {{"properties", {{"dimension", {{"const", 3}}}}}, {"required", {"dimension"}}}},
+          {"then", {{"$ref", "#/$defs/" + root3_name}}},
+          {"else", {{"$ref", "#/$defs/" + root2_name}}},
+          {"$defs", defs}};
+}
 
 json rules_json_schema(const ObjectRule& root, const std::string& id,
                        const std::string& description) {

@@ -14,4 +14,11 @@ namespace fosls {
 nlohmann::json rules_json_schema(const ObjectRule& root, const std::string& id,
                                  const std::string& description);
 
+/// One schema for a document of either dimension from its 2D and 3D rules: a document whose
+/// `dimension` is 3 is checked against the 3D rules, any other against the 2D ones. Objects that
+/// are the same in both are defined once; the others as `<anchor>_2d` and `<anchor>_3d`.
+nlohmann::json rules_json_schema_by_dimension(const ObjectRule& root2, const ObjectRule& root3,
+                                              const std::string& id,
+                                              const std::string& description);
+
 }  // namespace fosls

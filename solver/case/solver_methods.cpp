@@ -17,26 +17,30 @@ const std::vector<MethodInfo>& method_table() {
        "obstacles, W-cycle, nested iteration",
        true,
        true,
-       {kSmoother, kPreSmoothing, kPostSmoothing, kCoarseObstacle, kCycle}},
+       {kSmoother, kPreSmoothing, kPostSmoothing, kCoarseObstacle, kCycle},
+       true},
       {SolverMethod::kTnnmg,
        "tnnmg",
        "truncated non-smooth Newton multigrid: smoothing, a linear cycle on the inactive set, "
        "projection and line search",
        true,
        false,
-       {kSmoother, kPreSmoothing, kPostSmoothing, kCoarseObstacle, kCycle}},
+       {kSmoother, kPreSmoothing, kPostSmoothing, kCoarseObstacle, kCycle},
+       false},
       {SolverMethod::kPdas,
        "pdas",
        "primal-dual active set method with a direct solver (CHOLMOD) on the finest level",
        false,
        false,
-       {}},
+       {},
+       true},
       {SolverMethod::kPgs,
        "pgs",
        "projected Gauss-Seidel on the finest level only",
        true,
        false,
-       {kSmoother}},
+       {kSmoother},
+       false},
   };
   return table;
 }
@@ -127,6 +131,10 @@ const char* option_field(SolverOption option) {
       return "cycle";
   }
   return "?";
+}
+
+bool runs_in(SolverMethod method, int dimension) {
+  return dimension != 3 || method_info(method).in_3d;
 }
 
 bool uses_option(const MethodInfo& method, SolverOption option) {

@@ -19,7 +19,7 @@ void check_sweep(const json& j, const std::string& pointer, RuleChecker& checker
       !checker.usable(j, pointer, {"pointer", "values"}))
     return;
   const std::string target = j["pointer"];
-  for (const char* fixed : {"/sweep", "/mesh", "/name"}) {
+  for (const char* fixed : {"/sweep", "/mesh", "/name", "/dimension"}) {
     const std::string prefix = fixed;
     if (target == prefix || target.rfind(prefix + "/", 0) == 0)
       checker.error(child_pointer(pointer, "pointer"),
@@ -45,7 +45,7 @@ ObjectRulePtr sweep_rule(const CaseReadOptions& options) {
                      "the values it takes, solved in this order"),
   };
   r->hook = check_sweep;
-  r->notes = "not /mesh, /name or /sweep; at least one value";
+  r->notes = "not /mesh, /name, /dimension or /sweep; at least one value";
   return r;
 }
 

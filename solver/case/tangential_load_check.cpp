@@ -19,7 +19,7 @@ std::optional<Point> plane_contact_normal(const CaseSpec& spec, std::string& nam
   for (const auto& [name, bc] : spec.boundary) {
     if (bc.type != BoundaryCondition::Type::kContact) continue;
     if (!is_frictionless(bc) || bc.obstacle.kind != Obstacle::Kind::kPlane) return std::nullopt;
-    const Point n = bc.obstacle.normal;
+    const Point n = bc.obstacle.normal.head<2>();
     if (normal && std::abs(normal->x() * n.y() - normal->y() * n.x()) > 1e-9) return std::nullopt;
     normal = n;
     names += (names.empty() ? "'" : ", '") + name + "'";

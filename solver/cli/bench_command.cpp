@@ -15,10 +15,8 @@
 #include <optional>
 #include <sstream>
 
-#include "case/case3d_admission.hpp"
-#include "case/case3d_reader.hpp"
-#include "case/case3d_runner.hpp"
 #include "case/case_admission.hpp"
+#include "case/case_reader.hpp"
 #include "case/case_runner.hpp"
 #include "case/memory_size.hpp"
 #include "case/solver_methods.hpp"
@@ -116,8 +114,8 @@ nlohmann::json common_row(const nlohmann::json& r, double setup_s, double solve_
           {"estimator", r["functional"]["estimator"]}};
 }
 
-/// A 2D run's row of the table.
-nlohmann::json bench_row_2d(const nlohmann::json& case_json) {
+/// A run's row of the table: the columns of the result both dimensions have.
+nlohmann::json bench_row(const nlohmann::json& case_json) {
   CaseReadResult read = read_case(case_json, {});
   if (!read.errors.empty())
     return {{"error", read.errors.front().pointer + ": " + read.errors.front().detail}};
@@ -125,30 +123,19 @@ nlohmann::json bench_row_2d(const nlohmann::json& case_json) {
   control.want_vtu = false;
   const nlohmann::json r = run_case(*read.spec, control).result;
   const auto& timing = r["timing"];
+  const double setup_s = timing.value("setup_s", 0.0);
   nlohmann::json row =
-      common_row(r,
-                 timing["mesh_s"].get<double>() + timing["assembly_s"].get<double>() +
-                     timing["setup_s"].get<double>(),
-                 timing["solve_s"].get<double>() - timing["setup_s"].get<double>());
-  row["memory"] = r["memory"];
-  row["peak_pressure"] = r["contact"]["zone"]["peak_pressure"];
-  row["contact_width"] = r["contact"]["zone"]["width"];
-  return row;
-}
-
-/// A 3D run's row: the same columns, the contact area in the width's place; the 3D result
-/// reports no memory split (its columns stay empty) and times the set-up within the solve.
-nlohmann::json bench_row_3d(const nlohmann::json& case_json) {
-  Case3dReadResult read = read_case_3d(case_json, {});
-  if (!read.errors.empty())
-    return {{"error", read.errors.front().pointer + ": " + read.errors.front().detail}};
-  const nlohmann::json r = run_case_3d(*read.spec).result;
-  const auto& timing = r["timing"];
-  nlohmann::json row =
-      common_row(r, timing["mesh_s"].get<double>() + timing["assembly_s"].get<double>(),
-                 timing["solve_s"].get<double>());
-  row["peak_pressure"] = r["contact"]["max_pressure"];
-  row["contact_area"] = r["contact"]["area"];
+      common_row(r, timing["mesh_s"].get<double>() + timing["assembly_s"].get<double>() + setup_s,
+                 timing["solve_s"].get<double>() - setup_s);
+  if (r.contains("memory")) row["memory"] = r["memory"];
+  const nlohmann::json& contact = r["contact"];
+  if (contact.contains("zone")) {
+    row["peak_pressure"] = contact["zone"]["peak_pressure"];
+    row["contact_width"] = contact["zone"]["width"];
+  } else {
+    row["peak_pressure"] = contact["max_pressure"];
+    row["contact_area"] = contact["area"];
+  }
   return row;
 }
 
@@ -168,7 +155,7 @@ nlohmann::json run_isolated(const nlohmann::json& case_json, int threads) {
     }
     nlohmann::json row;
     try {
-      row = is_3d_case(case_json) ? bench_row_3d(case_json) : bench_row_2d(case_json);
+      row = bench_row(case_json);
     } catch (const std::exception& e) {
       row["error"] = e.what();
     }
@@ -253,16 +240,11 @@ RunEstimate estimate_run(const nlohmann::json& case_json, const CaseReadOptions&
   auto refused = [](const std::vector<CaseError>& errors) {
     return RunEstimate{errors.front().pointer + ": " + errors.front().detail, 0, std::nullopt};
   };
-  if (is_3d_case(case_json)) {
-    const Case3dAdmission admission = admit_case_3d(case_json, options);
-    if (!admission.errors.empty()) return refused(admission.errors);
-    if (!admission.estimate) return {};
-    return {"", admission.estimate->bytes, admission.estimate->seconds};
-  }
   const CaseAdmission admission = admit_case(case_json, options);
   if (!admission.errors.empty()) return refused(admission.errors);
+  if (!admission.estimate) return {};  // a 3D .geo script: counted once gmsh has meshed it
   return {"", admission.estimate->memory_bytes,
-          estimated_seconds(admission.estimate->unknowns, admission.spec->solver.method)};
+          estimated_seconds(admission.estimate->count(), admission.spec->solver.method)};
 }
 
 /// Admits every run by the rule solve and the service use, before any runs, and says on stderr
@@ -411,7 +393,7 @@ int run_bench(const BenchOptions& o) {
       "%10s\n",
       "level", "dofs", "method", "smooth", "obs", "cyc", "thr", "iters", "conv", "rate", "setup_s",
       "solve_s", "total_s", "asm_MiB", "chain_MiB", "peak_MiB", "|F|", "p_max",
-      is_3d_case(*base) ? "area" : "width", "J^1/2");
+      (case_dimension(*base) == 3) ? "area" : "width", "J^1/2");
   nlohmann::json rows = nlohmann::json::array();
   bool all_ok = true;
   const auto methods = split(o.methods), smoothers = split(o.smoothers),

@@ -5,9 +5,8 @@
 #include <memory>
 #include <string>
 
-#include "case/case3d_admission.hpp"
-#include "case/case3d_reader.hpp"
 #include "case/case_admission.hpp"
+#include "case/case_reader.hpp"
 #include "case/memory_size.hpp"
 #include "case/solver_methods.hpp"
 #include "case/time_estimate.hpp"
@@ -25,29 +24,6 @@ void print_errors(const std::vector<CaseError>& errors) {
               << '\n';
 }
 
-/// A 3D case (case3d_admission.hpp): its unknowns and, for mmg and pdas, memory and time.
-int run_estimate_3d(const nlohmann::json& j, const CaseReadOptions& options) {
-  const Case3dAdmission admission = admit_case_3d(j, options);
-  print_errors(admission.errors);
-  if (!admission.errors.empty()) return kExitBadInput;
-  if (!admission.estimate) {
-    std::cerr << "error: /mesh/geo_file: a .geo script's size is known once gmsh has meshed it; "
-                 "fosls-contact solve checks it then, before refining\n";
-    return kExitBadInput;
-  }
-  const bool counted = admission.spec->mesh.kind == Mesh3dSpec::Kind::kMsh;
-  std::cout << "unknowns: " << std::llround(admission.estimate->unknowns)
-            << (counted ? "" : " (estimated before meshing)") << '\n';
-  std::cout << "3D, memory and time of each method (an upper guide from the slowest measured "
-               "cases, docs/service.md \"3D jobs\"):\n";
-  for (const SolverMethod m : {SolverMethod::kMmg, SolverMethod::kPdas}) {
-    const Case3dEstimate e = estimate_3d_solve(admission.estimate->unknowns, m);
-    std::printf("  %-6s %8.0f MiB  %s\n", method_info(m).name, e.bytes / (1 << 20),
-                describe_seconds(e.seconds).c_str());
-  }
-  return kExitOk;
-}
-
 int run_estimate(const std::string& path, const std::string& max_memory) {
   const CaseReadOptions options = command_line_read_options(max_memory);
   CaseFile file = load_case_file(path, options.limits.max_case_bytes);
@@ -55,11 +31,15 @@ int run_estimate(const std::string& path, const std::string& max_memory) {
     std::cerr << "error: " << path << ": " << file.problem << '\n';
     return kExitBadInput;
   }
-  if (is_3d_case(file.json)) return run_estimate_3d(file.json, options);
   const CaseAdmission admission = admit_case(file.json, options);
   print_errors(admission.errors);
   // The same rule as solve's: what it refuses, solve refuses before meshing.
-  if (!admission.errors.empty() || !admission.estimate) return kExitBadInput;
+  if (!admission.errors.empty()) return kExitBadInput;
+  if (!admission.estimate) {  // a 3D .geo script: counted once gmsh has meshed it
+    std::cerr << "error: /mesh/geo_file: a .geo script's size is known once gmsh has meshed it; "
+                 "fosls-contact solve checks it then, before refining\n";
+    return kExitBadInput;
+  }
   const SolverMethod method = admission.spec->solver.method;
   std::cout << "unknowns: " << admission.estimate->unknowns
             << (admission.estimate->unknowns_exact ? "" : " (estimated before meshing)") << '\n';
@@ -77,12 +57,12 @@ int run_estimate(const std::string& path, const std::string& max_memory) {
   if (admission.estimate->limited_by == "/accuracy/max_dofs")
     std::cout << "          (the accuracy loop at accuracy.max_dofs, the largest level it may "
                  "make; it stops earlier once the force is accurate enough)\n";
-  const long long unknowns = admission.estimate->unknowns;
+  const ProblemCount count = admission.estimate->count();
   for (const MethodInfo& m : solver_methods()) {
-    const auto e = adaptive
-                       ? estimate_adaptive_resources(unknowns, m.method)
-                       : estimate_resources(unknowns, true, m.method, admission.spec->mesh.order);
-    const auto seconds = estimated_seconds(unknowns, m.method);
+    if (!runs_in(m.method, count.dimension)) continue;
+    const auto e = adaptive ? estimate_adaptive_resources(count.unknowns, count, m.method)
+                            : estimate_resources(count, m.method);
+    const auto seconds = estimated_seconds(count, m.method);
     const std::string time = seconds ? describe_seconds(*seconds) : "time not estimated";
     std::printf("  %-6s %8.0f MiB  %s\n", m.name, e.memory_bytes / (1 << 20), time.c_str());
   }

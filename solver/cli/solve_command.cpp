@@ -13,9 +13,6 @@
 #include <string>
 #include <vector>
 
-#include "case/case3d_admission.hpp"
-#include "case/case3d_reader.hpp"
-#include "case/case3d_runner.hpp"
 #include "case/case_admission.hpp"
 #include "case/case_error.hpp"
 #include "case/case_reader.hpp"
@@ -145,25 +142,6 @@ std::optional<int> write_outputs(const nlohmann::json& result, const std::string
   return std::nullopt;
 }
 
-/// A 3D case (case/case3d_reader.hpp): admitted by the rule estimate and the service use,
-/// solved, written; its summary in three lines.
-int run_solve_3d(const nlohmann::json& case_json, const SolveOptions& o,
-                 const CaseReadOptions& read_options, ProgressLine& progress) {
-  const auto read = admit_case_3d(case_json, read_options);
-  if (!read.errors.empty()) {
-    print_errors(read.errors);
-    return kExitBadInput;
-  }
-  Run3dControl control;
-  control.want_vtu = !o.vtu_path.empty();
-  control.vtu_ascii = o.vtu_format == "ascii";
-  control.on_iteration = [&progress](const IterationRecord& r) { progress.update(r); };
-  const Run3dOutput output = run_case_3d(*read.spec, control, read_options.limits);
-  progress.finish();
-  if (const auto failed = write_outputs(output.result, output.vtu, o)) return *failed;
-  return report(output.result, o);
-}
-
 int run_solve(const SolveOptions& o) {
   const CaseReadOptions read_options = command_line_read_options(o.max_memory);
 
@@ -177,7 +155,6 @@ int run_solve(const SolveOptions& o) {
   if (!o.msh_path.empty()) use_msh_file(file.json, o.msh_path);
   ProgressLine progress(!o.quiet && isatty(STDERR_FILENO));
   try {
-    if (is_3d_case(file.json)) return run_solve_3d(file.json, o, read_options, progress);
     // The admission rule of estimate, bench and the service, without gmsh; what needs the
     // coarse mesh (mesh errors, the exact size) is checked again by run_case once it is built,
     // which throws it as a CaseException (below).

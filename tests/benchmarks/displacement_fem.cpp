@@ -193,7 +193,7 @@ BoundaryData boundary_data(const Mesh& mesh, const CaseSpec& spec, bool axisymme
         }
         break;
       case BoundaryCondition::Type::kContact:
-        if (bc.obstacle.kind == Obstacle::Kind::kCircle)
+        if (bc.obstacle.kind == Obstacle::Kind::kBall)
           throw std::runtime_error(group + ": a circle obstacle is not supported here");
         if (bc.obstacle.kind == Obstacle::Kind::kGap && !gap_of.count(&bc))
           gap_of[&bc] = compile_scalar(bc.obstacle.gap);
@@ -228,10 +228,11 @@ BoundaryData boundary_data(const Mesh& mesh, const CaseSpec& spec, bool axisymme
     if (bc->obstacle.kind == Obstacle::Kind::kGap) {
       c.gap = gap_of.at(bc)(x.x(), x.y());  // given along the body normal
     } else {
-      const Point nu = bc->obstacle.normal.normalized();  // from the obstacle into the body
+      const Point nu =
+          bc->obstacle.normal.head<2>().normalized();  // from the obstacle into the body
       const double approach = -n.dot(nu);
       if (approach <= 1e-12) continue;  // n never reaches the plane
-      c.gap = (x - bc->obstacle.point).dot(nu) / approach;
+      c.gap = (x - bc->obstacle.point.head<2>()).dot(nu) / approach;
     }
     if (!x_free || !y_free) {
       c.free_component = x_free ? 0 : 1;

@@ -1,4 +1,4 @@
-// The rigid obstacles of 3D contact cases (case/contact3d_section.hpp): a plane given in either
+// The rigid obstacles of 3D contact cases (case/obstacle_section.cpp): a plane given in either
 // form, a sphere and a gap function of x, y and z, each checked against an exact or an
 // independent answer; and every problem of an obstacle named by its field.
 
@@ -7,9 +7,9 @@
 #include <nlohmann/json.hpp>
 
 #include "../case3d_runs.hpp"
-#include "case/case3d_reader.hpp"
-#include "case/case3d_runner.hpp"
 #include "case/case_error.hpp"
+#include "case/case_reader.hpp"
+#include "case/case_runner.hpp"
 
 namespace fosls {
 namespace {
@@ -145,7 +145,7 @@ TEST(Case3dObstacles, EveryProblemOfAnObstacleIsNamedByItsField) {
   half["boundary"]["contact"].erase("normal");
   EXPECT_EQ(case3d_problems(half), std::vector<std::string>{"/boundary/contact/normal"});
   json bad_gap = box_under({{"type", "gap"}, {"g", "w - z"}});
-  const auto read = read_case_3d(bad_gap);
+  const auto read = read_case(bad_gap);
   ASSERT_EQ(read.errors.size(), 1u);
   EXPECT_EQ(read.errors[0].pointer, "/boundary/top/obstacle/g");
   EXPECT_NE(read.errors[0].detail.find("x, y and z"), std::string::npos) << read.errors[0].detail;

@@ -9,9 +9,10 @@
 #include <nlohmann/json.hpp>
 
 #include "../case3d_runs.hpp"
-#include "case/case3d_admission.hpp"
-#include "case/case3d_reader.hpp"
+#include "case/case_admission.hpp"
 #include "case/case_error.hpp"
+#include "case/case_reader.hpp"
+#include "case/solve3d_checks.hpp"
 
 namespace fosls {
 namespace {
@@ -222,11 +223,11 @@ TEST(Case3dRollers, EveryBadDisplacementOrTractionIsNamedByItsField) {
 
 TEST(Case3dRollers, TheQuarterBallIsAQuarterOfTheUnknowns) {
   json j = half_ball(true, "mmg");
-  const auto read = read_case_3d(j);
+  const auto read = read_case(j);
   ASSERT_TRUE(read.errors.empty());
-  EXPECT_TRUE(read.spec->mesh.ball.quarter);
+  EXPECT_TRUE(read.spec->mesh.half_ball.quarter);
   const double quarter = *builtin_3d_unknowns(read.spec->mesh);
-  const double whole = *builtin_3d_unknowns(read_case_3d(testing::hertz_3d(1)).spec->mesh);
+  const double whole = *builtin_3d_unknowns(read_case(testing::hertz_3d(1)).spec->mesh);
   EXPECT_DOUBLE_EQ(4.0 * quarter, whole);
   j["mesh"]["builtin"]["quarter"] = "yes";
   EXPECT_EQ(case3d_problems(j), std::vector<std::string>{"/mesh/builtin/quarter"});

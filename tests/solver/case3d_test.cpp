@@ -1,4 +1,4 @@
-// 3D cases through the case layer (case/case3d_reader.hpp, case/case3d_runner.hpp): the shipped
+// 3D cases through the case layer (case/case_reader.hpp, case/case_runner.hpp): the shipped
 // hertz_3d example read and solved by mmg and pdas to the same force, against 3D Hertz; every
 // problem of a bad case named by its field; the warnings a 2D result gives for the same finding.
 
@@ -14,13 +14,13 @@
 #include "../one_tetrahedron_msh.hpp"
 #include "../shipped_example.hpp"
 #include "../tet_problems.hpp"
-#include "case/case3d_admission.hpp"
-#include "case/case3d_reader.hpp"
-#include "case/case3d_runner.hpp"
+#include "case/case_admission.hpp"
 #include "case/case_error.hpp"
 #include "case/case_reader.hpp"
+#include "case/case_runner.hpp"
 #include "case/result_rules.hpp"
 #include "case/rule_checker.hpp"
+#include "case/solve3d_checks.hpp"
 
 namespace fosls {
 namespace {
@@ -34,12 +34,20 @@ std::vector<std::string> problems(const json& j) { return testing::case3d_proble
 /// The pointer of the CaseException the run throws (after a clean read).
 std::string run_problem(const json& j) { return testing::run_3d_problem(j).pointer; }
 
-TEST(Case3d, ShippedHertzIsAThreeDCaseTheTwoDReaderRefusesByItsField) {
+TEST(Case3d, ShippedHertzIsReadByTheOneReaderAndWithoutItsDimensionGetsOneHint) {
   const json j = hertz_3d(1);
-  EXPECT_TRUE(is_3d_case(j));
-  const auto read2d = read_case(j);
-  ASSERT_EQ(read2d.errors.size(), 1u);
-  EXPECT_EQ(read2d.errors[0].pointer, "/dimension");
+  const auto read = read_case(j);
+  ASSERT_TRUE(read.errors.empty()) << read.errors[0].pointer << ": " << read.errors[0].detail;
+  EXPECT_EQ(read.spec->dimension, 3);
+  EXPECT_EQ(read.spec->mesh.builtin, "half_ball");
+  EXPECT_EQ(read.spec->boundary.at("top").values[2].value, -0.01);
+  // Without "dimension": one sentence at /dimension, not every 3-vector refused as a 2D one.
+  json missing = j;
+  missing.erase("dimension");
+  const auto hinted = read_case(missing);
+  ASSERT_EQ(hinted.errors.size(), 1u);
+  EXPECT_EQ(hinted.errors[0].pointer, "/dimension");
+  EXPECT_NE(hinted.errors[0].detail.find("a 3D case needs \"dimension\": 3"), std::string::npos);
   json two_d = testing::load_shipped_example("hertz");
   two_d["dimension"] = 2;
   EXPECT_TRUE(read_case(two_d).errors.empty());
@@ -76,7 +84,7 @@ TEST(Case3d, HertzForceIsAThreeVectorAndMmgAgreesWithPdas) {
   EXPECT_EQ(mmg["history"].size(), mmg["iterations"].get<std::size_t>() + 1);
   // Every field is documented (result3d_rule: docs/result-format.md, "3D results"), as the runner
   // adds timing; and a field the rules do not know is found.
-  json full = run_case_3d(*read_case_3d(hertz_3d(1)).spec).result;
+  json full = run_case(*read_case(hertz_3d(1)).spec).result;
   const auto undocumented = [](const json& r) {
     RuleChecker checker(CaseReadOptions{});
     checker.check_object(r, *result3d_rule(), "");
@@ -126,7 +134,7 @@ TEST(Case3d, WhatOnlyTheMeshShowsIsNamedByItsField) {
     CaseLimits limits;
     limits.max_memory_bytes = bytes;
     try {
-      run_case_3d(*read_case_3d(j).spec, {}, limits);
+      run_case(*read_case(j).spec, {}, limits);
     } catch (const CaseException& e) {
       return e.errors().front().pointer + ": " + e.errors().front().detail;
     }
@@ -186,7 +194,7 @@ TEST(Case3d, ABoxCompressedOntoAPlaneIsExactlyUniaxial) {
 }
 
 TEST(Case3d, AdmissionEstimatesABuiltinsSizeBeforeItIsBuilt) {
-  const Case3dAdmission admitted = admit_case_3d(hertz_3d(1));
+  const CaseAdmission admitted = admit_case(hertz_3d(1));
   ASSERT_TRUE(admitted.errors.empty());
   ASSERT_TRUE(admitted.estimate.has_value());
   const json r = run(hertz_3d(1));
@@ -195,11 +203,11 @@ TEST(Case3d, AdmissionEstimatesABuiltinsSizeBeforeItIsBuilt) {
   CaseReadOptions tight;
   tight.limits.max_seconds = 10;  // refinement 3: about 639 000 unknowns, estimated at 167 s
   tight.limits.time_budget_name = "a job may run";
-  const Case3dAdmission slow = admit_case_3d(hertz_3d(3), tight);
+  const CaseAdmission slow = admit_case(hertz_3d(3), tight);
   ASSERT_EQ(slow.errors.size(), 1u);
   EXPECT_EQ(slow.errors[0].pointer, "/mesh/refinements");
   EXPECT_NE(slow.errors[0].detail.find("a job may run"), std::string::npos);
-  EXPECT_TRUE(admit_case_3d(hertz_3d(1), tight).errors.empty());
+  EXPECT_TRUE(admit_case(hertz_3d(1), tight).errors.empty());
 }
 
 TEST(Case3d, AnMshFileIsReadOnceWhenTheCaseIsRead) {
@@ -212,10 +220,10 @@ TEST(Case3d, AnMshFileIsReadOnceWhenTheCaseIsRead) {
             {"boundary", {{"rest", {{"type", "dirichlet"}, {"displacement", {0, 0, 0}}}}}}};
   CaseReadOptions command_line;
   command_line.allow_local_files = true;
-  const Case3dReadResult read = read_case_3d(j, command_line);
+  const CaseReadResult read = read_case(j, command_line);
   std::remove(file.c_str());  // the spec holds the text: the run does not read the file again
   ASSERT_TRUE(read.spec.has_value()) << read.errors[0].pointer << ": " << read.errors[0].detail;
-  EXPECT_EQ(run_case_3d(*read.spec).result["tetrahedra"], 8);
+  EXPECT_EQ(run_case(*read.spec).result["tetrahedra"], 8);
   json inline_text = j;
   inline_text["mesh"] = {{"msh", msh}, {"refinements", 1}};
   EXPECT_EQ(run(inline_text)["tetrahedra"], 8);
@@ -225,7 +233,7 @@ TEST(Case3d, AnMshFileIsReadOnceWhenTheCaseIsRead) {
 
 TEST(Case3d, ACancelStopsTheSolveAndLeavesNoResult) {
   std::atomic<bool> cancel = false;
-  Run3dControl control;
+  RunControl control;
   control.cancel = &cancel;
   control.want_vtu = true;
   int seen = 0;
@@ -233,7 +241,7 @@ TEST(Case3d, ACancelStopsTheSolveAndLeavesNoResult) {
     seen = r.iteration;
     if (r.iteration == 2) cancel = true;  // polled before the next iteration
   };
-  const Run3dOutput out = run_case_3d(*read_case_3d(hertz_3d(1)).spec, control);
+  const RunOutput out = run_case(*read_case(hertz_3d(1)).spec, control);
   EXPECT_TRUE(out.cancelled);
   EXPECT_EQ(seen, 2);
   EXPECT_TRUE(out.result.is_null());

@@ -4,7 +4,6 @@
 #include "case/case_reader.hpp"
 #include "../case_errors.hpp"
 #include "../shipped_example.hpp"
-#include "case/case3d_reader.hpp"
 
 #include <gtest/gtest.h>
 #include <unistd.h>
@@ -80,11 +79,6 @@ TEST(ReadCase, CasesInTheDocumentationRead) {
     // Cases that name local files run in tests/contract/msh_workflow_test.py, beside them.
     if (j["mesh"].contains("msh_file") || j["mesh"].contains("geo_file")) continue;
     ++cases;
-    if (is_3d_case(j)) {  // docs/case-format.md, "3D cases"
-      const auto r3 = read_case_3d(j);
-      EXPECT_TRUE(r3.spec) << j["name"] << "\n" << dump_errors(r3.errors);
-      continue;
-    }
     const auto r = read_case(j);
     EXPECT_TRUE(r.spec) << j["name"] << "\n" << dump_errors(r.errors);
   }
@@ -129,7 +123,7 @@ TEST(ReadCase, HertzExample) {
   EXPECT_EQ(s.mesh.size, j["mesh"]["size"].get<double>());
   const auto& contact = s.boundary.at("contact");
   EXPECT_EQ(contact.obstacle.kind, Obstacle::Kind::kPlane);
-  EXPECT_EQ(contact.obstacle.normal, Point(0, 1));
+  EXPECT_EQ(contact.obstacle.normal, Point3(0, 1, 0));
   EXPECT_TRUE(read_case(load_example("hertz_incompressible")).spec->material.incompressible());
 }
 
@@ -146,8 +140,8 @@ TEST(ReadCase, DefaultsForOptionalFields) {
   EXPECT_TRUE(s.body_force[1].is_constant());
   EXPECT_EQ(s.boundary.at("top").values[1].expression, "-0.01*x");
   // The plane normal is stored with unit length.
-  EXPECT_EQ(s.boundary.at("bottom").obstacle.normal, Point(0, 1));
-  EXPECT_EQ(s.boundary.at("bottom").obstacle.point, Point(0, -0.1));
+  EXPECT_EQ(s.boundary.at("bottom").obstacle.normal, Point3(0, 1, 0));
+  EXPECT_EQ(s.boundary.at("bottom").obstacle.point, Point3(0, -0.1, 0));
 }
 
 TEST(ReadCase, EveryFieldIsRead) {
@@ -185,8 +179,8 @@ TEST(ReadCase, EveryFieldIsRead) {
   EXPECT_EQ(s.boundary.at("left").type, BoundaryCondition::Type::kNeumann);
   EXPECT_EQ(s.boundary.at("left").values[1].expression, "y");
   const auto& right = s.boundary.at("right");
-  EXPECT_EQ(right.obstacle.kind, Obstacle::Kind::kCircle);
-  EXPECT_EQ(right.obstacle.center, Point(3, 0.5));
+  EXPECT_EQ(right.obstacle.kind, Obstacle::Kind::kBall);
+  EXPECT_EQ(right.obstacle.center, Point3(3, 0.5, 0));
   EXPECT_EQ(right.obstacle.radius, 1.5);
   EXPECT_EQ(right.direction, ContactDirection::kObstacleNormal);
 }

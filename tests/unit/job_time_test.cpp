@@ -55,8 +55,8 @@ TEST(JobTime, PgsIsBoundedByItsIterationsAndASweepByItsPoints) {
 }
 
 // Issue 50, item 9: a Coulomb case with max_iterations 10^5 was admitted at 9 s and killed at
-// 90 s. Friction now multiplies the solve: Tresca by 2, Coulomb by every iteration it may take.
-TEST(JobTime, FrictionAndCoulombsIterationsCount) {
+// 90 s. With friction a solve is priced at every iteration solver.max_iterations allows.
+TEST(JobTime, FrictionIsPricedAtItsMaxIterations) {
   json plain = testing::load_shipped_example("cattaneo_mindlin");
   plain["boundary"]["contact"].erase("friction");
   json tresca = plain;
@@ -66,11 +66,12 @@ TEST(JobTime, FrictionAndCoulombsIterationsCount) {
   json many = coulomb;
   many["solver"]["max_iterations"] = 100000;
   const double t0 = admit_case(plain).time->seconds;
-  EXPECT_DOUBLE_EQ(admit_case(tresca).time->seconds, 2 * t0);
   const double tc = admit_case(coulomb).time->seconds;
   const double tm = admit_case(many).time->seconds;
+  EXPECT_GT(admit_case(tresca).time->seconds, 2 * t0);
   EXPECT_GT(tc, 2 * t0);
-  EXPECT_NEAR(tm / tc, 100000.0 / admit_case(coulomb).spec->solver.max_iterations, 1e-9);
+  EXPECT_GT(tm, 100 * tc);
+  EXPECT_EQ(admit_case(many).time->limited_by, "/solver/max_iterations");
   // With a time limit the case says what it will take at most.
   many["solver"]["time_limit_s"] = 30;
   EXPECT_DOUBLE_EQ(admit_case(many).time->seconds, 30);
@@ -88,6 +89,7 @@ TEST(JobTime, TheTimeLimitBoundsLoadStepsAsAWhole) {
   ASSERT_TRUE(a.time);
   EXPECT_DOUBLE_EQ(a.time->seconds, 0.8);
   EXPECT_TRUE(a.time->bounded_by_time_limit);
+  EXPECT_EQ(a.time->limited_by, "/solver/time_limit_s");
 }
 
 TEST(JobTime, TheCasesOwnTimeLimitBoundsIt) {

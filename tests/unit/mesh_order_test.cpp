@@ -60,8 +60,8 @@ TEST(MeshOrder, OrderTwoCountsItsDofs) {
   EXPECT_EQ(unknowns_after_refinement(1LL, 3LL, 3LL, 0, 2), 28);
   // Refined once: 6 vertices, 9 edges, 4 triangles.
   EXPECT_EQ(unknowns_after_refinement(1LL, 3LL, 3LL, 1, 2), 2 * 6 + 6 * 9 + 4 * 4);
-  const ResourceEstimate one = estimate_resources(100000, true, SolverMethod::kMmg, 1);
-  const ResourceEstimate two = estimate_resources(100000, true, SolverMethod::kMmg, 2);
+  const ResourceEstimate one = estimate_resources({100000, 100, true, 1, 2}, SolverMethod::kMmg);
+  const ResourceEstimate two = estimate_resources({100000, 100, true, 2, 2}, SolverMethod::kMmg);
   EXPECT_GT(two.memory_bytes, one.memory_bytes);
   EXPECT_EQ(two.order, 2);
 }

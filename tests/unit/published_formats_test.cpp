@@ -97,10 +97,6 @@ TEST(PublishedFormats, CaseSchemaMatchesTheRules) {
   check_schema("case.schema.json", case_json_schema());
 }
 
-TEST(PublishedFormats, Case3dSchemaMatchesTheRules) {
-  check_schema("case3d.schema.json", case3d_json_schema());
-}
-
 TEST(PublishedFormats, ResultSchemaMatchesTheRules) {
   check_schema("result.schema.json", result_json_schema());
 }

@@ -1,0 +1,197 @@
+// A 3D case, step by step: the coarse mesh from its source, the hierarchy of uniform
+// refinements, the boundary groups checked against the mesh, the problem data, the solve, the
+// result.
+
+#include "case/solve3d_backend.hpp"
+
+#include <chrono>
+#include <cmath>
+
+#include "assembly/discretization.hpp"
+#include "case/case3d_result.hpp"
+#include "case/case_admission.hpp"
+#include "case/case_error.hpp"
+#include "case/early_group_check.hpp"
+#include "case/expression.hpp"
+#include "case/mesh_factory.hpp"
+#include "case/solve3d_checks.hpp"
+#include "core/non_finite.hpp"
+#include "mesh/gmsh_mesh.hpp"
+#include "mesh/mesh_error.hpp"
+#include "mesh/tet_msh_reader.hpp"
+#include "mesh/tet_refinement.hpp"
+#include "post/tet_vtu_writer.hpp"
+#include "solvers/solve_loop.hpp"
+
+namespace fosls {
+
+namespace {
+
+using nlohmann::json;
+using Clock = std::chrono::steady_clock;
+
+double seconds_since(Clock::time_point t0) {
+  return std::chrono::duration<double>(Clock::now() - t0).count();
+}
+
+/// Step 1: the coarse mesh from the case's source; its problems at the source's pointer.
+TetMesh coarse_mesh(const MeshSpec& m) {
+  try {
+    switch (m.kind) {
+      case MeshSpec::Kind::kBuiltin:
+        return m.builtin == "box" ? make_box(m.box_cells, m.box_lengths)
+                                  : make_half_ball(m.half_ball);
+      case MeshSpec::Kind::kMsh:
+        return tet_mesh_from_msh(m.msh_text);
+      case MeshSpec::Kind::kGeoFile:
+        return tet_mesh_from_geo_file(m.geo_path, m.size);
+      case MeshSpec::Kind::kGeometry:
+        break;  // refused by the reader in 3D
+    }
+  } catch (const MeshError& e) {
+    std::vector<CaseError> errors;
+    for (const auto& p : e.problems())
+      errors.push_back(
+          {p.field == "/size" ? std::string("/mesh/size") : mesh_source_pointer(m), p.detail});
+    throw CaseException(std::move(errors));
+  } catch (const std::invalid_argument& e) {  // the half ball's grading folds a tetrahedron
+    throw CaseException(mesh_source_pointer(m),
+                        std::string("these parameters give no valid mesh (") + e.what() +
+                            "); use a smaller grading or fewer cells");
+  }
+  throw CaseException(mesh_source_pointer(m), "unknown mesh source");
+}
+
+/// Refuses refinements whose finest level would exceed the limits (case_admission.hpp).
+void check_size_of(double coarse_unknowns, bool exact, const CaseSpec& spec,
+                   const CaseLimits& limits) {
+  const ProblemCount count{std::llround(finest_3d_unknowns(coarse_unknowns, spec.mesh.refinements)),
+                           std::llround(coarse_unknowns), exact, spec.mesh.order, 3};
+  std::vector<CaseError> errors = check_size(spec, count, limits);
+  if (!errors.empty()) throw CaseException(std::move(errors));
+}
+
+/// Step 3: every named group is one of the mesh's, and every contact face faces its plane.
+void check_groups(const CaseSpec& spec, const TetMesh& mesh) {
+  std::vector<CaseError> errors = check_3d_groups(spec, mesh);
+  if (!errors.empty()) throw CaseException(std::move(errors));
+}
+
+/// The obstacle in the assembly layer's terms (the reader added its displacement already).
+RigidObstacle<3> rigid_obstacle(const Obstacle& o) {
+  RigidObstacle<3> r;
+  r.kind = o.kind == Obstacle::Kind::kPlane  ? RigidObstacle<3>::Kind::kPlane
+           : o.kind == Obstacle::Kind::kBall ? RigidObstacle<3>::Kind::kBall
+                                             : RigidObstacle<3>::Kind::kGap;
+  r.point = o.point, r.normal = o.normal, r.center = o.center, r.radius = o.radius;
+  return r;
+}
+
+/// Step 4: the problem data on the mesh's groups.
+ProblemData<3> problem_data(const CaseSpec& spec, const TetMesh& mesh) {
+  ProblemData<3> d;
+  d.material = {.mu = spec.material.mu, .lambda = spec.material.lambda};
+  const Weights& w = spec.weights;
+  d.weights = {.c1 = w.c1, .c2 = w.c2, .c3 = w.c3, .c4 = w.c4, .c2_volumetric = w.c2_volumetric};
+  // A zero component stays empty: the assembler then adds no body force at all.
+  for (int i = 0; i < 3; ++i)
+    if (const Scalar& f = spec.body_force[i]; !f.is_constant() || f.value != 0.0)
+      d.body_force[i] = compile_scalar_3d(f);
+  d.groups.resize(mesh.group_names().size());
+  for (const auto& [name, bc] : spec.boundary) {
+    GroupData<3>& group = d.groups[tet_group_index(mesh, name)];
+    if (bc.type == BoundaryCondition::Type::kContact) {
+      group.role = GroupRole::kContact;
+      group.contact.obstacle = rigid_obstacle(bc.obstacle);
+      if (bc.obstacle.kind == Obstacle::Kind::kGap)
+        group.contact.gap = compile_scalar_3d(bc.obstacle.gap);
+      continue;
+    }
+    const bool dirichlet = bc.type == BoundaryCondition::Type::kDirichlet;
+    group.role = dirichlet ? GroupRole::kDirichlet : GroupRole::kNeumann;
+    group.normal_pressure = bc.type == BoundaryCondition::Type::kPressure;
+    group.prescribed = 0;
+    for (int i = 0; i < 3; ++i) {
+      if (dirichlet && !bc.prescribed[i]) continue;
+      group.prescribed |= 1 << i;
+      if (i == 0 || !group.normal_pressure) group.values[i] = compile_scalar_3d(bc.values[i]);
+    }
+  }
+  return d;
+}
+
+}  // namespace
+
+std::vector<CaseError> check_3d_mesh(const CaseSpec& spec, const CaseLimits& limits) {
+  try {
+    if (const auto unknowns = builtin_3d_unknowns(spec.mesh))
+      check_size_of(*unknowns, false, spec, limits);
+    const TetMesh coarse = coarse_mesh(spec.mesh);
+    check_size_of(tet_mesh_unknowns(coarse), true, spec, limits);
+    return check_3d_groups(spec, coarse);
+  } catch (const CaseException& e) {
+    return e.errors();
+  }
+}
+
+RunOutput run_3d_point(const CaseSpec& spec, const RunControl& control, const CaseLimits& limits) {
+  const auto t0 = Clock::now();
+  // The limit counts the whole run, the mesh and the assembly included, as in 2D.
+  const Deadline deadline = run_deadline(t0, spec.solver.time_limit_s);
+  // Before anything is built: a builtin of many cells is refused at once.
+  if (const auto unknowns = builtin_3d_unknowns(spec.mesh))
+    check_size_of(*unknowns, false, spec, limits);
+  TetMesh coarse = coarse_mesh(spec.mesh);
+  check_size_of(tet_mesh_unknowns(coarse), true, spec, limits);
+  TetHierarchy meshes = build_tet_hierarchy(std::move(coarse), spec.mesh.refinements);
+  deadline.check("refining the mesh");
+  check_groups(spec, meshes.finest());
+  const double mesh_s = seconds_since(t0);
+
+  const auto t1 = Clock::now();
+  ProblemData<3> data = problem_data(spec, meshes.finest());
+  const Discretization<3> disc(std::move(meshes), std::move(data));
+  deadline.check("assembling the finest level");
+  const double assembly_s = seconds_since(t1);
+
+  const auto t2 = Clock::now();
+  const BoxQp& qp = disc.problem().qp;
+  Vector x = Vector::Zero(qp.size());
+  if (control.start && control.start->size() == qp.size()) x = *control.start;
+  SolverObserver observer;
+  observer.on_iteration = control.on_iteration;
+  if (control.cancel)
+    observer.cancelled = [&control] { return control.cancel->load(std::memory_order_relaxed); };
+  if (deadline.is_set()) observer.out_of_time = [deadline] { return deadline.passed(); };
+  if (control.on_step) control.on_step(0, qp.size());
+  const bool multilevel = spec.solver.method == SolverMethod::kMmg;
+  SolverReport report;
+  try {
+    LevelHierarchy levels = multilevel ? disc.build_level_hierarchy() : LevelHierarchy{};
+    deadline.check("building the level hierarchy");
+    report = solve_box_qp(qp, levels, spec.solver, observer, x);
+  } catch (const NonFiniteError& e) {
+    throw CaseException({non_finite_problem(e.what())});
+  }
+  const double solve_s = seconds_since(t2);
+
+  RunOutput out;
+  if (report.cancelled) {
+    out.cancelled = true;
+    return out;
+  }
+  out.result = case3d_result(spec, disc, x, report);
+  out.result["timing"] = {{"mesh_s", mesh_s},
+                          {"assembly_s", assembly_s},
+                          {"solve_s", solve_s},
+                          {"total_s", seconds_since(t0)}};
+  if (control.want_vtu) {
+    const FoslsAssembler<3>& a = disc.assembler();
+    out.vtu = write_tet_vtu(a, disc.problem(), a.full_vector(disc.problem(), x),
+                            control.vtu_ascii ? VtuEncoding::kAscii : VtuEncoding::kBinary);
+  }
+  out.solution = std::move(x);
+  return out;
+}
+
+}  // namespace fosls
