@@ -136,16 +136,32 @@ class Client:
 
 
 def summary(job, result):
-    """The answer in one line, in the case's declared units when it has them."""
+    """The answer in one line, in the case's declared units when it has them. A 2D result gives
+    the force per unit thickness and the contact width, a 3D result (dimension 3) the force and
+    the contact zone's radius; the zone's figures are left out where the result has none."""
     contact = result["contact"]
     units = result.get("units") or {}
-    force_unit = f" {units['force_per_thickness']}" if units.get("declared") else ""
-    length = f" {units['length']}" if units.get("declared") else ""
+    declared = bool(units.get("declared"))
+    three = result.get("dimension") == 3
     state = "converged" if job["converged"] else "NOT converged"
-    return (f"job {job['id']}: {state} ({job['stop_reason']}, {result['iterations']} iterations), "
-            f"force {contact['force']}{force_unit} per unit thickness, "
-            f"peak pressure {contact['zone']['peak_pressure']:.4g}, "
-            f"contact width {contact['zone']['length']:.4g}{length}")
+    if three:
+        force_unit = f" {units['force']}" if declared and units.get("force") else ""
+        force = f"force {contact['force']}{force_unit}"
+    else:
+        force_unit = f" {units['force_per_thickness']}" if declared else ""
+        force = f"force {contact['force']}{force_unit} per unit thickness"
+    parts = [f"job {job['id']}: {state} ({job['stop_reason']}, {result['iterations']} iterations)",
+             force]
+    zone = contact.get("zone") or {}
+    peak = zone.get("peak_pressure", contact.get("max_pressure"))
+    if peak is not None:
+        parts.append(f"peak pressure {peak:.4g}")
+    length = f" {units['length']}" if declared and units.get("length") else ""
+    if three and zone.get("radius") is not None:
+        parts.append(f"contact radius {zone['radius']:.4g}{length}")
+    elif not three and zone.get("length") is not None:
+        parts.append(f"contact width {zone['length']:.4g}{length}")
+    return ", ".join(parts)
 
 
 def exit_code(job, result):

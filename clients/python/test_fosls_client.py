@@ -83,6 +83,22 @@ class ClientTest(unittest.TestCase):
         self.assertIn("N/mm per unit thickness", out)
         self.assertTrue((folder / "s.vtu").read_bytes().startswith(b"<?xml"))
 
+    def test_a_3d_result_is_summarised_without_2d_fields(self):
+        case = json.loads((SOURCE / "solver/examples/3d/hertz_3d.json").read_text())
+        case["name"] = "ball"
+        case["mesh"]["refinements"] = 0
+        code, out, err = self.run_program(case)
+        self.assertIn(code, (0, 4), err)  # a coarse ball may be flagged for review
+        self.assertIn("force [", out)
+        self.assertNotIn("per unit thickness", out)
+        self.assertIn("peak pressure", out)
+        job, result = self.client.solve(case)
+        self.assertEqual(result["dimension"], 3)
+        self.assertGreater(result["contact"]["force"][2], 0)
+        line = fosls_client.summary(job, result)
+        if "zone" in result["contact"]:
+            self.assertIn(f"contact radius {result['contact']['zone']['radius']:.4g}", line)
+
     def test_an_invalid_case_lists_its_pointers(self):
         case = small_case("bad")
         case["material"]["mu"] = -1

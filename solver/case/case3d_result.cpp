@@ -11,6 +11,7 @@
 #include "case/result_json.hpp"
 #include "case/result_warnings.hpp"
 #include "case/solver_methods.hpp"
+#include "case/units.hpp"
 #include "post/contact_force.hpp"
 
 namespace fosls {
@@ -25,7 +26,30 @@ struct ContactSummary {
   double area = 0.0;  ///< of the faces with p > 0
   int faces = 0;      ///< of the contact groups
   int faces_in_contact = 0;
+  Point3 peak_at = Point3::Zero();  ///< centroid of the face with the largest pressure
+  /// The bounding box of the faces with p > 0 (empty: lo > hi).
+  Point3 lo = Point3::Constant(std::numeric_limits<double>::infinity());
+  Point3 hi = -Point3::Constant(std::numeric_limits<double>::infinity());
 };
+
+Point3 face_centroid(const TetMesh& mesh, int f) {
+  Point3 c = Point3::Zero();
+  for (int v : mesh.face(f)) c += mesh.vertex(v);
+  return c / 3.0;
+}
+
+/// The zone's extent and peak (docs/result-format.md, "3D results"): the radius of the disc of
+/// the same area (Hertz's a), its bounding box, and where the pressure peaks. Zeros and nulls
+/// without contact, as in 2D.
+json zone_json(const ContactSummary& c) {
+  const bool touching = c.faces_in_contact > 0;
+  const auto point = [touching](const Point3& x) {
+    return touching ? json::array({x.x(), x.y(), x.z()}) : json(nullptr);
+  };
+  return {{"faces", c.faces_in_contact},     {"radius", std::sqrt(c.area / M_PI)},
+          {"box_min", point(c.lo)},          {"box_max", point(c.hi)},
+          {"peak_pressure", c.max_pressure}, {"peak_location", point(c.peak_at)}};
+}
 
 ContactSummary contact_summary(const Discretization<3>& disc, const Vector& x_full) {
   const FoslsSpace<3>& space = disc.finest_space();
@@ -37,10 +61,15 @@ ContactSummary contact_summary(const Discretization<3>& disc, const Vector& x_fu
   for (int f = 0; f < mesh.num_faces(); ++f) {
     if (!disc.finest_space().is_contact_facet(f)) continue;
     ++s.faces;
+    if (p[f] > s.max_pressure) s.peak_at = face_centroid(mesh, f);
     s.max_pressure = std::max(s.max_pressure, p[f]);
     if (p[f] > 0) {
       s.area += mesh.face_area(f);
       ++s.faces_in_contact;
+      for (int v : mesh.face(f)) {
+        s.lo = s.lo.cwiseMin(mesh.vertex(v));
+        s.hi = s.hi.cwiseMax(mesh.vertex(v));
+      }
     }
   }
   return s;
@@ -188,10 +217,16 @@ json case3d_result(const CaseSpec& spec, const Discretization<3>& disc, const Ve
                   {"max_pressure", c.max_pressure},
                   {"area", c.area},
                   {"faces", c.faces},
-                  {"faces_in_contact", c.faces_in_contact}};
+                  {"faces_in_contact", c.faces_in_contact},
+                  {"zone", zone_json(c)}};
   r["warnings"] = json::array();
   r["warning_details"] = json::array();
   r["review_required"] = false;
+  // As 2D's: a modulus implausible for the declared units and the body's size.
+  if (const std::string units = implausible_units(
+          spec.units, youngs_modulus(spec.material.mu, spec.material.lambda), mesh.diameter());
+      !units.empty())
+    add_warnings(r, {{"units_implausible", units, true}});
   add_warnings(r, contact_warnings(spec, mesh, c));
   add_warnings(r, roller_warnings(disc.finest_space()));
   add_warnings(r, result_warnings(report, spec.solver));  // 2D's: not_converged, rounding, …

@@ -12,6 +12,23 @@ namespace {
 
 using namespace result_parts;
 
+ObjectRulePtr zone3d_rule() {
+  const ValueRule where = one_of_value({tuple_value(number_value(), 3, "[x, y, z]"), null_value()},
+                                       "[x, y, z] or null");
+  return object_rule(
+      "the 3D contact zone", "zone3d",
+      {output_field("faces", count(), "1", "contact faces in contact (pressure > 0)"),
+       output_field("radius", number(), "L",
+                    "√(area/π): the radius of the disc of the zone's area (for Hertz, a)"),
+       output_field("box_min", where, "L",
+                    "the smallest x, y and z of the faces in contact; null without contact"),
+       output_field("box_max", where, "L", "the largest x, y and z of the faces in contact"),
+       output_field("peak_pressure", number(), "S",
+                    "the largest face pressure (= max_pressure; 0 without contact)"),
+       output_field("peak_location", where, "L",
+                    "centroid [x, y, z] of the face with the peak pressure; null without one")});
+}
+
 ObjectRulePtr contact3d_rule() {
   return object_rule(
       "the 3D contact output", "contact3d",
@@ -21,7 +38,9 @@ ObjectRulePtr contact3d_rule() {
                     "the largest face pressure −σ_nn (RT0: one value per face)"),
        output_field("area", number(), "L²", "the area of the contact faces with pressure > 0"),
        output_field("faces", count(), "1", "faces of the contact groups"),
-       output_field("faces_in_contact", count(), "1", "of those, the faces with pressure > 0")});
+       output_field("faces_in_contact", count(), "1", "of those, the faces with pressure > 0"),
+       output_field("zone", object_value(zone3d_rule()), "",
+                    "where the body touches the obstacle: its extent and peak, as 2D's zone")});
 }
 
 ObjectRulePtr functional3d_rule() {
@@ -76,11 +95,11 @@ std::vector<FieldRule> solution3d_fields() {
                        "the contact output (zeros when the case has no contact group)"),
           output_field("warnings", list_value(text(), "list of sentences"), "",
                        "what the user should know: the messages of warning_details, in order"),
-          output_field("warning_details",
-                       list_value(object_value(warning_rule()), "one per warning"), "",
-                       "the warnings with their codes: no_contact, initial_penetration, "
-                       "roller_overrides_contact and the solver's own as in 2D (not_converged, "
-                       "time_limit, rounding_level, coarse_corrections_shortened)"),
+          output_field(
+              "warning_details", list_value(object_value(warning_rule()), "one per warning"), "",
+              "the warnings with their codes: units_implausible, no_contact, initial_penetration, "
+              "roller_overrides_contact and the solver's own as in 2D (not_converged, "
+              "time_limit, rounding_level, coarse_corrections_shortened)"),
           output_field("review_required", boolean_value(), "",
                        "a warning says the answer may be physically empty or wrong although it "
                        "converged; fosls-contact solve then exits with code 4"),

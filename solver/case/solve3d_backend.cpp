@@ -17,6 +17,7 @@
 #include "case/solve3d_checks.hpp"
 #include "core/non_finite.hpp"
 #include "mesh/gmsh_mesh.hpp"
+#include "mesh/length_scale.hpp"
 #include "mesh/mesh_error.hpp"
 #include "mesh/tet_msh_reader.hpp"
 #include "mesh/tet_refinement.hpp"
@@ -92,7 +93,11 @@ ProblemData<3> problem_data(const CaseSpec& spec, const TetMesh& mesh) {
   ProblemData<3> d;
   d.material = {.mu = spec.material.mu, .lambda = spec.material.lambda};
   const Weights& w = spec.weights;
-  d.weights = {.c1 = w.c1, .c2 = w.c2, .c3 = w.c3, .c4 = w.c4, .c2_volumetric = w.c2_volumetric};
+  // The c1 term in units of the body's size, as in 2D (mesh/length_scale.hpp): without it the
+  // answer depended on the unit of length (issue 47).
+  const double l = w.length_scale;
+  d.weights = {
+      .c1 = w.c1 * l * l, .c2 = w.c2, .c3 = w.c3, .c4 = w.c4, .c2_volumetric = w.c2_volumetric};
   // A zero component stays empty: the assembler then adds no body force at all.
   for (int i = 0; i < 3; ++i)
     if (const Scalar& f = spec.body_force[i]; !f.is_constant() || f.value != 0.0)
@@ -143,13 +148,15 @@ RunOutput run_3d_point(const CaseSpec& spec, const RunControl& control, const Ca
     check_size_of(*unknowns, false, spec, limits);
   TetMesh coarse = coarse_mesh(spec.mesh);
   check_size_of(tet_mesh_unknowns(coarse), true, spec, limits);
+  CaseSpec used = spec;  // the case with the weights as used
+  used.weights.length_scale = length_scale(coarse);
   TetHierarchy meshes = build_tet_hierarchy(std::move(coarse), spec.mesh.refinements);
   deadline.check("refining the mesh");
   check_groups(spec, meshes.finest());
   const double mesh_s = seconds_since(t0);
 
   const auto t1 = Clock::now();
-  ProblemData<3> data = problem_data(spec, meshes.finest());
+  ProblemData<3> data = problem_data(used, meshes.finest());
   const Discretization<3> disc(std::move(meshes), std::move(data));
   deadline.check("assembling the finest level");
   const double assembly_s = seconds_since(t1);
@@ -180,7 +187,7 @@ RunOutput run_3d_point(const CaseSpec& spec, const RunControl& control, const Ca
     out.cancelled = true;
     return out;
   }
-  out.result = case3d_result(spec, disc, x, report);
+  out.result = case3d_result(used, disc, x, report);
   out.result["timing"] = {{"mesh_s", mesh_s},
                           {"assembly_s", assembly_s},
                           {"solve_s", solve_s},

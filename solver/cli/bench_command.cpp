@@ -129,13 +129,12 @@ nlohmann::json bench_row(const nlohmann::json& case_json) {
                  timing["solve_s"].get<double>() - setup_s);
   if (r.contains("memory")) row["memory"] = r["memory"];
   const nlohmann::json& contact = r["contact"];
-  if (contact.contains("zone")) {
-    row["peak_pressure"] = contact["zone"]["peak_pressure"];
-    row["contact_width"] = contact["zone"]["width"];
-  } else {
-    row["peak_pressure"] = contact["max_pressure"];
+  row["peak_pressure"] = contact["zone"]["peak_pressure"];
+  // The zone's extent: its width along the boundary in 2D, its area in 3D.
+  if (r.value("dimension", 2) == 3)
     row["contact_area"] = contact["area"];
-  }
+  else
+    row["contact_width"] = contact["zone"]["width"];
   return row;
 }
 
