@@ -31,11 +31,6 @@ double tresca_bound(const ScalarFunction& s, const Point& a, const Point& b, dou
 
 }  // namespace
 
-bool FrictionLayout::coulomb() const {
-  return std::any_of(edges.begin(), edges.end(),
-                     [](const FrictionEdge& f) { return f.coefficient > 0.0; });
-}
-
 double reference_slip_origin(const ProblemData<2>& data, int v, const Point& tangent) {
   // Only the finest level has a reference; the coarser ones the c3 limit assembles need only
   // the matrix, which the reference does not change.
@@ -95,48 +90,6 @@ FrictionLayout friction_layout(const FoslsSpace<2>& space, const ProblemData<2>&
     layout.edges.push_back(f);
   }
   return layout;
-}
-
-double slip_bound(const FrictionEdge& f, const Vector& x) {
-  return f.coefficient > 0.0 ? f.coefficient * std::max(0.0, -x[f.sn]) : f.tresca;
-}
-
-double set_friction_bounds(const FrictionLayout& layout, const Vector& x, BoxQp& qp, Kinks& kinks) {
-  std::fill(kinks.weight.begin(), kinks.weight.end(), 0.0);
-  kinks.constant = 0.0;
-  double largest = 0.0, change = 0.0;
-  bool first = false;
-  for (const FrictionEdge& f : layout.edges) {
-    const double s = slip_bound(f, x);
-    first |= !is_bounded_above(qp.upper[f.st]);
-    if (is_bounded_above(qp.upper[f.st])) change = std::max(change, std::abs(s - qp.upper[f.st]));
-    largest = std::max(largest, s);
-    qp.lower[f.st] = -s;
-    qp.upper[f.st] = s;
-    for (int k = 0; k < 2; ++k) {
-      if (f.kink[k] >= 0)
-        kinks.weight[f.kink[k]] += 0.5 * layout.c3 * s;
-      else
-        kinks.constant += 0.5 * layout.c3 * s * std::abs(f.fixed_slip[k]);
-    }
-  }
-  if (first) return 1.0;
-  return largest > 0.0 ? change / largest : 0.0;
-}
-
-}  // namespace fosls
-
-namespace fosls {
-
-double friction_functional(const FrictionLayout& layout, const Kinks& kinks, const Vector& x) {
-  double sum = kinks.energy(x);
-  for (const FrictionEdge& f : layout.edges) {
-    double slip = 0.0;
-    for (int k = 0; k < 2; ++k)
-      slip += f.kink[k] >= 0 ? x[kinks.dof[f.kink[k]]] - kinks.at[f.kink[k]] : f.fixed_slip[k];
-    sum += 0.5 * layout.c3 * x[f.st] * slip;
-  }
-  return sum;
 }
 
 }  // namespace fosls

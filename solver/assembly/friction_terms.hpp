@@ -5,32 +5,11 @@
 // kinks C3 s̄_e/2 |ΔU_t,v| at the end points (trapezoidal rule) and the bounds |S_t| ≤ s̄_e,
 // s̄_e = ∫_e s/μ, are set here. Coulomb's s = 𝔣 |σ_nn| makes s̄_e = 𝔣 max(0, −S_n).
 
-#include <array>
-#include <vector>
-
 #include "assembly/problem_data.hpp"
+#include "core/friction_law.hpp"
 #include "core/kinks.hpp"
 
 namespace fosls {
-
-/// A frictional contact edge in the QP.
-struct FrictionEdge {
-  int edge = -1;
-  int st = -1;  ///< free index of S_t
-  int sn = -1;  ///< free index of S_n
-  /// Per end point: the kink index (a free U_t), or -1 with `fixed_slip` the slip of a fixed one.
-  std::array<int, 2> kink = {-1, -1};
-  std::array<double, 2> fixed_slip = {0.0, 0.0};
-  double tresca = 0.0;       ///< s̄_e of a Tresca bound
-  double coefficient = 0.0;  ///< 𝔣 of Coulomb friction (0: Tresca)
-};
-
-struct FrictionLayout {
-  std::vector<FrictionEdge> edges;
-  double c3 = 0.0;
-  bool empty() const { return edges.empty(); }
-  bool coulomb() const;
-};
 
 /// The tangential displacement t·u_ref(v) of the reference state at vertex v (0 without one).
 double reference_slip_origin(const ProblemData<2>& data, int v, const Point& tangent);
@@ -48,19 +27,5 @@ double tangential_displacement(const FoslsSpace<2>& space, const Vector& x_full,
 /// std::domain_error naming the point.
 FrictionLayout friction_layout(const FoslsSpace<2>& space, const ProblemData<2>& data,
                                const Vector& xd, Kinks& kinks);
-
-/// s̄_e of edge f at x (free DOFs; S_n read for Coulomb).
-double slip_bound(const FrictionEdge& f, const Vector& x);
-
-/// Sets ±s̄_e on S_t in `qp` and the kink weights C3 Σ s̄_e/2 for the slip bounds at x. Returns
-/// the largest change of an s̄_e relative to the largest s̄_e (1 the first time).
-double set_friction_bounds(const FrictionLayout& layout, const Vector& x, BoxQp& qp, Kinks& kinks);
-
-}  // namespace fosls
-
-namespace fosls {
-
-/// The friction term C3 Σ_e S_t (ΔU_t,p + ΔU_t,q)/2 + the kinks at the free DOFs x.
-double friction_functional(const FrictionLayout& layout, const Kinks& kinks, const Vector& x);
 
 }  // namespace fosls

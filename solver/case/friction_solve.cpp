@@ -8,12 +8,7 @@ SolverReport solve_frictional(Discretization<2>& disc, const LevelHierarchy& hie
   AssembledProblem& problem = disc.mutable_problem();
   KinkedProblem kinked;
   kinked.kinks = &problem.kinks;
-  if (problem.friction.coulomb()) {
-    kinked.update = [&problem](const Vector& at) {
-      return set_friction_bounds(problem.friction, at, problem.qp, problem.kinks);
-    };
-    kinked.update_tolerance = options.friction_tolerance;
-  }
+  if (problem.friction.coulomb()) kinked.coulomb = &problem.friction;
   return solve_kinked_qp(problem.qp, kinked, hierarchy, options, observer, x);
 }
 

@@ -65,12 +65,17 @@ double KinkSides::energy_offset() const {
 }
 
 double KinkSides::kkt_residual(const Vector& x, const Vector& r, double sided_kkt) const {
+  return kkt_residual(x, r, sided_kkt, kinks_.weight);
+}
+
+double KinkSides::kkt_residual(const Vector& x, const Vector& r, double sided_kkt,
+                               const std::vector<double>& weights) const {
   double s = sided_kkt * sided_kkt;
   for (int k = 0; k < kinks_.size(); ++k) {
     const int i = kinks_.dof[k];
     const double sided = x[i] - std::clamp(x[i] + r[i], qp_.lower[i], qp_.upper[i]);
     // The prox of w |· − o| within the DOF's own bounds, at x − ∇ of the smooth part.
-    const double o = kinks_.at[k], w = kinks_.weight[k];
+    const double o = kinks_.at[k], w = weights[k];
     const double y = x[i] + r[i] - qp_.b[i] + b_[k] - o;
     const double shrunk = o + std::copysign(std::max(0.0, std::abs(y) - w), y);
     const double kinked = x[i] - std::clamp(shrunk, lower_[k], upper_[k]);

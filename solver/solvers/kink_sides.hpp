@@ -7,6 +7,8 @@
 // a DOF that reaches its kink is given a new side in the next iteration. The QP's b and bounds
 // are changed at the kinked DOFs only and restored when the sides go.
 
+#include <vector>
+
 #include "core/box_qp.hpp"
 #include "core/kinks.hpp"
 
@@ -27,6 +29,10 @@ class KinkSides {
   double energy_offset() const;
   /// ‖x − prox(x − ∇)‖ of the kinked problem from the sided KKT residual and r.
   double kkt_residual(const Vector& x, const Vector& r, double sided_kkt) const;
+  /// The same with the kinks weighted by `weights` instead of their own (Coulomb's residual:
+  /// the weights of the bounds the iterate gives, solvers/coulomb_update.hpp).
+  double kkt_residual(const Vector& x, const Vector& r, double sided_kkt,
+                      const std::vector<double>& weights) const;
   /// Whether kink k's DOF sits at its kink (stick).
   bool at_kink(const Vector& x, int k) const { return x[kinks_.dof[k]] == kinks_.at[k]; }
 

@@ -1,6 +1,7 @@
 #include "solvers/nested_iteration.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <memory>
 #include <utility>
 #include <vector>
@@ -18,6 +19,22 @@ BoxQp coarser_problem(const BoxQp& fine, const Level& level, CoarseProjection pr
   for (int i = 0; i < fine.size(); ++i)
     defect[i] = is_bounded_above(fine.upper[i]) ? fine.upper[i] : kNoBound;
   project_defect(level, projection, defect, c.upper);
+  // A frictional DOF held at 0 (every S_t at Coulomb's start, s̄ = 0) holds at 0 the coarse DOF
+  // that carries most of it (a fine S_t is half its coarse edge's S_t), not the whole row as in
+  // the cycle (row_obstacle.hpp): on a curved boundary the row of a fine S_t also reaches the
+  // coarse S_n a little, and would hold that at 0 too. Other bounds (Tresca's) are not passed
+  // down, as before; the start is clipped to the fine bounds afterwards.
+  if (!fine.row_obstacles.empty()) {
+    std::vector<int> main_column(fine.size(), -1);
+    std::vector<double> main_weight(fine.size(), 0.0);
+    for (int col = 0; col < n; ++col)
+      for (SparseMatrix::InnerIterator it(p, col); it; ++it)
+        if (std::abs(it.value()) > std::abs(main_weight[it.row()]))
+          main_weight[it.row()] = it.value(), main_column[it.row()] = col;
+    for (int i : fine.row_obstacles)
+      if (main_column[i] >= 0 && fine.lower[i] == 0.0 && fine.upper[i] == 0.0)
+        c.lower[main_column[i]] = c.upper[main_column[i]] = 0.0;
+  }
   return c;
 }
 

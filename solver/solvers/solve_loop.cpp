@@ -5,6 +5,7 @@
 #include <cmath>
 #include <limits>
 #include <memory>
+#include <optional>
 #include <sstream>
 #include <stdexcept>
 #include <string>
@@ -30,10 +31,6 @@ namespace fosls {
 namespace {
 
 using Clock = std::chrono::steady_clock;
-
-/// Coulomb: the slip bounds are updated each time the KKT residual has fallen by this factor
-/// since the last update (docs/method.md §8.4).
-constexpr double kUpdateReduction = 0.3;
 
 double seconds_since(Clock::time_point t0) {
   return std::chrono::duration<double>(Clock::now() - t0).count();
@@ -91,10 +88,10 @@ class IterationLoop {
  public:
   IterationLoop(const BoxQp& qp, IterationStep& step, const SolverOptions& options,
                 const SolverObserver& observer, Vector& x, SolverReport& report,
-                KinkSides* sides = nullptr, const KinkedProblem* kinked = nullptr)
+                KinkSides* sides = nullptr, CoulombUpdate* coulomb = nullptr)
       : qp_(qp),
         sides_(sides),
-        update_(kinked && kinked->update ? kinked : nullptr),
+        coulomb_(coulomb),
         step_(step),
         options_(options),
         observer_(observer),
@@ -110,12 +107,13 @@ class IterationLoop {
     symmetric_multiply(qp_.A, x_, r_);
     r_ = qp_.b - r_;
     if (sides_) sides_->choose(x_, r_);
+    if (coulomb_ && !coulomb_->newton()) update_problem(0);  // the start's own bounds
     active_ = qp_.active_set(x_);
     report_.initial_kkt = record(0, 0.0, 0).kkt_residual;
+    if (coulomb_) coulomb_->started(frozen_kkt_);
     report_.final_kkt = report_.initial_kkt;
-    report_.converged = report_.initial_kkt == 0.0 && !update_;
-    const auto criteria = stopping_criteria(qp_, options_, x_, update_ != nullptr);
-    double kkt_at_update = report_.initial_kkt;
+    report_.converged = report_.initial_kkt == 0.0;
+    const auto criteria = stopping_criteria(qp_, options_, x_, coulomb_ != nullptr);
     for (int k = 1; k <= options_.max_iterations && !report_.converged; ++k) {
       if (stopped_by_observer()) break;
       const IterationRecord rec = iterate(k);
@@ -127,10 +125,9 @@ class IterationLoop {
           break;
         }
       const bool met = report_.converged_by != ConvergedBy::kNone;
-      if (update_ && (met || rec.kkt_residual <= kUpdateReduction * kkt_at_update)) {
-        kkt_at_update = rec.kkt_residual;
-        if (update_problem() > update_->update_tolerance) report_.converged_by = ConvergedBy::kNone;
-      }
+      if (coulomb_ && (met || coulomb_->due(k, frozen_kkt_, rec.kkt_residual)) &&
+          update_problem(k) > options_.friction_tolerance)
+        report_.converged_by = ConvergedBy::kNone;
       report_.converged = report_.converged_by != ConvergedBy::kNone;
     }
     if (report_.converged && report_.converged_by == ConvergedBy::kNone)
@@ -147,15 +144,11 @@ class IterationLoop {
   }
 
   /// Iteration k: the step, the acceleration, the residual recomputed, the checks, the record.
-  /// The update of the problem at x (Coulomb's slip bounds), x clipped to the new bounds:
-  /// returns its relative change.
-  double update_problem() {
-    const double change = update_->update(x_);
+  /// Coulomb's slip bounds from x after iteration k (coulomb_update.hpp): returns their
+  /// relative change.
+  double update_problem(int k) {
+    const double change = coulomb_->apply(k, x_, r_, frozen_kkt_);
     report_.update_changes.push_back(change);
-    qp_.clip(x_);
-    symmetric_multiply(qp_.A, x_, r_);
-    r_ = qp_.b - r_;
-    if (sides_) sides_->choose(x_, r_);
     active_ = qp_.active_set(x_);
     return change;
   }
@@ -203,7 +196,12 @@ class IterationLoop {
     rec.kkt_residual = qp_.kkt_residual(x_, r_);
     if (sides_) {
       rec.energy += sides_->energy_offset();
-      rec.kkt_residual = sides_->kkt_residual(x_, r_, rec.kkt_residual);
+      const double sided = rec.kkt_residual;
+      rec.kkt_residual = sides_->kkt_residual(x_, r_, sided);
+      // With Coulomb friction the measure is the residual of Coulomb's law, the bounds' own
+      // (the frozen problem's is kept for the update's schedule).
+      frozen_kkt_ = rec.kkt_residual;
+      if (coulomb_ && !coulomb_->newton()) rec.kkt_residual = coulomb_->residual(x_, r_, sided);
     }
     // A NaN compares false with every tolerance and would pass a stopping test as met.
     if (!std::isfinite(rec.kkt_residual) || !std::isfinite(rec.energy))
@@ -218,7 +216,8 @@ class IterationLoop {
 
   const BoxQp& qp_;
   KinkSides* sides_;
-  const KinkedProblem* update_;
+  CoulombUpdate* coulomb_;
+  double frozen_kkt_ = 0.0;  ///< the kinked residual with the current (frozen) bounds
   IterationStep& step_;
   const SolverOptions& options_;
   const SolverObserver& observer_;
@@ -270,7 +269,7 @@ namespace {
 SolverReport solve_from_start(const BoxQp& qp, const LevelHierarchy& hierarchy,
                               const SolverOptions& options, const SolverObserver& observer,
                               Vector& x, std::shared_ptr<GalerkinChain> chain, KinkSides* sides,
-                              const KinkedProblem* kinked) {
+                              CoulombUpdate* coulomb) {
   SolverReport report;
   const auto t_setup = Clock::now();
   start_feasible(qp, x);
@@ -290,7 +289,7 @@ SolverReport solve_from_start(const BoxQp& qp, const LevelHierarchy& hierarchy,
     });
   report.setup_s = seconds_since(t_setup);
   report.setup_mib = peak_rss_mib();
-  IterationLoop(qp, *step, options, observer, x, report, sides, kinked).run();
+  IterationLoop(qp, *step, options, observer, x, report, sides, coulomb).run();
   summarise(options, *step, report);
   return report;
 }
@@ -298,7 +297,7 @@ SolverReport solve_from_start(const BoxQp& qp, const LevelHierarchy& hierarchy,
 /// The Galerkin chain (mmg, tnnmg; checked for definiteness when asked), then the solve.
 SolverReport solve_with_new_chain(const BoxQp& qp, const LevelHierarchy& hierarchy,
                                   const SolverOptions& options, const SolverObserver& observer,
-                                  Vector& x, KinkSides* sides, const KinkedProblem* kinked) {
+                                  Vector& x, KinkSides* sides, CoulombUpdate* coulomb) {
   const bool multilevel = is_multilevel(options.method);
   const auto t0 = Clock::now();
   std::shared_ptr<GalerkinChain> chain;
@@ -314,7 +313,8 @@ SolverReport solve_with_new_chain(const BoxQp& qp, const LevelHierarchy& hierarc
   }
   const double chain_s = seconds_since(t0);
   const double chain_mib = multilevel ? peak_rss_mib() : 0.0;
-  SolverReport report = solve_from_start(qp, hierarchy, options, observer, x, chain, sides, kinked);
+  SolverReport report =
+      solve_from_start(qp, hierarchy, options, observer, x, chain, sides, coulomb);
   report.setup_s += chain_s;
   report.chain_mib = chain_mib;
   return report;
@@ -341,7 +341,13 @@ SolverReport solve_kinked_qp(BoxQp& qp, const KinkedProblem& kinked,
   if (options.method == SolverMethod::kTnnmg)
     throw std::invalid_argument("solver.method tnnmg does not handle friction");
   KinkSides sides(qp, *kinked.kinks, options.method == SolverMethod::kPdas);
-  return solve_with_new_chain(qp, hierarchy, options, observer, x, &sides, &kinked);
+  std::optional<CoulombUpdate> coulomb;
+  if (kinked.coulomb)
+    coulomb.emplace(qp, *kinked.coulomb, *kinked.kinks, sides,
+                    options.method == SolverMethod::kPdas ? CoulombSchedule::newton_schedule()
+                                                          : kinked.schedule);
+  return solve_with_new_chain(qp, hierarchy, options, observer, x, &sides,
+                              coulomb ? &*coulomb : nullptr);
 }
 
 }  // namespace fosls

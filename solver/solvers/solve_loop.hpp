@@ -9,8 +9,10 @@
 #include <vector>
 
 #include "core/box_qp.hpp"
+#include "core/friction_law.hpp"
 #include "core/kinks.hpp"
 #include "core/level_hierarchy.hpp"
+#include "solvers/coulomb_update.hpp"
 #include "solvers/iteration_record.hpp"
 #include "solvers/multilevel_cycle.hpp"
 #include "solvers/stopping_criterion.hpp"
@@ -100,16 +102,13 @@ struct SolverReport {
   std::vector<double> update_changes;
 };
 
-/// A change of the problem with its own solution (Coulomb friction: the slip bounds from the
-/// normal stress, docs/method.md §8): sets the QP's bounds and kink weights for x and returns
-/// the largest relative change.
-using ProblemUpdate = std::function<double(const Vector& x)>;
-
 /// The non-smooth parts of a frictional solve.
 struct KinkedProblem {
-  const Kinks* kinks = nullptr;
-  ProblemUpdate update;  ///< empty for fixed bounds (Tresca)
-  double update_tolerance = 1e-6;
+  Kinks* kinks = nullptr;
+  /// Coulomb friction: the frictional edges whose slip bounds follow the iterate
+  /// (coulomb_update.hpp); null for fixed bounds (Tresca).
+  const FrictionLayout* coulomb = nullptr;
+  CoulombSchedule schedule;
 };
 
 /// The solve loop: minimises the bound-constrained QP from x (projected onto the bounds
@@ -121,10 +120,11 @@ SolverReport solve_box_qp(const BoxQp& qp, const LevelHierarchy& hierarchy,
 
 /// solve_box_qp for J + Σ w_k |x_k − o_k| (docs/method.md §8): methods mmg, pdas and pgs. The
 /// QP's b and bounds change at the kinked DOFs during the solve (kink_sides.hpp) and are
-/// restored; the bounds an update sets stay. With an update, it is called whenever the KKT
-/// residual has fallen by the factor kUpdateReduction since the last one and whenever a
-/// stopping criterion is met; the solve converges when a criterion is met and the update then
-/// changes no bound by more than update_tolerance.
+/// restored; the bounds Coulomb's updates set stay. With Coulomb friction the bounds follow the
+/// iterate (coulomb_update.hpp: at the start, as the schedule says and whenever a stopping
+/// criterion is met), the stopping criteria measure the Coulomb residual, and the solve
+/// converges when a criterion is met and the update then changes no bound by more than
+/// options.friction_tolerance.
 SolverReport solve_kinked_qp(BoxQp& qp, const KinkedProblem& kinked,
                              const LevelHierarchy& hierarchy, const SolverOptions& options,
                              const SolverObserver& observer, Vector& x);

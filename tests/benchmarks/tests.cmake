@@ -15,3 +15,7 @@ target_link_libraries(fosls-bench-order2 PRIVATE fosls_internals)
 # Three dimensions, stage 1: the multilevel method per level (docs/performance.md, "3D").
 add_executable(fosls-bench-3d ${CMAKE_CURRENT_LIST_DIR}/tet_linear.cpp)
 target_link_libraries(fosls-bench-3d PRIVATE fosls_internals)
+
+# Coulomb friction: the fixed point of the slip bounds measured (docs/performance.md, "Friction").
+add_executable(coulomb-lab ${CMAKE_CURRENT_LIST_DIR}/coulomb_lab.cpp)
+target_link_libraries(coulomb-lab PRIVATE fosls_internals)
