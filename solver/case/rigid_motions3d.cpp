@@ -72,12 +72,19 @@ std::optional<CaseError> check_rigid_motions(const CaseSpec& spec, const TetMesh
       gram.noalias() += row * row.transpose();
     }
   }
-  const Eigen::SelfAdjointEigenSolver<Matrix6> eigen(gram);
-  const double largest = std::max(eigen.eigenvalues()[5], 1.0);
+  // Each motion measured against what its own conditions can say (a symmetric scaling to unit
+  // diagonal keeps the null space): on a slender body a rotation about its long axis moves the
+  // held vertices by the thickness only, 10^-5 of the diameter for a 10^5 × 1 × 1 box, and its
+  // condition must not be taken for zero next to the translations'.
+  Vector6 unit = Vector6::Ones();
+  for (int k = 0; k < 6; ++k)
+    if (gram(k, k) > 0) unit[k] = 1.0 / std::sqrt(gram(k, k));
+  const Matrix6 scaled = unit.asDiagonal() * gram * unit.asDiagonal();
+  const Eigen::SelfAdjointEigenSolver<Matrix6> eigen(scaled);
   std::vector<std::string> free;
   for (int k = 0; k < 6; ++k) {
-    if (eigen.eigenvalues()[k] > 1e-10 * largest) continue;
-    Vector6 m = eigen.eigenvectors().col(k);
+    if (eigen.eigenvalues()[k] > 1e-10) continue;
+    Vector6 m = unit.asDiagonal() * eigen.eigenvectors().col(k);
     m.head<3>() *= scale;
     free.push_back(describe_motion(m, centre));
   }
