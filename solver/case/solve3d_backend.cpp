@@ -6,6 +6,7 @@
 
 #include <chrono>
 #include <cmath>
+#include <sstream>
 
 #include "assembly/discretization.hpp"
 #include "case/case3d_result.hpp"
@@ -15,6 +16,7 @@
 #include "case/expression.hpp"
 #include "case/mesh_factory.hpp"
 #include "case/solve3d_checks.hpp"
+#include "core/indefinite_system.hpp"
 #include "core/non_finite.hpp"
 #include "mesh/gmsh_mesh.hpp"
 #include "mesh/length_scale.hpp"
@@ -27,6 +29,10 @@
 namespace fosls {
 
 namespace {
+
+/// Below this ratio of its smallest to its largest extent an indefinite matrix is put down to
+/// the body's thinness rather than the weights (a 1 x 1 x 1e-9 plate fails; 1e-3 solves).
+constexpr double kThinnestBody = 1e-6;
 
 using nlohmann::json;
 using Clock = std::chrono::steady_clock;
@@ -125,6 +131,32 @@ ProblemData<3> problem_data(const CaseSpec& spec, const TetMesh& mesh) {
   return d;
 }
 
+/// A FOSLS matrix that is not positive definite in 3D: a body too thin for double precision
+/// (its stiffness across and along differ by more than it can hold), or the weights.
+CaseException indefinite_3d(const CaseSpec& spec, const TetMesh& mesh) {
+  Point3 lo = mesh.vertex(0), hi = mesh.vertex(0);
+  for (int v = 1; v < mesh.num_vertices(); ++v) {
+    lo = lo.cwiseMin(mesh.vertex(v));
+    hi = hi.cwiseMax(mesh.vertex(v));
+  }
+  const Point3 extent = hi - lo;
+  const double thinness = extent.minCoeff() / extent.maxCoeff();
+  std::ostringstream m;
+  if (thinness < kThinnestBody) {
+    m << "the body is " << extent.minCoeff() << " thin and " << extent.maxCoeff()
+      << " across (a ratio of " << thinness
+      << "): its FOSLS matrix is not positive definite in double precision. Model a body this "
+         "thin as a plate or a 2D case, or make it thicker";
+    return CaseException("/mesh", m.str());
+  }
+  const Weights& w = spec.weights;
+  m << "the weights c1 = " << w.c1 << ", c2 = " << w.c2 << ", c3 = " << w.c3 << ", c4 = " << w.c4
+    << " make the FOSLS matrix not positive definite (the contact term c3 is too large relative "
+       "to c1 and c2: give a smaller c3); with null displacement components, also check that "
+       "the dirichlet groups leave no rigid motion";
+  return CaseException("/weights", m.str());
+}
+
 }  // namespace
 
 std::vector<CaseError> check_3d_mesh(const CaseSpec& spec, const CaseLimits& limits) {
@@ -157,8 +189,7 @@ RunOutput run_3d_point(const CaseSpec& spec, const RunControl& control, const Ca
 
   const auto t1 = Clock::now();
   ProblemData<3> data = problem_data(used, meshes.finest());
-  const Discretization<3> disc(std::move(meshes), std::move(data));
-  deadline.check("assembling the finest level");
+  const Discretization<3> disc(std::move(meshes), std::move(data), deadline);
   const double assembly_s = seconds_since(t1);
 
   const auto t2 = Clock::now();
@@ -179,6 +210,8 @@ RunOutput run_3d_point(const CaseSpec& spec, const RunControl& control, const Ca
     report = solve_box_qp(qp, levels, spec.solver, observer, x);
   } catch (const NonFiniteError& e) {
     throw CaseException({non_finite_problem(e.what())});
+  } catch (const IndefiniteSystemError&) {
+    throw indefinite_3d(used, disc.meshes().finest());
   }
   const double solve_s = seconds_since(t2);
 
