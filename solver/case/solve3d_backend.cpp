@@ -45,9 +45,12 @@ double seconds_since(Clock::time_point t0) {
 TetMesh coarse_mesh(const MeshSpec& m) {
   try {
     switch (m.kind) {
-      case MeshSpec::Kind::kBuiltin:
-        return m.builtin == "box" ? make_box(m.box_cells, m.box_lengths)
-                                  : make_half_ball(m.half_ball);
+      case MeshSpec::Kind::kBuiltin: {
+        auto mesh = builtin_3d_mesh(m);
+        if (auto* errors = std::get_if<std::vector<CaseError>>(&mesh))
+          throw CaseException(std::move(*errors));
+        return std::move(std::get<TetMesh>(mesh));
+      }
       case MeshSpec::Kind::kMsh:
         return tet_mesh_from_msh(m.msh_text);
       case MeshSpec::Kind::kGeoFile:
@@ -61,10 +64,6 @@ TetMesh coarse_mesh(const MeshSpec& m) {
       errors.push_back(
           {p.field == "/size" ? std::string("/mesh/size") : mesh_source_pointer(m), p.detail});
     throw CaseException(std::move(errors));
-  } catch (const std::invalid_argument& e) {  // the half ball's grading folds a tetrahedron
-    throw CaseException(mesh_source_pointer(m),
-                        std::string("these parameters give no valid mesh (") + e.what() +
-                            "); use a smaller grading or fewer cells");
   }
   throw CaseException(mesh_source_pointer(m), "unknown mesh source");
 }

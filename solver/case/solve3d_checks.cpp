@@ -12,7 +12,9 @@
 #include "case/mesh_factory.hpp"
 #include "case/rigid_motions3d.hpp"
 #include "mesh/mesh_error.hpp"
+#include "mesh/tet_half_ball.hpp"
 #include "mesh/tet_msh_reader.hpp"
+#include "mesh/tet_refinement.hpp"
 
 namespace fosls {
 
@@ -39,7 +41,22 @@ std::variant<TetMesh, std::vector<CaseError>> msh_mesh(const MeshSpec& m) {
   }
 }
 
+/// Builtins up to this many coarse unknowns are built at admission (a fraction of a second), so
+/// that what their parameters alone decide — a grading that folds a tetrahedron, dirichlet groups
+/// that leave a rigid motion — is refused before the job is queued.
+constexpr double kBuiltAtAdmission = 200000;
+
 }  // namespace
+
+std::variant<TetMesh, std::vector<CaseError>> builtin_3d_mesh(const MeshSpec& m) {
+  try {
+    return m.builtin == "box" ? make_box(m.box_cells, m.box_lengths) : make_half_ball(m.half_ball);
+  } catch (const std::invalid_argument& e) {  // the half ball's grading folds a tetrahedron
+    return std::vector<CaseError>{
+        {mesh_source_pointer(m), std::string("these parameters give no valid mesh (") + e.what() +
+                                     "); use a smaller grading or fewer cells"}};
+  }
+}
 
 std::optional<double> builtin_3d_unknowns(const MeshSpec& m) {
   if (m.kind == MeshSpec::Kind::kBuiltin) return builtin_coarse_unknowns(m);
@@ -179,6 +196,13 @@ Mesh3dCount count_3d_mesh(const CaseSpec& spec) {
     out.errors = check_3d_groups(spec, built);
     coarse = tet_mesh_unknowns(built);
     exact = true;
+  } else if (coarse && *coarse <= kBuiltAtAdmission) {
+    auto mesh = builtin_3d_mesh(m);
+    if (auto* errors = std::get_if<std::vector<CaseError>>(&mesh)) {
+      out.errors = std::move(*errors);
+      return out;
+    }
+    out.errors = check_3d_groups(spec, std::get<TetMesh>(mesh));
   }
   if (coarse)
     out.count = ProblemCount{std::llround(finest_3d_unknowns(*coarse, m.refinements)),

@@ -7,6 +7,7 @@
 
 #include <optional>
 #include <string>
+#include <variant>
 #include <vector>
 
 #include "case/case_error.hpp"
@@ -37,11 +38,16 @@ double finest_3d_unknowns(double coarse_unknowns, int refinements);
 
 /// What admission knows of a 3D case's mesh without building a builtin or running gmsh: a
 /// builtin's estimated count, an msh text's exact one (its mesh read, its problems and its
-/// groups' checked: `errors`); nothing for a geo_file.
+/// groups' checked: `errors`; a small builtin is built and checked the same way); nothing for a
+/// geo_file.
 struct Mesh3dCount {
   std::vector<CaseError> errors;
   std::optional<ProblemCount> count;
 };
 Mesh3dCount count_3d_mesh(const CaseSpec& spec);
+
+/// A builtin's coarse mesh (box or half ball), or why its parameters give none, at the mesh
+/// source's pointer.
+std::variant<TetMesh, std::vector<CaseError>> builtin_3d_mesh(const MeshSpec& m);
 
 }  // namespace fosls

@@ -32,8 +32,10 @@ int main(int argc, char** argv) {
   use_one_malloc_arena();
   keep_freed_memory();
   try {
-    CLI::App app{"FOSLS solver for 2D frictionless elastic contact (Signorini problems)",
-                 "fosls-contact"};
+    CLI::App app{
+        "FOSLS solver for elastic contact with a rigid obstacle, 2D and 3D, with or without "
+        "friction",
+        "fosls-contact"};
     app.require_subcommand(1);
     int exit_code = kExitOk;
     add_solve_command(app, exit_code);
