@@ -4,6 +4,7 @@
 #include <cmath>
 #include <limits>
 #include <map>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -121,6 +122,29 @@ std::string where(const Point3& x) {
          sentence_number(x.z()) + ")";
 }
 
+/// 2D's contact_zone_underresolved for a zone that is a patch of faces: its diameter 2a, a the
+/// radius of the disc of its area, spans fewer than kResolvedZoneEdges face sizes h (a face of
+/// area A has h = √(2A), a right triangle's leg). Only a zone with a front, not a whole contact
+/// group in contact, whose edges the mesh gives exactly.
+std::optional<ResultWarning> zone_resolution_warning(const ContactSummary& c) {
+  if (c.faces_in_contact == 0 || c.faces_in_contact == c.faces) return std::nullopt;
+  const double radius = std::sqrt(c.area / M_PI);
+  const double h = std::sqrt(2.0 * c.area / c.faces_in_contact);
+  const double across = 2.0 * radius / h;
+  if (across >= kResolvedZoneEdges) return std::nullopt;
+  return ResultWarning{
+      "contact_zone_underresolved",
+      "the contact zone is resolved by only " + std::to_string(c.faces_in_contact) +
+          " faces: its diameter 2√(area/π) = " + sentence_number(2.0 * radius) + " spans about " +
+          sentence_number(across, 2) + " faces of size " + sentence_number(h) +
+          ", so its edge is known to about one face, the radius only to about ±" +
+          sentence_number(100.0 * h / radius, 2) +
+          " %, and the peak pressure less well than the force. Refine the mesh near the contact "
+          "(a smaller mesh size there, more mesh.refinements) until it spans at least " +
+          std::to_string(kResolvedZoneEdges) + " faces across",
+      false};
+}
+
 /// The contact warnings 2D gives for the same findings, with the same codes; overlaps below
 /// kTouchingOverlap of the body's size are touching, as in 2D.
 std::vector<ResultWarning> contact_warnings(const CaseSpec& spec, const TetMesh& mesh,
@@ -140,6 +164,7 @@ std::vector<ResultWarning> contact_warnings(const CaseSpec& spec, const TetMesh&
                             " if this is not meant (an indentation belongs in the obstacle's "
                             "displacement or the body's)",
                         true});
+  if (auto w = zone_resolution_warning(c)) warnings.push_back(*w);
   if (c.faces_in_contact == 0) {
     const SmallestGap moved = smallest_gap(spec, mesh, false);
     warnings.push_back(

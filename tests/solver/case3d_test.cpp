@@ -73,10 +73,13 @@ TEST(Case3d, HertzForceIsAThreeVectorAndMmgAgreesWithPdas) {
   EXPECT_LT(fz, 1.15 * testing::hertz_force_3d(1.0));
   EXPECT_LE(mmg["iterations"].get<int>(), 40);
   EXPECT_GT(mmg["contact"]["faces_in_contact"].get<int>(), 0);
-  // The solver's own warnings are 2D's: on the curved contact boundary a coarse correction may
-  // be shortened (informational); nothing that questions the answer.
+  // The warnings are 2D's: on the curved contact boundary a coarse correction may be shortened,
+  // and this coarse mesh resolves the zone by a few faces (both informational); nothing that
+  // questions the answer.
   for (const auto& w : mmg["warning_details"]) {
-    EXPECT_EQ(w["code"], "coarse_corrections_shortened") << w.dump();
+    EXPECT_TRUE(w["code"] == "coarse_corrections_shortened" ||
+                w["code"] == "contact_zone_underresolved")
+        << w.dump();
     EXPECT_FALSE(w["review"].get<bool>());
   }
   EXPECT_FALSE(mmg["review_required"].get<bool>());
@@ -191,6 +194,25 @@ TEST(Case3d, ABoxCompressedOntoAPlaneIsExactlyUniaxial) {
   EXPECT_EQ(c["faces_in_contact"].get<int>(), c["faces"].get<int>());
   EXPECT_NEAR(c["area"].get<double>(), 1.0, 1e-12);
   EXPECT_EQ(r["tetrahedra"].get<int>(), 6 * 8 * 8);
+  // The whole contact group is in contact: its edges are the mesh's, nothing under-resolved.
+  EXPECT_TRUE(r["warning_details"].empty()) << r["warning_details"].dump();
+}
+
+// 2D's contact_zone_underresolved in 3D: hertz_3d at refinements 0 touches with 8 faces (its
+// force 36 % below the ball's own, issue 47's user got no hint of it), at 2 with 48; the warning
+// says so and asks for no review.
+TEST(Case3d, AZoneOfAFewFacesIsWarnedAsUnderresolved) {
+  for (int refinements : {0, 2}) {
+    const json r = run(testing::hertz_3d(refinements));
+    bool warned = false;
+    for (const auto& w : r["warning_details"])
+      if (w["code"] == "contact_zone_underresolved") {
+        warned = true;
+        EXPECT_FALSE(w["review"].get<bool>());
+        EXPECT_NE(w["message"].get<std::string>().find("faces"), std::string::npos);
+      }
+    EXPECT_TRUE(warned) << "refinements " << refinements << ": " << r["warning_details"].dump();
+  }
 }
 
 TEST(Case3d, AdmissionEstimatesABuiltinsSizeBeforeItIsBuilt) {
