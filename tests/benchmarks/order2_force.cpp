@@ -12,17 +12,14 @@
 #include <cmath>
 #include <fstream>
 #include <iostream>
+#include <memory>
 #include <nlohmann/json.hpp>
 
-#include "assembly/contact_weight.hpp"
+#include "../case_discretization.hpp"
 #include "assembly/discretization.hpp"
 #include "assembly/p2_rt1_assembler.hpp"
 #include "assembly/p2_rt1_level.hpp"
-#include "case/case_problem_data.hpp"
 #include "case/case_reader.hpp"
-#include "case/mesh_factory.hpp"
-#include "mesh/length_scale.hpp"
-#include "mesh/refinement.hpp"
 #include "solvers/pdas_step.hpp"
 #include "solvers/solve_loop.hpp"
 
@@ -53,13 +50,9 @@ int main(int argc, char** argv) {
   }
   CaseSpec spec = *read.spec;
   const auto t0 = Clock::now();
-  Mesh coarse = build_coarse_mesh(spec.mesh);
-  spec.weights.length_scale = length_scale(coarse);
-  ProblemData<2> data = problem_data(spec, coarse);
-  MeshHierarchy meshes = build_mesh_hierarchy(std::move(coarse), spec.mesh.refinements);
-  if (spec.weights.c3_auto)
-    data.weights.c3 = automatic_contact_weight(contact_weight_limit(meshes, data));
-  const Discretization<2> lowest(std::move(meshes), data);
+  const std::unique_ptr<Discretization<2>> discretization = testing::case_discretization(spec);
+  const Discretization<2>& lowest = *discretization;
+  const ProblemData<2>& data = lowest.data();
   const P2Rt1Space space(lowest.meshes().finest(), data.boundary_roles());
   const P2Rt1Assembler assembler(space, data);
   const AssembledProblem problem = assembler.assemble_system();
