@@ -22,12 +22,6 @@ constexpr Section kComing[] = {
      "a requested force accuracy is 2D only for now: its levels and its estimate of the force's "
      "error come to 3D with the one finite-element stack; compare the force over "
      "mesh.refinements (fosls-contact bench)"},
-    {"load_steps",
-     "load steps are 2D only for now (they come to 3D with the one finite-element stack); "
-     "solve each state as a case of its own"},
-    {"sweep",
-     "sweeps are 2D only for now (they come to 3D with the one finite-element stack); solve "
-     "each value as a case of its own"},
 };
 
 void check_contact(const std::string& name, const BoundaryCondition& bc,

@@ -93,6 +93,9 @@ std::vector<FieldRule> solution3d_fields() {
                        "the FOSLS functional at the solution"),
           output_field("contact", object_value(contact3d_rule()), "",
                        "the contact output (zeros when the case has no contact group)"),
+          optional_field("message", text(), nullptr,
+                         "why a run of load steps or sweep points did not converge or stopped "
+                         "early (also in warnings), as in 2D"),
           output_field("warnings", list_value(text(), "list of sentences"), "",
                        "what the user should know: the messages of warning_details, in order"),
           output_field(
@@ -116,6 +119,13 @@ std::vector<FieldRule> solution3d_fields() {
 ObjectRulePtr result3d_rule() {
   std::vector<FieldRule> fields = outcome3d_fields();
   for (FieldRule& f : solution3d_fields()) fields.push_back(std::move(f));
+  // The series of solves as in 2D; a load step's fields are the 3D result's.
+  fields.push_back(optional_field(
+      "sweep", object_value(sweep_result_rule(choice_value(stop_reason_names()), 3)), nullptr,
+      "a case with a sweep: every point's force and convergence, as in 2D"));
+  fields.push_back(
+      optional_field("load_steps", object_value(load_steps_result_rule(fields, 3)), nullptr,
+                     "a case with load steps: every step's result in order, as in 2D"));
   return object_rule("the 3D result", "result3d", std::move(fields));
 }
 

@@ -28,6 +28,10 @@ ObjectRulePtr statistics_rule();
 ObjectRulePtr adaptivity_result_rule();
 /// The `accuracy` object of a run to a requested force accuracy (result_refinement_rules.cpp).
 ObjectRulePtr accuracy_result_rule();
+/// A sweep's object, with its points in `dim` dimensions (result_series_rules.cpp).
+ObjectRulePtr sweep_result_rule(ValueRule reasons, int dim);
+/// The `load_steps` object: every step a result of `result_fields` but its history.
+ObjectRulePtr load_steps_result_rule(const std::vector<FieldRule>& result_fields, int dim);
 /// The stop reasons' names, in the order of StopReason.
 std::vector<std::string> stop_reason_names();
 

@@ -194,7 +194,13 @@ RunOutput run_3d_point(const CaseSpec& spec, const RunControl& control, const Ca
   const auto t2 = Clock::now();
   const BoxQp& qp = disc.problem().qp;
   Vector x = Vector::Zero(qp.size());
-  if (control.start && control.start->size() == qp.size()) x = *control.start;
+  SolverOptions options = spec.solver;
+  // A continued solution (load steps, sweeps) is a better start than the nested iteration would
+  // compute again on the coarser levels, as in 2D.
+  if (control.start && control.start->size() == qp.size()) {
+    x = *control.start;
+    options.nested = false;
+  }
   SolverObserver observer;
   observer.on_iteration = control.on_iteration;
   if (control.cancel)
@@ -206,7 +212,7 @@ RunOutput run_3d_point(const CaseSpec& spec, const RunControl& control, const Ca
   try {
     LevelHierarchy levels = multilevel ? disc.build_level_hierarchy() : LevelHierarchy{};
     deadline.check("building the level hierarchy");
-    report = solve_box_qp(qp, levels, spec.solver, observer, x);
+    report = solve_box_qp(qp, levels, options, observer, x);
   } catch (const NonFiniteError& e) {
     throw CaseException({non_finite_problem(e.what())});
   } catch (const IndefiniteSystemError&) {
