@@ -71,9 +71,10 @@ ObjectRulePtr stopped_before_rule() {
   return object_rule(
       "where load steps stopped", "stopped_before",
       {output_field("step", count(), "1", "the first step not solved"),
-       output_field("reason", choice_value({"time_limit", "step_failed"}), "",
+       output_field("reason", choice_value({"time_limit", "step_failed", "cancelled"}), "",
                     "time_limit: solver.time_limit_s, which bounds the whole run, ran out; "
-                    "step_failed: the step's state could not be solved (the message says why)")});
+                    "step_failed: the step's state could not be solved (the message says why); "
+                    "cancelled: the run (a service job) was cancelled during the step")});
 }
 
 }  // namespace

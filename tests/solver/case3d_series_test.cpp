@@ -40,8 +40,8 @@ json pressed(double depth) {
 TEST(Case3dSeries, LoadStepsPressTheBallAndTheirLastForceIsThePlainSolves) {
   const double plain = force_z(testing::run_3d(pressed(0.01)));
   json j = pressed(0.0025);
-  j["load_steps"] = json::array({{{"/boundary/top/displacement/2", -0.005}},
-                                 {{"/boundary/top/displacement/2", -0.01}}});
+  j["load_steps"] = json::array(
+      {{{"/boundary/top/displacement/2", -0.005}}, {{"/boundary/top/displacement/2", -0.01}}});
   const json r = testing::run_3d(j);
   ASSERT_TRUE(r["converged"].get<bool>()) << r.dump().substr(0, 400);
   EXPECT_EQ(undocumented(r), "");
@@ -80,8 +80,8 @@ TEST(Case3dSeries, AStepThatCannotBeSolvedKeepsTheStepsBeforeIt) {
   json j = pressed(0.005);
   j["weights"]["c3"] = 0.1;  // 3D's default, given so that a step may change it
   // Step 2 makes the matrix indefinite (c3 far too large): only its solve shows it.
-  j["load_steps"] = json::array({{{"/boundary/top/displacement/2", -0.01}},
-                                 {{"/weights/c3", 1e6}}});
+  j["load_steps"] =
+      json::array({{{"/boundary/top/displacement/2", -0.01}}, {{"/weights/c3", 1e6}}});
   const json r = testing::run_3d(j);
   EXPECT_FALSE(r["converged"].get<bool>());
   EXPECT_EQ(r["stop_reason"], "step_failed");
