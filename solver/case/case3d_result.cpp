@@ -237,6 +237,7 @@ json case3d_result(const CaseSpec& spec, const Discretization<3>& disc, const Ve
   r["material"] = {
       {"mu", spec.material.mu},
       {"lambda", spec.material.incompressible() ? json("inf") : json(spec.material.lambda)}};
+  r["weights"] = weights_json(spec.weights);
   r["functional"] = {{"total", parts.total()}, {"estimator", std::sqrt(parts.total())}};
   r["contact"] = {{"force", {c.force.x(), c.force.y(), c.force.z()}},
                   {"max_pressure", c.max_pressure},

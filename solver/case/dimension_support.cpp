@@ -59,12 +59,6 @@ std::vector<CaseError> dimension_support_problems(const nlohmann::json& j, const
          "stopped the Hertz ball 4 % (refinements 2) to 44 % (refinements 1) short of the "
          "converged force, until the 3D functional is scaled like 2D's (its length scale); give "
          "a number, e.g. 1e-8"});
-  const auto& weights = j.value("weights", nlohmann::json::object());
-  if (weights.is_object() && weights.value("c3", nlohmann::json()) == "auto")
-    errors.push_back({"/weights/c3",
-                      "\"auto\" is 2D only for now: it chooses c3 from the definiteness limit "
-                      "of the 2D contact term on the coarse levels, which 3D does not compute "
-                      "yet; give a number (3D's default is 0.1)"});
   for (const auto& [name, bc] : spec.boundary)
     if (bc.type == BoundaryCondition::Type::kContact) check_contact(name, bc, errors);
   return errors;

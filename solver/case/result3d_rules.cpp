@@ -89,6 +89,8 @@ std::vector<FieldRule> outcome3d_fields() {
 std::vector<FieldRule> solution3d_fields() {
   return {output_field("material", object_value(material_echo_rule()), "",
                        "the material as used (μ, λ)"),
+          output_field("weights", object_value(weights_echo_rule()), "",
+                       "the weights as used, as in 2D (c3 chosen when the case gives \"auto\")"),
           output_field("functional", object_value(functional3d_rule()), "",
                        "the FOSLS functional at the solution"),
           output_field("contact", object_value(contact3d_rule()), "",

@@ -23,6 +23,8 @@ ObjectRulePtr history_rule();
 ObjectRulePtr warning_rule();
 ObjectRulePtr material_echo_rule();
 ObjectRulePtr statistics_rule();
+/// The `weights` echo: the weights as used, c3's rule and limit, the length scale.
+ObjectRulePtr weights_echo_rule();
 
 /// The `adaptivity` object of an adaptive run (result_refinement_rules.cpp).
 ObjectRulePtr adaptivity_result_rule();

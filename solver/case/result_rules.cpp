@@ -85,6 +85,26 @@ ObjectRulePtr statistics_rule() {
        output_field("strip_s", number(), "s", "time of the contact-strip solves"),
        output_field("coarse_s", number(), "s", "time of the coarsest-level solves")});
 }
+ObjectRulePtr weights_echo_rule() {
+  std::vector<FieldRule> fields;
+  for (const char* c : {"c1", "c2", "c3", "c4", "c2_volumetric"})
+    fields.push_back(output_field(c, number(), "1", std::string("weight ") + c + " used"));
+  fields.push_back(output_field("c3_rule", choice_value({"auto", "given"}), "",
+                                "\"auto\" when c3 was chosen from the mesh, \"given\" when the "
+                                "case set it"));
+  fields.push_back(output_field(
+      "c3_limit", number_or_null(), "1",
+      "with c3_rule auto: the largest c3 keeping the functional convex on the level it was "
+      "computed on (c3 = min(0.1, c3_limit / 2)); null otherwise, without contact or when "
+      "unbounded"));
+  fields.push_back(output_field(
+      "length_scale", number(), "L",
+      "ℓ, the power of ten nearest to the body's size (2D: the square root of its area, 3D: "
+      "the cube root of its volume): the c1 term is weighted c1 ℓ², so that the weights "
+      "balance the terms whatever the unit of length (docs/method.md §2)"));
+  return object_rule("the weights", "weights_echo", std::move(fields));
+}
+
 }  // namespace result_parts
 
 namespace {
@@ -283,26 +303,6 @@ ObjectRulePtr mesh_echo_rule() {
                       "the builtin geometry (builtin meshes only)"),
        optional_field("params", params, nullptr,
                       "every parameter of the builtin geometry, defaults included")});
-}
-
-ObjectRulePtr weights_echo_rule() {
-  std::vector<FieldRule> fields;
-  for (const char* c : {"c1", "c2", "c3", "c4", "c2_volumetric"})
-    fields.push_back(output_field(c, number(), "1", std::string("weight ") + c + " used"));
-  fields.push_back(output_field("c3_rule", choice_value({"auto", "given"}), "",
-                                "\"auto\" when c3 was chosen from the mesh, \"given\" when the "
-                                "case set it"));
-  fields.push_back(output_field(
-      "c3_limit", number_or_null(), "1",
-      "with c3_rule auto: the largest c3 keeping the functional convex on the level it was "
-      "computed on (c3 = min(0.1, c3_limit / 2)); null otherwise, without contact or when "
-      "unbounded"));
-  fields.push_back(output_field(
-      "length_scale", number(), "L",
-      "ℓ, the power of ten nearest to the square root of the body's area: the c1 term is "
-      "weighted c1 ℓ², so that the weights balance the terms whatever the unit of length "
-      "(docs/method.md §2)"));
-  return object_rule("the weights", "weights_echo", std::move(fields));
 }
 
 ObjectRulePtr timing_rule() {

@@ -8,6 +8,7 @@
 #include <cmath>
 #include <sstream>
 
+#include "assembly/contact_weight.hpp"
 #include "assembly/discretization.hpp"
 #include "case/case3d_result.hpp"
 #include "case/case_admission.hpp"
@@ -151,8 +152,12 @@ CaseException indefinite_3d(const CaseSpec& spec, const TetMesh& mesh) {
   const Weights& w = spec.weights;
   m << "the weights c1 = " << w.c1 << ", c2 = " << w.c2 << ", c3 = " << w.c3 << ", c4 = " << w.c4
     << " make the FOSLS matrix not positive definite (the contact term c3 is too large relative "
-       "to c1 and c2: give a smaller c3); with null displacement components, also check that "
-       "the dirichlet groups leave no rigid motion";
+       "to c1 and c2: "
+    << (w.c3_auto ? "c3 was chosen as half the limit " + std::to_string(w.c3_limit) +
+                        " computed on a coarser level; give a smaller c3 by hand"
+                  : std::string("give a smaller c3, or \"auto\" to have it chosen"))
+    << "); with null displacement components, also check that the dirichlet groups leave no "
+       "rigid motion";
   return CaseException("/weights", m.str());
 }
 
@@ -188,6 +193,12 @@ RunOutput run_3d_point(const CaseSpec& spec, const RunControl& control, const Ca
 
   const auto t1 = Clock::now();
   ProblemData<3> data = problem_data(used, meshes.finest());
+  if (used.weights.c3_auto && has_contact(used)) {
+    // As in 2D: c3 = min(0.1, c3*/2), c3* on the finest level of at most 20 000 unknowns.
+    const ContactWeightLimit limit = contact_weight_limit(meshes, data);
+    used.weights.c3_limit = limit.limit;
+    used.weights.c3 = data.weights.c3 = automatic_contact_weight(limit);
+  }
   const Discretization<3> disc(std::move(meshes), std::move(data), deadline);
   const double assembly_s = seconds_since(t1);
 

@@ -146,7 +146,6 @@ BOTH_REFUSE_3D = [
 READER_ONLY_3D = [
     ("3d_friction", setting("/boundary/bottom/friction", {"coefficient": 0.3})),
     ("3d_tnnmg", setting("/solver/method", "tnnmg")),
-    ("3d_c3_auto", setting("/weights", {"c3": "auto"})),
 ]
 
 BOTH_ACCEPT_3D = [
@@ -157,6 +156,7 @@ BOTH_ACCEPT_3D = [
     ("3d_time_limit", setting("/solver/time_limit_s", 30)),
     ("3d_load_steps", setting("/load_steps", [{"/material/mu": 2}])),
     ("3d_sweep", setting("/sweep", {"pointer": "/material/mu", "values": [1, 2]})),
+    ("3d_c3_auto", setting("/weights", {"c3": "auto"})),
 ]
 
 # Rules only the reader can check.
