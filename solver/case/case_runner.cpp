@@ -139,7 +139,7 @@ RunOutput run_point(const CaseSpec& spec, const RunControl& control, const CaseL
     throw CaseException(std::move(errors));
   CaseSpec used = spec;  // the case with the weights as used
   used.weights.length_scale = length_scale(coarse);
-  ProblemData<2> data = problem_data(used, coarse);
+  ProblemData<2> data = problem_data<2>(used, coarse);
   if (control.reference) data.reference_displacement = *control.reference;
   const Mesh coarse_mesh = coarse;  // small; for the message of indefinite weights
   // The limit counts the whole run: a user sets it for the answer's latency, not the loop's.

@@ -32,11 +32,6 @@ void check_contact(const std::string& name, const BoundaryCondition& bc,
                       "friction is 2D only for now: in 3D the tangential bound is a disc, not a "
                       "box, and the solvers' bounds are boxes; it is coming. Remove friction for "
                       "a frictionless 3D contact"});
-  if (bc.direction == ContactDirection::kObstacleNormal)
-    errors.push_back({child_pointer(at, "direction"),
-                      "obstacle_normal is 2D only for now: a 3D contact is constrained along the "
-                      "body normal (body_normal, the default); the obstacle's normal comes with "
-                      "the 3D contact frames of the one finite-element stack"});
 }
 
 }  // namespace
