@@ -103,6 +103,7 @@ std::vector<FieldRule> solution3d_fields() {
           output_field(
               "warning_details", list_value(object_value(warning_rule()), "one per warning"), "",
               "the warnings with their codes: units_implausible, no_contact, initial_penetration, "
+              "contact_zone_underresolved, tangential_load_frictionless, "
               "roller_overrides_contact and the solver's own as in 2D (not_converged, "
               "time_limit, rounding_level, coarse_corrections_shortened)"),
           output_field("review_required", boolean_value(), "",
