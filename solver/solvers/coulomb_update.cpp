@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 #include "solvers/smoother.hpp"
 
@@ -45,6 +46,9 @@ double CoulombUpdate::apply(int k, Vector& x, Vector& r, double frozen) {
   frozen_at_update_ = frozen;
   if (schedule_.newton) {
     // pdas's iterates may lie outside any bound until its active set is right: all clipped.
+    // Its measure is the frozen problem's residual, which does not bound Coulomb's: the bounds'
+    // change alone decides its convergence.
+    moved_ = std::numeric_limits<double>::infinity();
     const double change = set_friction_bounds(layout_, x, qp_, kinks_);
     qp_.clip(x);
     symmetric_multiply(qp_.A, x, r);
@@ -60,15 +64,18 @@ double CoulombUpdate::apply(int k, Vector& x, Vector& r, double frozen) {
     if (qp_.upper[i] > 0.0 && x[i] <= qp_.lower[i]) slipping[e] = -1;
   }
   const double change = set_friction_bounds(layout_, x, qp_, kinks_);
+  double moved_squared = 0.0;
   for (std::size_t e = 0; e < layout_.edges.size(); ++e) {
     const int i = layout_.edges[e].st;
     const double moved = slipping[e] > 0   ? qp_.upper[i]
                          : slipping[e] < 0 ? qp_.lower[i]
                                            : std::clamp(x[i], qp_.lower[i], qp_.upper[i]);
     if (moved == x[i]) continue;
+    moved_squared += (moved - x[i]) * (moved - x[i]);
     update_residual(qp_.A, i, moved - x[i], r);
     x[i] = moved;
   }
+  moved_ = std::sqrt(moved_squared);
   sides_.choose(x, r);
   return change;
 }

@@ -63,6 +63,11 @@ class CoulombUpdate {
   /// largest bound (1 the first time).
   double apply(int k, Vector& x, Vector& r, double frozen);
 
+  /// ‖Δx‖ of the last update: how far it moved S_t onto the new bounds. Where x met a stopping
+  /// criterion on Coulomb's residual and the update moved it by no more than that residual, the
+  /// updated x is as close to Coulomb's law as the criterion asks, whatever the bounds' change.
+  double moved() const { return moved_; }
+
  private:
   BoxQp& qp_;
   const FrictionLayout& layout_;
@@ -71,6 +76,7 @@ class CoulombUpdate {
   CoulombSchedule schedule_;
   int last_update_ = 0;
   double frozen_at_update_ = 0.0;
+  double moved_ = 0.0;
   mutable std::vector<double> bounds_, weights_;  ///< of the residual's trial bounds
 };
 

@@ -125,8 +125,11 @@ class IterationLoop {
           break;
         }
       const bool met = report_.converged_by != ConvergedBy::kNone;
+      // Met on Coulomb's residual, the update (bounds from x's S_n, slipping S_t moved onto
+      // them) converges the solve if it changed the bounds by friction_tolerance at most, or
+      // moved x by no more than the residual that met the criterion (coulomb_update.hpp).
       if (coulomb_ && (met || coulomb_->due(k, frozen_kkt_, rec.kkt_residual)) &&
-          update_problem(k) > options_.friction_tolerance)
+          update_problem(k) > options_.friction_tolerance && coulomb_->moved() > rec.kkt_residual)
         report_.converged_by = ConvergedBy::kNone;
       report_.converged = report_.converged_by != ConvergedBy::kNone;
     }

@@ -62,7 +62,8 @@ struct SolverOptions {
   /// "Measurements behind choices in the code").
   bool check_definiteness = true;
   /// Coulomb friction: the largest relative change of the slip bounds at the last update for a
-  /// solve to count as converged (docs/method.md §8.4).
+  /// solve to count as converged, unless that update moved the iterate by no more than the
+  /// Coulomb residual that met the stopping criterion (docs/method.md §8.4).
   double friction_tolerance = 1e-6;
 };
 
@@ -124,7 +125,7 @@ SolverReport solve_box_qp(const BoxQp& qp, const LevelHierarchy& hierarchy,
 /// iterate (coulomb_update.hpp: at the start, as the schedule says and whenever a stopping
 /// criterion is met), the stopping criteria measure the Coulomb residual, and the solve
 /// converges when a criterion is met and the update then changes no bound by more than
-/// options.friction_tolerance.
+/// options.friction_tolerance or moves x by no more than the residual that met it.
 SolverReport solve_kinked_qp(BoxQp& qp, const KinkedProblem& kinked,
                              const LevelHierarchy& hierarchy, const SolverOptions& options,
                              const SolverObserver& observer, Vector& x);
