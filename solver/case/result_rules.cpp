@@ -182,7 +182,9 @@ ObjectRulePtr friction_result_rule() {
                     "3 updates)"),
        output_field("last_change", maybe, "1",
                     "the last update's change: within solver.friction_tolerance when the "
-                    "solve converged")});
+                    "solve converged by the bounds' change; mmg may also converge with a larger "
+                    "one, when the last update moved the iterate by no more than the Coulomb "
+                    "residual (docs/method.md §8.4)")});
 }
 
 ObjectRulePtr stick_zone_rule() {

@@ -99,9 +99,11 @@ ObjectRulePtr solver_rule() {
                      "time_limit, or, before it has one, the run fails saying so. The "
                      "service's --max-job-seconds still caps a job"),
       optional_field("friction_tolerance", number_value(Range::open(0, 1)), s.friction_tolerance,
-                     "Coulomb friction: the solve converges only when the last update of the "
-                     "slip bounds 𝔣|σ_nn| changed none by more than this, relative to the "
-                     "largest (docs/method.md §8.4)"),
+                     "Coulomb friction: with mmg, the solve converges when its Coulomb residual "
+                     "meets solver.tolerance and either the last update of the slip bounds "
+                     "𝔣|σ_nn| changed none by more than this, relative to the largest, or it "
+                     "moved the iterate by no more than that residual; pdas uses the first "
+                     "test only (docs/method.md §8.4)"),
       optional_field("smoother", choice_value(smoother_names()),
                      smoother_info(s.multilevel.smoother).name, "the smoother"),
       optional_field("pre_smoothing", smoothing, s.multilevel.pre_smoothing,
