@@ -14,14 +14,6 @@ struct Section {
 };
 
 constexpr Section kComing[] = {
-    {"adaptivity",
-     "adaptive refinement is 2D only for now: the 3D levels are uniform refinements (each "
-     "tetrahedron into 8) until newest-vertex bisection of tetrahedra reaches the case layer; "
-     "refine with mesh.refinements"},
-    {"accuracy",
-     "a requested force accuracy is 2D only for now: its levels and its estimate of the force's "
-     "error come to 3D with the one finite-element stack; compare the force over "
-     "mesh.refinements (fosls-contact bench)"},
     {"load_steps",
      "load steps are 2D only for now (they come to 3D with the one finite-element stack); "
      "solve each state as a case of its own"},

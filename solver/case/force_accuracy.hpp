@@ -6,15 +6,18 @@
 // changes with ratio ρ leaves exactly that much to the limit. A force whose last two changes
 // have opposite signs is not on such a sequence: its estimate is the larger change.
 
-#include <array>
 #include <limits>
 #include <nlohmann/json.hpp>
+#include <string>
 #include <vector>
 
 namespace fosls {
 
-struct CaseSolution;
+struct AdaptiveStepRecord;
 struct AccuracySpec;
+
+/// A force's components: 2 in 2D, 3 in 3D.
+using ForceComponents = std::vector<double>;
 
 /// The ratio assumed before one is observed: the slowest the limits allow (order one in h, as
 /// near re-entrant corners), so that two levels never claim more than the last change.
@@ -44,14 +47,19 @@ struct ForceErrorEstimate {
 
 /// The estimate after the last of `forces`, one per level, coarsest first, each level a uniform
 /// refinement of the one before. None with one level or a zero last force.
-ForceErrorEstimate estimate_force_error(const std::vector<std::array<double, 2>>& forces);
+ForceErrorEstimate estimate_force_error(const std::vector<ForceComponents>& forces);
 
 /// Why the run stops after the last of `forces` (`reached`; `no_force` when it and the level
 /// before are zero), or empty to refine on.
 std::string accuracy_stop_reason(const ForceErrorEstimate& e, const AccuracySpec& spec,
-                                 const std::vector<std::array<double, 2>>& forces);
+                                 const std::vector<ForceComponents>& forces);
 
-/// The result's `accuracy` object (docs/result-format.md).
-nlohmann::json accuracy_json(const CaseSolution& solution, const AccuracySpec& spec);
+/// The result's `accuracy` object (docs/result-format.md) from the loop's levels and why it
+/// stopped (the template of adaptive_runner.hpp takes them from a solution).
+nlohmann::json accuracy_json(const std::vector<AdaptiveStepRecord>& steps,
+                             const std::string& stop_reason, const AccuracySpec& spec);
+
+/// |F|: std::hypot of the 2 or 3 components (2D's hypot(x, y) exactly).
+double force_norm(const ForceComponents& f);
 
 }  // namespace fosls

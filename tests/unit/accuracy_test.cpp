@@ -18,7 +18,7 @@ namespace {
 
 using nlohmann::json;
 using testing::has_error;
-using Forces = std::vector<std::array<double, 2>>;
+using Forces = std::vector<ForceComponents>;
 
 /// F_k = F∞ + C ρ^(−k): the error at level k is C ρ^(−k).
 Forces geometric(double limit, double c, double rho, int levels) {
