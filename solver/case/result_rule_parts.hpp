@@ -24,10 +24,10 @@ ObjectRulePtr warning_rule();
 ObjectRulePtr material_echo_rule();
 ObjectRulePtr statistics_rule();
 
-/// The `adaptivity` object of an adaptive run (result_refinement_rules.cpp).
-ObjectRulePtr adaptivity_result_rule();
+/// The `adaptivity` object of an adaptive run (result_refinement_rules.cpp) of dimension dim.
+ObjectRulePtr adaptivity_result_rule(int dim = 2);
 /// The `accuracy` object of a run to a requested force accuracy (result_refinement_rules.cpp).
-ObjectRulePtr accuracy_result_rule();
+ObjectRulePtr accuracy_result_rule(int dim = 2);
 /// The stop reasons' names, in the order of StopReason.
 std::vector<std::string> stop_reason_names();
 
