@@ -35,6 +35,11 @@ std::string estimate_text(const std::vector<AdaptiveStepRecord>& steps) {
   if (steps.empty()) return "no level solved";
   const ForceErrorEstimate& e = steps.back().force_error;
   if (e.available()) return "the estimated relative error of the force is " + num(e.estimate);
+  if (e.growing)
+    return "no error estimate: the force's change grew from " +
+           num(steps[steps.size() - 2].force_error.change) + " to " + num(e.change) +
+           " in the last level, so the levels are not yet where the change shrinks by a steady "
+           "ratio and predicts the error";
   for (auto s = steps.rbegin() + 1; s != steps.rend(); ++s)
     if (s->force_error.available())
       return "the last level has no estimate (its solve did not converge); the level before, "
@@ -91,6 +96,9 @@ ForceErrorEstimate estimate_force_error(const std::vector<ForceComponents>& forc
   if (along(forces[k - 1], forces[k - 2]) * along(forces[k - 2], forces[k - 3]) < 0) {
     e.monotone = false;
     e.estimate = std::max(change, previous) / size;
+  } else if (change > previous) {
+    e.growing = true;
+    e.estimate = ForceErrorEstimate::kNone;
   }
   return e;
 }

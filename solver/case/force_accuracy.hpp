@@ -4,7 +4,8 @@
 // is the ratio by which the change shrinks per refinement — the ratio of the last two changes
 // once three levels are solved, limited to [2, 4], and 2 before. A geometric sequence of
 // changes with ratio ρ leaves exactly that much to the limit. A force whose last two changes
-// have opposite signs is not on such a sequence: its estimate is the larger change.
+// have opposite signs is not on such a sequence: its estimate is the larger change. A force whose
+// change grew (monotonically) is not yet on one either: it has no estimate until it shrinks.
 
 #include <limits>
 #include <nlohmann/json.hpp>
@@ -41,6 +42,11 @@ struct ForceErrorEstimate {
   /// converging monotonically (errors of two signs cancel in a change), and the estimate is the
   /// larger of the two changes instead.
   bool monotone = true;
+  /// The last change is larger than the one before, on a monotone sequence: the levels are not
+  /// yet where the change shrinks geometrically, and change / (ρ − 1) with the clamped ρ would
+  /// understate the error (hertz_3d's uniform refinement 3: 2.3 % claimed, 4.6 % true;
+  /// docs/validation.md §16). No estimate then: the loop refines on before it claims.
+  bool growing = false;
   double estimate = kNone;  ///< the estimated relative error of |F_k|; NaN: none yet
   bool available() const { return estimate == estimate; }
 };

@@ -170,6 +170,8 @@ void print_result_summary_3d(std::ostream& out, const json& r) {
         << " faces)\n";
   out << "  error estimator     J^1/2 = " << g(r["functional"]["estimator"], 3)
       << " (scaled units)\n";
+  if (r.contains("adaptivity")) print_adaptivity(out, r["adaptivity"]);
+  if (r.contains("accuracy")) print_accuracy(out, r["accuracy"]);
   print_review(out, r);
 }
 

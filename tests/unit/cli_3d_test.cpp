@@ -180,6 +180,9 @@ json solved_hertz_3d(const std::function<void(json&)>& change) {
   change(j);
   const CliRun solve = fosls_contact({"solve", "-"}, j.dump());
   EXPECT_EQ(solve.exit_code, 0) << solve.err;
+  // The summary says how the loop ended, as 2D's does.
+  if (j.contains("adaptivity")) EXPECT_NE(solve.err.find("adaptive run "), std::string::npos);
+  if (j.contains("accuracy")) EXPECT_NE(solve.err.find("force accuracy "), std::string::npos);
   return solve.out.empty() ? json::object() : json::parse(solve.out);
 }
 
