@@ -88,12 +88,20 @@ JobRunOutcome failed(const std::string& error) {
   return outcome;
 }
 
-/// A finished run: its result and VTU, or nothing when it was cancelled.
+std::string text_of(const nlohmann::json& result) {
+  return result.dump(-1, ' ', false, nlohmann::json::error_handler_t::replace);
+}
+
+/// A finished run: its result and VTU; when it was cancelled, the load steps solved before the
+/// cancel (marked partial), or nothing.
 JobRunOutcome finished(bool cancelled, const nlohmann::json& result, std::string vtu) {
   JobRunOutcome outcome;
   outcome.kind = cancelled ? JobRunOutcome::Kind::kCancelled : JobRunOutcome::Kind::kSucceeded;
-  if (cancelled) return outcome;
-  outcome.result_json = result.dump(-1, ' ', false, nlohmann::json::error_handler_t::replace);
+  if (cancelled) {
+    if (result.is_object() && result.contains("load_steps")) outcome.result_json = text_of(result);
+    return outcome;
+  }
+  outcome.result_json = text_of(result);
   outcome.vtu = std::move(vtu);
   return outcome;
 }
@@ -127,6 +135,10 @@ JobRunOutcome run_case_job(const nlohmann::json& case_json, const JobRunContext&
     progress.steps = solves;
   };
   control.on_iteration = progress_reporter(progress, context);
+  if (context.report_partial)
+    control.on_partial = [&context](const nlohmann::json& r) {
+      context.report_partial(text_of(r));
+    };
   try {
     RunOutput output = run_case(*read.spec, control, options.limits);
     return finished(output.cancelled, output.result, std::move(output.vtu));

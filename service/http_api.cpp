@@ -35,8 +35,10 @@ std::string dump(const nlohmann::json& j) {
 /// Succeeded jobs have a result; so have failed ones whose solve did not converge under
 /// --fail-unconverged (kept to look at). Other failed jobs have none.
 bool has_result(const Job& job) {
+  // A failed or cancelled job has one when it stored one: not converged, or load steps kept.
   return job.state == JobState::kSucceeded ||
-         (job.state == JobState::kFailed && job.convergence.converged.has_value());
+         ((job.state == JobState::kFailed || job.state == JobState::kCancelled) &&
+          job.convergence.converged.has_value());
 }
 
 std::string method_label(const std::string& method) {

@@ -152,7 +152,9 @@ nlohmann::json job_json_schema() {
                                 {"description",
                                  "the result's converged; null until a result is stored. A job can "
                                  "succeed without converging unless the service runs with "
-                                 "--fail-unconverged"}})},
+                                 "--fail-unconverged. A cancelled job with load steps keeps the "
+                                 "steps solved before the cancel as its result (false, "
+                                 "stop_reason cancelled)"}})},
         {"stop_reason", nullable({{"$ref", openapi::kResultSchema + "#/properties/stop_reason"}})},
         {"links", links}}}};
 }

@@ -32,6 +32,8 @@ std::string outcome_message(const JobRunOutcome& outcome) {
   return "E\n";
 }
 
+std::string partial_message(const std::string& result_json) { return framed('K', result_json); }
+
 void JobProcessReader::feed(std::string_view data) {
   if (!malformed_.empty() || outcome_) return;
   buffer_.append(data);
@@ -69,7 +71,7 @@ bool JobProcessReader::parse_one() {
     if (tag == 'E') outcome_ = std::move(pending_);
     return true;
   }
-  if (tag != 'S' && tag != 'V' && tag != 'F') {
+  if (tag != 'S' && tag != 'V' && tag != 'F' && tag != 'K') {
     malformed_ = "an unknown message: " + header.substr(0, 40);
     return false;
   }
@@ -83,7 +85,9 @@ bool JobProcessReader::parse_one() {
   if (buffer_.size() < eol + 1 + n) return false;  // wait for the whole payload
   std::string payload = buffer_.substr(eol + 1, n);
   buffer_.erase(0, eol + 1 + n);
-  if (tag == 'S') {
+  if (tag == 'K') {
+    partial_ = std::move(payload);
+  } else if (tag == 'S') {
     pending_.kind = JobRunOutcome::Kind::kSucceeded;
     pending_.result_json = std::move(payload);
   } else if (tag == 'V') {

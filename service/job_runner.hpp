@@ -20,13 +20,16 @@ struct JobRunContext {
   std::function<void(const JobProgress&)> report_progress;
   /// Admission's estimate of the solve's time, as stored with the job (none: not estimated).
   std::optional<double> time_estimate_seconds = std::nullopt;
+  /// Load steps: after each step but the last, the result a cancel would leave (the steps
+  /// solved so far, marked partial); none: not wanted.
+  std::function<void(const std::string& result_json)> report_partial = nullptr;
 };
 
 /// How one run ended.
 struct JobRunOutcome {
   enum class Kind { kSucceeded, kFailed, kCancelled };
   Kind kind = Kind::kFailed;
-  std::string result_json;  ///< kSucceeded
+  std::string result_json;  ///< kSucceeded; kCancelled: the steps solved before it, or empty
   std::string vtu;          ///< kSucceeded
   std::string error;        ///< kFailed: a message a person can act on
 };

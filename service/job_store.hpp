@@ -55,6 +55,9 @@ struct SolveRecord {
   /// Empty: the job succeeded. Otherwise it fails for this reason although it has a result
   /// (a solve that did not converge under --fail-unconverged); the result is kept to look at.
   std::string error;
+  /// The job was cancelled by its user after some of its load steps were solved: it ends
+  /// cancelled, with those steps as its result (marked partial).
+  bool cancelled = false;
 };
 
 /// How a job's VTU is stored: gzip-compressed (every result since SQLite's schema 2) or as

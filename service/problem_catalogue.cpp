@@ -60,7 +60,10 @@ Problem job_without_result(const Job& job) {
       p = make(409, "job-failed", which + " failed: " + job.error);
       break;
     case JobState::kCancelled:
-      p = make(409, "job-cancelled", which + " was cancelled; it has no result");
+      p = make(409, "job-cancelled",
+               which +
+                   " was cancelled before it had a result to keep (a job with load steps keeps "
+                   "the steps solved before a cancel)");
       break;
     case JobState::kSucceeded:
       p = make(500, nullptr, which + " succeeded but its result is missing");

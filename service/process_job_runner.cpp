@@ -69,6 +69,7 @@ JobRunOutcome outcome_of(const ChildResult& r, const JobProcessReader& reader,
     case ChildResult::End::kCancelled: {
       JobRunOutcome o;
       o.kind = JobRunOutcome::Kind::kCancelled;
+      o.result_json = reader.partial_result();  // load steps solved before the cancel
       return o;
     }
     case ChildResult::End::kTimedOut:

@@ -39,6 +39,10 @@ int main(int argc, char** argv) {
     JobRunContext context{never, [protocol_fd](const JobProgress& p) {
                             fosls::write_all(protocol_fd, progress_message(p));
                           }};
+    // A cancel kills this process: what it would leave is sent as it is known.
+    context.report_partial = [protocol_fd](const std::string& r) {
+      fosls::write_all(protocol_fd, partial_message(r));
+    };
     std::size_t job_memory_bytes = 0;
     for (int i = 1; i + 1 < argc; ++i)
       if (std::string(argv[i]) == "--max-job-memory") job_memory_bytes = std::stoull(argv[i + 1]);

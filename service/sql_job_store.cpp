@@ -327,7 +327,9 @@ bool SqlJobStore::complete_with_result(const Lease& lease, const SolveRecord& re
   // Compressed before the transaction: the write lock is never held for the CPU work.
   SqlBlob compressed{gzip_compress(record.vtu)};
   std::vector<SqlValue> params = lease_params(lease);
-  params.emplace_back(std::string(record.error.empty() ? "succeeded" : "failed"));
+  params.emplace_back(std::string(record.cancelled       ? "cancelled"
+                                  : record.error.empty() ? "succeeded"
+                                                         : "failed"));
   params.emplace_back(record.error.empty() ? SqlValue{} : SqlValue(record.error));
   params.emplace_back(record.convergence.converged
                           ? SqlValue(static_cast<std::int64_t>(*record.convergence.converged))

@@ -321,6 +321,8 @@ nlohmann::json WorkerPool::record_outcome(const Lease& lease, JobRunOutcome& out
     fields["to"] = "queued";
     stored = with_retries(
         "requeue", lease.job_id, [&] { return store_.requeue(lease); }, store_error);
+  } else if (outcome.kind == JobRunOutcome::Kind::kCancelled && !outcome.result_json.empty()) {
+    stored = store_result(lease, outcome, seconds, fields);  // the load steps solved before it
   } else if (outcome.kind == JobRunOutcome::Kind::kCancelled) {
     fields["to"] = "cancelled";
     stored = with_retries(
@@ -346,9 +348,12 @@ bool WorkerPool::store_result(const Lease& lease, JobRunOutcome& outcome, double
   record.convergence = convergence_of_result(outcome.result_json);
   record.result_json = std::move(outcome.result_json);
   record.vtu = std::move(outcome.vtu);
-  if (options_.fail_unconverged && record.convergence.converged == false)
+  record.cancelled = outcome.kind == JobRunOutcome::Kind::kCancelled;
+  if (options_.fail_unconverged && record.convergence.converged == false && !record.cancelled)
     record.error = unconverged_error(record.convergence);
-  const JobState state = record.error.empty() ? JobState::kSucceeded : JobState::kFailed;
+  const JobState state = record.cancelled       ? JobState::kCancelled
+                         : record.error.empty() ? JobState::kSucceeded
+                                                : JobState::kFailed;
   fields["to"] = to_string(state);
   if (record.convergence.converged) {
     fields["converged"] = *record.convergence.converged;

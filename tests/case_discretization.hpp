@@ -19,7 +19,7 @@ namespace fosls::testing {
 inline std::unique_ptr<Discretization<2>> case_discretization(CaseSpec& spec) {
   Mesh coarse = build_coarse_mesh(spec.mesh);
   spec.weights.length_scale = length_scale(coarse);
-  ProblemData<2> data = problem_data(spec, coarse);
+  ProblemData<2> data = problem_data<2>(spec, coarse);
   MeshHierarchy meshes = build_mesh_hierarchy(std::move(coarse), spec.mesh.refinements);
   if (spec.weights.c3_auto)
     data.weights.c3 = automatic_contact_weight(contact_weight_limit(meshes, data));

@@ -15,9 +15,10 @@ namespace fosls {
 namespace {
 
 /// The matrix of J on `space` with the given contact weight.
-SparseMatrix functional_matrix(const FoslsSpace<2>& space, ProblemData<2> data, double c3) {
+template <int dim>
+SparseMatrix functional_matrix(const FoslsSpace<dim>& space, ProblemData<dim> data, double c3) {
   data.weights.c3 = c3;
-  return FoslsAssembler<2>(space, data).assemble_system().qp.A;
+  return FoslsAssembler<dim>(space, data).assemble_system().qp.A;
 }
 
 /// Cholesky factor of A0. Without a Neumann boundary an incompressible A0 can be singular (the
@@ -105,14 +106,16 @@ double definiteness_limit_by_bisection(const SparseMatrix& a0, const SparseMatri
 
 }  // namespace
 
-ContactWeightLimit contact_weight_limit(const MeshHierarchy& meshes, const ProblemData<2>& data,
-                                        int max_dofs) {
+template <int dim>
+ContactWeightLimit contact_weight_limit(const SimplexHierarchy<dim>& meshes,
+                                        const ProblemData<dim>& data, int max_dofs) {
   const auto roles = data.boundary_roles();
   ContactWeightLimit out;
-  std::unique_ptr<FoslsSpace<2>> chosen;
+  std::unique_ptr<FoslsSpace<dim>> chosen;
   for (int level = 0; level < meshes.num_levels(); ++level) {
-    const Mesh& mesh = meshes.meshes[level];
-    auto space = std::make_unique<FoslsSpace<2>>(mesh, roles, obstacle_vertex_normals(mesh, data));
+    const SimplexMesh<dim>& mesh = meshes.meshes[level];
+    auto space =
+        std::make_unique<FoslsSpace<dim>>(mesh, roles, obstacle_vertex_normals(mesh, data));
     if (chosen && space->num_free() > max_dofs) break;
     chosen = std::move(space);
     out.level = level;
@@ -127,6 +130,11 @@ ContactWeightLimit contact_weight_limit(const MeshHierarchy& meshes, const Probl
   if (broke_down && !(mu_min < 0)) out.limit = definiteness_limit_by_bisection(a0, b);
   return out;
 }
+
+template ContactWeightLimit contact_weight_limit<2>(const SimplexHierarchy<2>&,
+                                                    const ProblemData<2>&, int);
+template ContactWeightLimit contact_weight_limit<3>(const SimplexHierarchy<3>&,
+                                                    const ProblemData<3>&, int);
 
 double automatic_contact_weight(const ContactWeightLimit& limit) {
   return std::min(kDefaultContactWeight, 0.5 * limit.limit);

@@ -13,6 +13,7 @@
 
 #include "assembly/problem_data.hpp"
 #include "mesh/refinement.hpp"
+#include "mesh/simplex_mesh.hpp"
 
 namespace fosls {
 
@@ -28,8 +29,10 @@ struct ContactWeightLimit {
 constexpr int kWeightLevelDofs = 20000;
 
 /// c3* on the finest level of `meshes` with at most `max_dofs` free unknowns (the coarsest if
-/// none is that small). `data.weights.c3` is ignored.
-ContactWeightLimit contact_weight_limit(const MeshHierarchy& meshes, const ProblemData<2>& data,
+/// none is that small), in 2D or 3D. `data.weights.c3` is ignored.
+template <int dim>
+ContactWeightLimit contact_weight_limit(const SimplexHierarchy<dim>& meshes,
+                                        const ProblemData<dim>& data,
                                         int max_dofs = kWeightLevelDofs);
 
 /// The rule applied to a limit: min(kDefaultContactWeight, limit / 2).

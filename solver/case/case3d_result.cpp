@@ -165,6 +165,7 @@ std::vector<ResultWarning> contact_warnings(const CaseSpec& spec, const TetMesh&
                             "displacement or the body's)",
                         true});
   if (auto w = zone_resolution_warning(c)) warnings.push_back(*w);
+  if (auto w = tangential_load_warning(spec)) warnings.push_back(std::move(*w));  // as 2D's
   if (c.faces_in_contact == 0) {
     const SmallestGap moved = smallest_gap(spec, mesh, false);
     warnings.push_back(
@@ -237,6 +238,7 @@ json case3d_result(const CaseSpec& spec, const Discretization<3>& disc, const Ve
   r["material"] = {
       {"mu", spec.material.mu},
       {"lambda", spec.material.incompressible() ? json("inf") : json(spec.material.lambda)}};
+  r["weights"] = weights_json(spec.weights);
   r["functional"] = {{"total", parts.total()}, {"estimator", std::sqrt(parts.total())}};
   r["contact"] = {{"force", {c.force.x(), c.force.y(), c.force.z()}},
                   {"max_pressure", c.max_pressure},

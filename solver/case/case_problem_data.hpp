@@ -4,12 +4,13 @@
 
 #include "assembly/problem_data.hpp"
 #include "case/case_spec.hpp"
-#include "mesh/mesh.hpp"
+#include "mesh/simplex_mesh.hpp"
 
 namespace fosls {
 
 /// `spec.weights` as used (length_scale set, c3 chosen when "auto"); groups indexed like
-/// mesh.group_names(), the unnamed ones traction free.
-ProblemData<2> problem_data(const CaseSpec& spec, const Mesh& mesh);
+/// mesh.group_names(), the unnamed ones traction free; in 2D or 3D.
+template <int dim>
+ProblemData<dim> problem_data(const CaseSpec& spec, const SimplexMesh<dim>& mesh);
 
 }  // namespace fosls

@@ -176,8 +176,6 @@ CaseReadResult read_case(const nlohmann::json& j, const CaseReadOptions& options
   if (j.contains("body_force")) spec.body_force = read_scalars(j["body_force"]);
   spec.boundary = read_boundary_section(j["boundary"]);
   if (j.contains("weights")) spec.weights = read_weights_section(j["weights"]);
-  // 3D has no "auto" c3 yet (dimension_support.hpp): its contact term keeps the weight 0.1.
-  if (dim == 3 && spec.weights.c3_auto) spec.weights.c3_auto = false;
   if (j.contains("solver")) spec.solver = read_solver_section(j["solver"]);
   if (j.contains("adaptivity"))
     spec.adaptivity = read_adaptivity_section(j["adaptivity"], options.limits);

@@ -139,7 +139,7 @@ RunOutput run_point(const CaseSpec& spec, const RunControl& control, const CaseL
     throw CaseException(std::move(errors));
   CaseSpec used = spec;  // the case with the weights as used
   used.weights.length_scale = length_scale(coarse);
-  ProblemData<2> data = problem_data(used, coarse);
+  ProblemData<2> data = problem_data<2>(used, coarse);
   if (control.reference) data.reference_displacement = *control.reference;
   const Mesh coarse_mesh = coarse;  // small; for the message of indefinite weights
   // The limit counts the whole run: a user sets it for the answer's latency, not the loop's.
@@ -229,15 +229,13 @@ RunOutput run_case(const CaseSpec& spec, const RunControl& control, const CaseLi
       control.on_solve(solves++, most);
     };
   try {
-    if (spec.dimension == 3) return run_3d_point(spec, counted, limits);
-    if (!spec.load_step_points.empty())
-      return run_load_steps(spec, counted, [&limits](const CaseSpec& step, const RunControl& c) {
-        return run_point(step, c, limits);
-      });
-    if (spec.sweep_points.empty()) return run_point(spec, counted, limits);
-    return run_sweep(spec, counted, [&limits](const CaseSpec& point, const RunControl& c) {
-      return run_point(point, c, limits);
-    });
+    // One point of either dimension; load steps and sweeps repeat it.
+    const auto point = [&limits](const CaseSpec& s, const RunControl& c) {
+      return s.dimension == 3 ? run_3d_point(s, c, limits) : run_point(s, c, limits);
+    };
+    if (!spec.load_step_points.empty()) return run_load_steps(spec, counted, point);
+    if (spec.sweep_points.empty()) return point(spec, counted);
+    return run_sweep(spec, counted, point);
   } catch (const TimeLimitReached& e) {
     throw TimeLimitReached(e.stage(), time_limit_message(spec, e.stage()));
   } catch (const NonFiniteError& e) {

@@ -41,6 +41,10 @@ struct RunControl {
   /// Continuation: the solution of a case on the same mesh to start from (instead of the
   /// nested iteration); ignored when its size does not match.
   const Vector* start = nullptr;
+  /// Load steps: called after every step but the last with the result the run would have if it
+  /// stopped there (the steps solved so far, marked partial and cancelled), so that a process
+  /// killed on cancel leaves them behind (the service's solve process sends it to its worker).
+  std::function<void(const nlohmann::json& partial)> on_partial;
   /// Load steps: the displacement of each vertex of the finest mesh in the state the step
   /// starts from; friction measures slip from it (ignored when its size does not match).
   const std::vector<Point>* reference = nullptr;

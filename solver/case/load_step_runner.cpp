@@ -74,9 +74,30 @@ void close_partial(json& r, const CaseSpec& spec, std::size_t k, const StepStop&
   r["name"] = spec.name;
   r["converged"] = false;
   r["stop_reason"] = stop.reason;
+  if (stop.reason == "cancelled") r["cancelled"] = true;
   r["message"] = stop.message + "; the result holds the " + std::to_string(k) +
                  " steps solved before it (load_steps.steps), the last one's fields at the top";
   add_warnings(r, {{"load_steps_partial", r["message"].get<std::string>(), true}});
+}
+
+/// What a cancel during step k says.
+StepStop cancelled_during(std::size_t k) {
+  return {"cancelled", "the run was cancelled during load step " + std::to_string(k)};
+}
+
+/// The run's result after the steps in `steps`, the last of which gave `last`: complete, or
+/// stopped before the next step by `stop`.
+json series_result(const CaseSpec& spec, const json& last, json steps, const std::string& failure,
+                   const std::vector<ResultWarning>& warnings,
+                   const std::optional<StepStop>& stop) {
+  json r = last;
+  const std::size_t solved = steps.size();
+  close_series(r, spec.name, failure, warnings, spec.load_step_points.size() + 1,
+               "load steps did not converge (see warnings and load_steps.steps)");
+  if (stop) close_partial(r, spec, solved, *stop);
+  r["load_steps"] = {{"count", solved}, {"steps", std::move(steps)}};
+  if (stop) r["load_steps"]["stopped_before"] = {{"step", solved}, {"reason", stop->reason}};
+  return r;
 }
 
 }  // namespace
@@ -108,8 +129,12 @@ RunOutput run_load_steps(
     RunOutput solved;
     stop = solve_step([&] { return run_point(step_spec(spec, k, left), step_control); }, k, solved);
     if (stop) break;
+    if (solved.cancelled) {
+      if (k == 0) return solved;  // nothing solved to keep
+      stop = cancelled_during(k);
+      break;
+    }
     last = std::move(solved);
-    if (last.cancelled) return last;
     steps.push_back(
         step_json(k, k == 0 ? json::object() : spec.load_step_changes[k - 1], last.result));
     if (!last.result["converged"].get<bool>()) {
@@ -118,16 +143,16 @@ RunOutput run_load_steps(
           {"load_step_not_converged", "load step " + std::to_string(k) + " did not converge: " +
                                           last.result.value("message", std::string("no message"))});
     }
+    // What a cancel (or a kill) before the next step would leave: the solved steps, kept.
+    if (control.on_partial && k + 1 < n)
+      control.on_partial(series_result(spec, last.result, steps, first_failure, warnings,
+                                       cancelled_during(k + 1)));
     previous = std::move(last.solution);
     displacement = std::move(last.displacement);
   }
-  json& r = last.result;
-  const std::size_t solved = steps.size();
-  close_series(r, spec.name, first_failure, warnings, n,
-               "load steps did not converge (see warnings and load_steps.steps)");
-  if (stop) close_partial(r, spec, solved, *stop);
-  r["load_steps"] = {{"count", solved}, {"steps", std::move(steps)}};
-  if (stop) r["load_steps"]["stopped_before"] = {{"step", solved}, {"reason", stop->reason}};
+  last.result = series_result(spec, last.result, std::move(steps), first_failure, warnings, stop);
+  last.cancelled = stop && stop->reason == "cancelled";
+  if (last.cancelled) last.vtu.clear();  // a VTU is the last step's only
   last.solution = std::move(previous);
   last.displacement = std::move(displacement);
   return last;

@@ -91,15 +91,21 @@ std::vector<FieldRule> outcome3d_fields() {
 std::vector<FieldRule> solution3d_fields() {
   return {output_field("material", object_value(material_echo_rule()), "",
                        "the material as used (μ, λ)"),
+          output_field("weights", object_value(weights_echo_rule()), "",
+                       "the weights as used, as in 2D (c3 chosen when the case gives \"auto\")"),
           output_field("functional", object_value(functional3d_rule()), "",
                        "the FOSLS functional at the solution"),
           output_field("contact", object_value(contact3d_rule()), "",
                        "the contact output (zeros when the case has no contact group)"),
+          optional_field("message", text(), nullptr,
+                         "why a run of load steps or sweep points did not converge or stopped "
+                         "early (also in warnings), as in 2D"),
           output_field("warnings", list_value(text(), "list of sentences"), "",
                        "what the user should know: the messages of warning_details, in order"),
           output_field(
               "warning_details", list_value(object_value(warning_rule()), "one per warning"), "",
               "the warnings with their codes: units_implausible, no_contact, initial_penetration, "
+              "contact_zone_underresolved, tangential_load_frictionless, "
               "roller_overrides_contact and the solver's own as in 2D (not_converged, "
               "time_limit, rounding_level, coarse_corrections_shortened)"),
           output_field("review_required", boolean_value(), "",
@@ -125,6 +131,13 @@ std::vector<FieldRule> solution3d_fields() {
 ObjectRulePtr result3d_rule() {
   std::vector<FieldRule> fields = outcome3d_fields();
   for (FieldRule& f : solution3d_fields()) fields.push_back(std::move(f));
+  // The series of solves as in 2D; a load step's fields are the 3D result's.
+  fields.push_back(optional_field(
+      "sweep", object_value(sweep_result_rule(choice_value(stop_reason_names()), 3)), nullptr,
+      "a case with a sweep: every point's force and convergence, as in 2D"));
+  fields.push_back(
+      optional_field("load_steps", object_value(load_steps_result_rule(fields, 3)), nullptr,
+                     "a case with load steps: every step's result in order, as in 2D"));
   return object_rule("the 3D result", "result3d", std::move(fields));
 }
 

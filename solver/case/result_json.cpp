@@ -204,6 +204,17 @@ std::vector<ResultWarning> result_warnings(const SolverReport& report,
   return warnings;
 }
 
+json weights_json(const Weights& w) {
+  return {{"c1", w.c1},
+          {"c2", w.c2},
+          {"c3", w.c3},
+          {"c4", w.c4},
+          {"c2_volumetric", w.c2_volumetric},
+          {"c3_rule", w.c3_auto ? "auto" : "given"},
+          {"c3_limit", w.c3_limit > 0 ? json(w.c3_limit) : json()},
+          {"length_scale", w.length_scale}};
+}
+
 json result_json(const CaseSpec& spec, const SolverReport& report, const ContactResult& contact,
                  const FunctionalParts& functional, const ProblemSize& size,
                  const RunTiming& timing, const RunMemory& memory) {
@@ -246,14 +257,7 @@ json result_json(const CaseSpec& spec, const SolverReport& report, const Contact
       {"mu", spec.material.mu},
       {"lambda", spec.material.incompressible() ? json("inf") : json(spec.material.lambda)}};
   r["mesh"] = mesh_json(spec.mesh);
-  r["weights"] = {{"c1", spec.weights.c1},
-                  {"c2", spec.weights.c2},
-                  {"c3", spec.weights.c3},
-                  {"c4", spec.weights.c4},
-                  {"c2_volumetric", spec.weights.c2_volumetric},
-                  {"c3_rule", spec.weights.c3_auto ? "auto" : "given"},
-                  {"c3_limit", spec.weights.c3_limit > 0 ? json(spec.weights.c3_limit) : json()},
-                  {"length_scale", spec.weights.length_scale}};
+  r["weights"] = weights_json(spec.weights);
   r["timing"] = {{"mesh_s", timing.mesh_s},
                  {"assembly_s", timing.assembly_s},
                  {"setup_s", report.setup_s},

@@ -54,6 +54,9 @@ nlohmann::json statistics_json(const SolverReport& report);
 std::vector<ResultWarning> result_warnings(const SolverReport& report,
                                            const SolverOptions& options);
 
+/// The result's `weights` object: the weights as used, in both dimensions.
+nlohmann::json weights_json(const Weights& weights);
+
 /// The whole result JSON.
 nlohmann::json result_json(const CaseSpec& spec, const SolverReport& report,
                            const ContactResult& contact, const FunctionalParts& functional,

@@ -85,6 +85,26 @@ ObjectRulePtr statistics_rule() {
        output_field("strip_s", number(), "s", "time of the contact-strip solves"),
        output_field("coarse_s", number(), "s", "time of the coarsest-level solves")});
 }
+ObjectRulePtr weights_echo_rule() {
+  std::vector<FieldRule> fields;
+  for (const char* c : {"c1", "c2", "c3", "c4", "c2_volumetric"})
+    fields.push_back(output_field(c, number(), "1", std::string("weight ") + c + " used"));
+  fields.push_back(output_field("c3_rule", choice_value({"auto", "given"}), "",
+                                "\"auto\" when c3 was chosen from the mesh, \"given\" when the "
+                                "case set it"));
+  fields.push_back(output_field(
+      "c3_limit", number_or_null(), "1",
+      "with c3_rule auto: the largest c3 keeping the functional convex on the level it was "
+      "computed on (c3 = min(0.1, c3_limit / 2)); null otherwise, without contact or when "
+      "unbounded"));
+  fields.push_back(output_field(
+      "length_scale", number(), "L",
+      "ℓ, the power of ten nearest to the body's size (2D: the square root of its area, 3D: "
+      "the cube root of its volume): the c1 term is weighted c1 ℓ², so that the weights "
+      "balance the terms whatever the unit of length (docs/method.md §2)"));
+  return object_rule("the weights", "weights_echo", std::move(fields));
+}
+
 }  // namespace result_parts
 
 namespace {
@@ -140,34 +160,6 @@ ObjectRulePtr units_echo_rule() {
                     "\"N/m\" for Pa and m; null when not declared")});
 }
 
-ObjectRulePtr sweep_point_rule(ValueRule reasons) {
-  return object_rule(
-      "a sweep point", "sweep_point",
-      {output_field("value", number(), "", "the value of the swept number (its unit)"),
-       output_field("force", point_value(), "S·L", "contact.force at this point"),
-       output_field("peak_pressure", number(), "S", "contact.zone.peak_pressure at this point"),
-       output_field("contact_length", number(), "L", "contact.zone.length at this point"),
-       output_field("contact_width", number(), "L", "contact.zone.width at this point"),
-       output_field("converged", boolean_value(), "", "this point converged"),
-       output_field("stop_reason", std::move(reasons), "", "why this point's iteration stopped"),
-       output_field("converged_by", converged_by_value(), "",
-                    "the test this point's solve met, as stopping.converged_by"),
-       output_field("iterations", count(), "1",
-                    "finest-level iterations of this point (from the previous point's solution)"),
-       output_field("warning_codes", list_value(choice_value(warning_codes()), "codes"), "",
-                    "the codes of this point's warnings (warning_details.code), e.g. no_contact "
-                    "at an indentation that does not reach the body")});
-}
-
-ObjectRulePtr sweep_rule(ValueRule reasons) {
-  return object_rule("the sweep", "sweep",
-                     {output_field("pointer", text(), "", "the case's sweep.pointer"),
-                      output_field("points",
-                                   list_value(object_value(sweep_point_rule(std::move(reasons))),
-                                              "one per value, in order"),
-                                   "", "each point of the sweep")});
-}
-
 ObjectRulePtr friction_result_rule() {
   ValueRule maybe = number_or_null();
   ValueRule law = object_value(object_rule(
@@ -191,48 +183,6 @@ ObjectRulePtr friction_result_rule() {
        output_field("last_change", maybe, "1",
                     "the last update's change: within solver.friction_tolerance when the "
                     "solve converged")});
-}
-
-/// A load step's result: the result's own fields but the history, with its number and changes.
-ObjectRulePtr load_step_rule(const std::vector<FieldRule>& result_fields) {
-  ValueRule changes =
-      map_value(name_value(4096, "a JSON pointer"),
-                one_of_value({number_value(), text(), boolean_value(), null_value(),
-                              list_value(one_of_value({number_value(), text(), null_value()},
-                                                      "a number, string or null"),
-                                         "an array")},
-                             "a JSON value"),
-                50, "object mapping JSON pointers to values", "changes");
-  changes.range.lo = 0;  // step 0, the case as given, changes nothing
-  std::vector<FieldRule> fields = {
-      output_field("step", count(), "1", "the step's number, 0 for the case as given"),
-      output_field("changes", changes, "",
-                   "the step's changes as the case gave them (empty for step 0)")};
-  for (const FieldRule& f : result_fields)
-    if (f.key != "history") fields.push_back(f);
-  return object_rule("a load step", "load_step", std::move(fields));
-}
-
-ObjectRulePtr stopped_before_rule() {
-  return object_rule(
-      "where load steps stopped", "stopped_before",
-      {output_field("step", count(), "1", "the first step not solved"),
-       output_field("reason", choice_value({"time_limit", "step_failed"}), "",
-                    "time_limit: solver.time_limit_s, which bounds the whole run, ran out; "
-                    "step_failed: the step's state could not be solved (the message says why)")});
-}
-
-ObjectRulePtr load_steps_result_rule(const std::vector<FieldRule>& result_fields) {
-  return object_rule(
-      "the load steps", "load_steps",
-      {output_field("count", count(), "1", "steps solved, the case as given included"),
-       output_field("steps",
-                    list_value(object_value(load_step_rule(result_fields)), "one per step"), "",
-                    "each step's result (as a result without load steps, without its history)"),
-       optional_field("stopped_before", object_value(stopped_before_rule()), nullptr,
-                      "the run stopped before this step could be solved: the steps solved before "
-                      "it are kept, the result is marked not converged with warning "
-                      "load_steps_partial")});
 }
 
 ObjectRulePtr stick_zone_rule() {
@@ -355,26 +305,6 @@ ObjectRulePtr mesh_echo_rule() {
                       "every parameter of the builtin geometry, defaults included")});
 }
 
-ObjectRulePtr weights_echo_rule() {
-  std::vector<FieldRule> fields;
-  for (const char* c : {"c1", "c2", "c3", "c4", "c2_volumetric"})
-    fields.push_back(output_field(c, number(), "1", std::string("weight ") + c + " used"));
-  fields.push_back(output_field("c3_rule", choice_value({"auto", "given"}), "",
-                                "\"auto\" when c3 was chosen from the mesh, \"given\" when the "
-                                "case set it"));
-  fields.push_back(output_field(
-      "c3_limit", number_or_null(), "1",
-      "with c3_rule auto: the largest c3 keeping the functional convex on the level it was "
-      "computed on (c3 = min(0.1, c3_limit / 2)); null otherwise, without contact or when "
-      "unbounded"));
-  fields.push_back(output_field(
-      "length_scale", number(), "L",
-      "ℓ, the power of ten nearest to the square root of the body's area: the c1 term is "
-      "weighted c1 ℓ², so that the weights balance the terms whatever the unit of length "
-      "(docs/method.md §2)"));
-  return object_rule("the weights", "weights_echo", std::move(fields));
-}
-
 ObjectRulePtr timing_rule() {
   return object_rule(
       "the timing", "timing",
@@ -495,7 +425,7 @@ std::vector<FieldRule> solution_fields(const std::vector<std::string>& reasons) 
                      "the refinement towards the requested force accuracy, level by level "
                      "(only when the case has an accuracy section; the other fields describe "
                      "its last level)"),
-      optional_field("sweep", object_value(sweep_rule(choice_value(reasons))), nullptr,
+      optional_field("sweep", object_value(sweep_result_rule(choice_value(reasons), 2)), nullptr,
                      "a case with a sweep: every point's force and convergence; the other "
                      "fields are the last point's, except converged and stop_reason, which say "
                      "whether every point converged (and why the first that did not stopped)")};
@@ -517,7 +447,7 @@ ObjectRulePtr result_rule() {
   std::vector<FieldRule> fields = outcome_fields(reasons);
   for (FieldRule& f : solution_fields(reasons)) fields.push_back(std::move(f));
   fields.push_back(optional_field(
-      "load_steps", object_value(load_steps_result_rule(fields)), nullptr,
+      "load_steps", object_value(load_steps_result_rule(fields, 2)), nullptr,
       "a case with load steps: every step's result in order (the case as given is step 0); the "
       "other fields are the last step's, except converged and stop_reason, which say whether "
       "every step converged"));

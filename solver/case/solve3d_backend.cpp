@@ -8,11 +8,13 @@
 #include <cmath>
 #include <sstream>
 
+#include "assembly/contact_weight.hpp"
 #include "assembly/discretization.hpp"
 #include "case/adaptive_runner.hpp"
 #include "case/case3d_result.hpp"
 #include "case/case_admission.hpp"
 #include "case/case_error.hpp"
+#include "case/case_problem_data.hpp"
 #include "case/early_group_check.hpp"
 #include "case/expression.hpp"
 #include "case/mesh_factory.hpp"
@@ -84,53 +86,6 @@ void check_groups(const CaseSpec& spec, const TetMesh& mesh) {
   if (!errors.empty()) throw CaseException(std::move(errors));
 }
 
-/// The obstacle in the assembly layer's terms (the reader added its displacement already).
-RigidObstacle<3> rigid_obstacle(const Obstacle& o) {
-  RigidObstacle<3> r;
-  r.kind = o.kind == Obstacle::Kind::kPlane  ? RigidObstacle<3>::Kind::kPlane
-           : o.kind == Obstacle::Kind::kBall ? RigidObstacle<3>::Kind::kBall
-                                             : RigidObstacle<3>::Kind::kGap;
-  r.point = o.point, r.normal = o.normal, r.center = o.center, r.radius = o.radius;
-  return r;
-}
-
-/// Step 4: the problem data on the mesh's groups.
-ProblemData<3> problem_data(const CaseSpec& spec, const TetMesh& mesh) {
-  ProblemData<3> d;
-  d.material = {.mu = spec.material.mu, .lambda = spec.material.lambda};
-  const Weights& w = spec.weights;
-  // The c1 term in units of the body's size, as in 2D (mesh/length_scale.hpp): without it the
-  // answer depended on the unit of length (issue 47).
-  const double l = w.length_scale;
-  d.weights = {
-      .c1 = w.c1 * l * l, .c2 = w.c2, .c3 = w.c3, .c4 = w.c4, .c2_volumetric = w.c2_volumetric};
-  // A zero component stays empty: the assembler then adds no body force at all.
-  for (int i = 0; i < 3; ++i)
-    if (const Scalar& f = spec.body_force[i]; !f.is_constant() || f.value != 0.0)
-      d.body_force[i] = compile_scalar_3d(f);
-  d.groups.resize(mesh.group_names().size());
-  for (const auto& [name, bc] : spec.boundary) {
-    GroupData<3>& group = d.groups[tet_group_index(mesh, name)];
-    if (bc.type == BoundaryCondition::Type::kContact) {
-      group.role = GroupRole::kContact;
-      group.contact.obstacle = rigid_obstacle(bc.obstacle);
-      if (bc.obstacle.kind == Obstacle::Kind::kGap)
-        group.contact.gap = compile_scalar_3d(bc.obstacle.gap);
-      continue;
-    }
-    const bool dirichlet = bc.type == BoundaryCondition::Type::kDirichlet;
-    group.role = dirichlet ? GroupRole::kDirichlet : GroupRole::kNeumann;
-    group.normal_pressure = bc.type == BoundaryCondition::Type::kPressure;
-    group.prescribed = 0;
-    for (int i = 0; i < 3; ++i) {
-      if (dirichlet && !bc.prescribed[i]) continue;
-      group.prescribed |= 1 << i;
-      if (i == 0 || !group.normal_pressure) group.values[i] = compile_scalar_3d(bc.values[i]);
-    }
-  }
-  return d;
-}
-
 /// A FOSLS matrix that is not positive definite in 3D: a body too thin for double precision
 /// (its stiffness across and along differ by more than it can hold), or the weights.
 CaseException indefinite_3d(const CaseSpec& spec, const TetMesh& mesh) {
@@ -152,8 +107,12 @@ CaseException indefinite_3d(const CaseSpec& spec, const TetMesh& mesh) {
   const Weights& w = spec.weights;
   m << "the weights c1 = " << w.c1 << ", c2 = " << w.c2 << ", c3 = " << w.c3 << ", c4 = " << w.c4
     << " make the FOSLS matrix not positive definite (the contact term c3 is too large relative "
-       "to c1 and c2: give a smaller c3); with null displacement components, also check that "
-       "the dirichlet groups leave no rigid motion";
+       "to c1 and c2: "
+    << (w.c3_auto ? "c3 was chosen as half the limit " + std::to_string(w.c3_limit) +
+                        " computed on a coarser level; give a smaller c3 by hand"
+                  : std::string("give a smaller c3, or \"auto\" to have it chosen"))
+    << "); with null displacement components, also check that the dirichlet groups leave no "
+       "rigid motion";
   return CaseException("/weights", m.str());
 }
 
@@ -189,7 +148,13 @@ RunOutput run_3d_point(const CaseSpec& spec, const RunControl& control, const Ca
   check_groups(spec, meshes.finest());
   const double mesh_s = seconds_since(t0);
 
-  const ProblemData<3> data = problem_data(used, meshes.finest());
+  ProblemData<3> data = problem_data<3>(used, meshes.finest());
+  if (used.weights.c3_auto && has_contact(used)) {
+    // As in 2D: c3 = min(0.1, c3*/2), c3* on the finest level of at most 20 000 unknowns.
+    const ContactWeightLimit limit = contact_weight_limit(meshes, data);
+    used.weights.c3_limit = limit.limit;
+    used.weights.c3 = data.weights.c3 = automatic_contact_weight(limit);
+  }
   CaseSolveObserver observer;
   observer.solver.on_iteration = control.on_iteration;
   if (control.cancel)

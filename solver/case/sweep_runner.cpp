@@ -14,19 +14,25 @@ json warning_codes_of(const json& r) {
   return codes;
 }
 
-/// What a force–indentation (or any parameter) curve needs of one point.
+/// What a force–indentation (or any parameter) curve needs of one point: the zone's length and
+/// width along a 2D contact boundary, its radius on a 3D one.
 json point_json(double value, const json& r) {
   const json& contact = r["contact"];
-  return {{"value", value},
-          {"force", contact["force"]},
-          {"peak_pressure", contact["zone"]["peak_pressure"]},
-          {"contact_length", contact["zone"]["length"]},
-          {"contact_width", contact["zone"]["width"]},
-          {"converged", r["converged"]},
-          {"stop_reason", r["stop_reason"]},
-          {"converged_by", r["stopping"]["converged_by"]},
-          {"iterations", r["iterations"]},
-          {"warning_codes", warning_codes_of(r)}};
+  const json& zone = contact["zone"];
+  json point = {
+      {"value", value}, {"force", contact["force"]}, {"peak_pressure", zone["peak_pressure"]}};
+  if (r.value("dimension", 2) == 3) {
+    point["contact_radius"] = zone["radius"];
+  } else {
+    point["contact_length"] = zone["length"];
+    point["contact_width"] = zone["width"];
+  }
+  point["converged"] = r["converged"];
+  point["stop_reason"] = r["stop_reason"];
+  if (r.contains("stopping")) point["converged_by"] = r["stopping"]["converged_by"];  // 2D's
+  point["iterations"] = r["iterations"];
+  point["warning_codes"] = warning_codes_of(r);
+  return point;
 }
 
 }  // namespace

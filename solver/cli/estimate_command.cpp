@@ -7,6 +7,7 @@
 
 #include "case/case_admission.hpp"
 #include "case/case_reader.hpp"
+#include "case/case_runner.hpp"
 #include "case/memory_size.hpp"
 #include "case/solver_methods.hpp"
 #include "case/time_estimate.hpp"
@@ -57,6 +58,10 @@ int run_estimate(const std::string& path, const std::string& max_memory) {
   if (admission.estimate->limited_by == "/accuracy/max_dofs")
     std::cout << "          (the accuracy loop at accuracy.max_dofs, the largest level it may "
                  "make; it stops earlier once the force is accurate enough)\n";
+  const CaseSpec& spec = *admission.spec;
+  if (const int solves = most_solves(spec); solves > 1 && !adaptive)
+    std::cout << "          (the time of one solve; the run makes " << solves << ", one per "
+              << (spec.load_step_points.empty() ? "sweep point" : "load step") << ")\n";
   const ProblemCount count = admission.estimate->count();
   for (const MethodInfo& m : solver_methods()) {
     if (!runs_in(m.method, count.dimension)) continue;

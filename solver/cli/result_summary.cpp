@@ -105,14 +105,27 @@ void print_accuracy(std::ostream& out, const json& a) {
       << steps.back()["dofs"] << " unknowns): " << a["stop_message"].get<std::string>() << '\n';
 }
 
-void print_sweep(std::ostream& out, const json& sweep) {
+/// "F_x            F_y            " (and F_z in 3D): the force columns' header.
+std::string force_header(int dim) {
+  std::string h;
+  for (int i = 0; i < dim; ++i) h += column(std::string("F_") + "xyz"[i], 15);
+  return h;
+}
+
+void print_force(std::ostream& out, const json& force) {
+  for (const json& v : force) out << column(g(v), 15);
+}
+
+/// One line per point of a sweep: its force, peak pressure, the zone's width (2D) or radius
+/// (3D), and iterations.
+void print_sweep(std::ostream& out, const json& sweep, int dim) {
   out << "  sweep of " << sweep["pointer"].get<std::string>() << ":\n"
-      << "    value          F_x            F_y            p_max          width          "
-         "iterations\n";
+      << "    value          " << force_header(dim) << "p_max          "
+      << (dim == 3 ? "radius         " : "width          ") << "iterations\n";
   for (const auto& p : sweep["points"]) {
-    out << "    ";
-    for (const json& v :
-         {p["value"], p["force"][0], p["force"][1], p["peak_pressure"], p["contact_width"]})
+    out << "    " << column(g(p["value"]), 15);
+    print_force(out, p["force"]);
+    for (const json& v : {p["peak_pressure"], p[dim == 3 ? "contact_radius" : "contact_width"]})
       out << column(g(v), 15);
     out << iterations_text(p);
     for (const auto& code : p.value("warning_codes", json::array()))
@@ -121,16 +134,18 @@ void print_sweep(std::ostream& out, const json& sweep) {
   }
 }
 
-/// One line per load step: its force, stick zone and iterations (the summary above is the last
-/// step's).
-void print_load_steps(std::ostream& out, const json& load_steps) {
+/// One line per load step: its force, stick zone (2D) and iterations (the summary above is the
+/// last step's).
+void print_load_steps(std::ostream& out, const json& load_steps, int dim) {
   out << "  load steps (the lines above are the last step's):\n"
-      << "    step  F_x            F_y            stick length   iterations\n";
+      << "    step  " << force_header(dim) << (dim == 3 ? "" : "stick length   ") << "iterations\n";
   for (const auto& s : load_steps["steps"]) {
     out << "    " << column(std::to_string(s["step"].get<int>()), 6);
     const json& contact = s["contact"];
-    const json stick = contact.contains("stick_zone") ? contact["stick_zone"]["length"] : json();
-    for (const json& v : {contact["force"][0], contact["force"][1], stick}) out << column(g(v), 15);
+    print_force(out, contact["force"]);
+    if (dim == 2)
+      out << column(g(contact.contains("stick_zone") ? contact["stick_zone"]["length"] : json()),
+                    15);
     out << iterations_text(s) << '\n';
   }
 }
@@ -170,6 +185,8 @@ void print_result_summary_3d(std::ostream& out, const json& r) {
         << " faces)\n";
   out << "  error estimator     J^1/2 = " << g(r["functional"]["estimator"], 3)
       << " (scaled units)\n";
+  if (r.contains("sweep")) print_sweep(out, r["sweep"], 3);
+  if (r.contains("load_steps")) print_load_steps(out, r["load_steps"], 3);
   if (r.contains("adaptivity")) print_adaptivity(out, r["adaptivity"]);
   if (r.contains("accuracy")) print_accuracy(out, r["accuracy"]);
   print_review(out, r);
@@ -190,8 +207,8 @@ void print_result_summary(std::ostream& out, const json& r) {
   if (r.contains("friction")) print_friction(out, r);
   if (r.contains("adaptivity")) print_adaptivity(out, r["adaptivity"]);
   if (r.contains("accuracy")) print_accuracy(out, r["accuracy"]);
-  if (r.contains("sweep")) print_sweep(out, r["sweep"]);
-  if (r.contains("load_steps")) print_load_steps(out, r["load_steps"]);
+  if (r.contains("sweep")) print_sweep(out, r["sweep"], 2);
+  if (r.contains("load_steps")) print_load_steps(out, r["load_steps"], 2);
   print_review(out, r);
 }
 

@@ -145,9 +145,7 @@ BOTH_REFUSE_3D = [
 # Read in 3D, and refused there for now (docs/case-format.md, "3D cases"): the schema accepts.
 READER_ONLY_3D = [
     ("3d_friction", setting("/boundary/bottom/friction", {"coefficient": 0.3})),
-    ("3d_load_steps", setting("/load_steps", [{"/material/mu": 2}])),
     ("3d_tnnmg", setting("/solver/method", "tnnmg")),
-    ("3d_c3_auto", setting("/weights", {"c3": "auto"})),
 ]
 
 BOTH_ACCEPT_3D = [
@@ -156,6 +154,9 @@ BOTH_ACCEPT_3D = [
     ("3d_expression_body_force", setting("/body_force", [0, 0, "0.01*z"])),
     ("3d_weights_and_units", setting("/weights", {"c3": 0.05})),
     ("3d_time_limit", setting("/solver/time_limit_s", 30)),
+    ("3d_load_steps", setting("/load_steps", [{"/material/mu": 2}])),
+    ("3d_sweep", setting("/sweep", {"pointer": "/material/mu", "values": [1, 2]})),
+    ("3d_c3_auto", setting("/weights", {"c3": "auto"})),
 ]
 
 # Rules only the reader can check.

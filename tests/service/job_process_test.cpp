@@ -77,6 +77,19 @@ TEST(JobProcessProtocol, FailuresCancelAndGarbage) {
   EXPECT_TRUE(truncated.malformed().empty());  // waiting for the rest
 }
 
+// A solve process killed on cancel leaves the last partial result it sent (its load steps).
+TEST(JobProcessProtocol, TheLastPartialResultIsKeptWhenTheProcessEndsWithoutAnOutcome) {
+  JobProcessReader reader(nullptr);
+  EXPECT_EQ(reader.partial_result(), "");
+  reader.feed(partial_message(R"({"load_steps": {"count": 1}})") + progress_message({1, 1, 1}));
+  reader.feed(partial_message(R"({"load_steps": {"count": 2}})").substr(0, 9));
+  EXPECT_EQ(reader.partial_result(), R"({"load_steps": {"count": 1}})");  // the second is not whole
+  reader.feed(partial_message(R"({"load_steps": {"count": 2}})").substr(9));
+  EXPECT_EQ(reader.partial_result(), R"({"load_steps": {"count": 2}})");
+  EXPECT_FALSE(reader.outcome());
+  EXPECT_TRUE(reader.malformed().empty());
+}
+
 TEST(MemoryBudget, ParsesSizesAsOperatorsWriteThem) {
   EXPECT_EQ(parse_byte_size("512M"), std::size_t{512} << 20);
   EXPECT_EQ(parse_byte_size("2G"), std::size_t{2} << 30);

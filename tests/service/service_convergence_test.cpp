@@ -152,5 +152,35 @@ TEST(ServiceConvergence, LoadStepsReportWhichStepRuns) {
   EXPECT_EQ(result["load_steps"]["count"], 3);
 }
 
+// Issue 50: a cancel keeps the load steps solved before it. The solve process is killed on
+// cancel; what it leaves is the partial result it sent after each step.
+TEST(ServiceConvergence, ACancelledJobKeepsTheLoadStepsSolvedBeforeIt) {
+  Service svc(1);
+  json stepped = testing::example("cattaneo_mindlin");
+  stepped["mesh"]["refinements"] = 1;
+  stepped["load_steps"] = json::array();
+  for (int k = 1; k <= 60; ++k)
+    stepped["load_steps"].push_back({{"/boundary/top/displacement/0", 0.0001 * k}});
+  const auto id = svc.submit(stepped);
+  svc.wait_for(id, [](const json& j) {
+    return testing::is_finished(j) || (j["progress"].is_object() && j["progress"]["step"] >= 3);
+  });
+  ASSERT_EQ(svc.client().Post(path(id, "cancel"))->status, 202);
+  const json done = svc.wait_for(id, [](const json& j) { return testing::is_finished(j); });
+  ASSERT_EQ(done["state"], "cancelled") << done.dump();
+  EXPECT_EQ(done["converged"], false);
+  EXPECT_EQ(done["stop_reason"], "cancelled");
+  const auto response = svc.client().Get(path(id, "result"));
+  ASSERT_EQ(response->status, 200) << response->body;
+  const json result = json::parse(response->body);
+  const int kept = result["load_steps"]["count"];
+  EXPECT_GE(kept, 3);
+  EXPECT_LT(kept, 61);
+  EXPECT_EQ(result["load_steps"]["steps"].size(), static_cast<std::size_t>(kept));
+  EXPECT_EQ(result["load_steps"]["stopped_before"]["reason"], "cancelled");
+  EXPECT_EQ(result["stop_reason"], "cancelled");
+  EXPECT_TRUE(result["review_required"].get<bool>());
+}
+
 }  // namespace
 }  // namespace fosls::service

@@ -132,5 +132,47 @@ TEST(LoadStepStops, AStepMayGiveAnyStringTheFieldItLandsInAccepts) {
   EXPECT_NE(errors[0].detail.find("/solver/method"), std::string::npos) << errors[0].detail;
 }
 
+TEST(LoadStepStops, ACancelKeepsTheStepsSolvedBeforeItAndEachStepLeavesThemBehind) {
+  const CaseSpec spec = stepped_case(4, 0);
+  int calls = 0;
+  std::vector<json> partials;
+  RunControl control;
+  control.on_partial = [&partials](const json& r) { partials.push_back(r); };
+  const RunOutput out = run_load_steps(spec, control, [&](const CaseSpec&, const RunControl&) {
+    if (calls == 3) {  // cancelled during step 3: the solve returns at once
+      RunOutput cancelled;
+      cancelled.cancelled = true;
+      return cancelled;
+    }
+    return answer(calls++);
+  });
+  EXPECT_TRUE(out.cancelled);
+  const json& r = out.result;
+  EXPECT_EQ(r["stop_reason"], "cancelled");
+  EXPECT_TRUE(r["cancelled"].get<bool>());
+  EXPECT_FALSE(r["converged"].get<bool>());
+  EXPECT_EQ(r["load_steps"]["count"], 3);
+  EXPECT_EQ(r["load_steps"]["stopped_before"]["reason"], "cancelled");
+  EXPECT_EQ(r["contact"]["force"][1], -3.0);
+  EXPECT_TRUE(has_warning(r, "load_steps_partial"));
+  // After steps 0, 1 and 2 (not after the last), what a kill would leave: so far the same.
+  ASSERT_EQ(partials.size(), 3u);
+  EXPECT_EQ(partials[2], r);
+  EXPECT_EQ(partials[0]["load_steps"]["count"], 1);
+  EXPECT_EQ(partials[0]["load_steps"]["stopped_before"]["step"], 1);
+  EXPECT_EQ(partials[0]["stop_reason"], "cancelled");
+}
+
+TEST(LoadStepStops, ACancelOfTheCaseAsGivenHasNoStepsToKeep) {
+  const CaseSpec spec = stepped_case(2, 0);
+  const RunOutput out = run_load_steps(spec, {}, [](const CaseSpec&, const RunControl&) {
+    RunOutput cancelled;
+    cancelled.cancelled = true;
+    return cancelled;
+  });
+  EXPECT_TRUE(out.cancelled);
+  EXPECT_TRUE(out.result.is_null() || !out.result.contains("load_steps"));
+}
+
 }  // namespace
 }  // namespace fosls

@@ -217,5 +217,23 @@ TEST(ResultWarnings, HertzIsRecognisedByGeometry) {
   EXPECT_EQ(r["contact"]["shape"]["type"], "line");
 }
 
+// The same rule in 3D (the tangential part by the projector onto the contact plane): hertz_3d's
+// top moved sideways by (0.003, 0.004) slides the ball by 0.005 along (0.6, 0.8, 0).
+TEST(ResultWarnings, ATangentialDisplacementIn3dIsFoundByTheSameRule) {
+  json j = testing::load_shipped_example("3d/hertz_3d");
+  j["boundary"]["top"]["displacement"] = {0.003, 0.004, -0.01};
+  const auto warning = tangential_load_warning(*read_case(j).spec);
+  ASSERT_TRUE(warning);
+  EXPECT_NE(warning->message.find("of 0.005 "), std::string::npos) << warning->message;
+  EXPECT_NE(warning->message.find("(0.6, 0.8, 0)"), std::string::npos) << warning->message;
+  j["boundary"]["top"]["displacement"] = {0, 0, -0.01};
+  EXPECT_FALSE(tangential_load_warning(*read_case(j).spec));
+  // Held elsewhere at another tangential displacement: sheared, not slid.
+  j["boundary"]["top"]["displacement"] = {0.003, 0.004, -0.01};
+  j["mesh"]["builtin"]["quarter"] = true;
+  j["boundary"]["symmetry_x"] = {{"type", "dirichlet"}, {"displacement", {0, nullptr, nullptr}}};
+  EXPECT_FALSE(tangential_load_warning(*read_case(j).spec));
+}
+
 }  // namespace
 }  // namespace fosls

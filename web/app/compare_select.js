@@ -2,7 +2,7 @@
 // gap (and sweep curve) are then drawn dashed over the shown job's.
 
 /** Jobs that have a result: succeeded, or failed for not converging (the result is kept). */
-const hasResult = (job) => job.state === 'succeeded' || (job.state === 'failed' && job.converged === false);
+const hasResult = (job) => job.state === 'succeeded' || ((job.state === 'failed' || job.state === 'cancelled') && job.converged === false);
 
 export class CompareSelect {
   /** select: the <select>; onChange(job or null): called when the user picks another. */

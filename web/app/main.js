@@ -296,7 +296,13 @@ function showJob(job) {
       if (job.converged === false) loadResult(job);
       break;
     case 'cancelled':
-      summary.textContent = 'Cancelled: there is no result.';
+      // A job with load steps keeps the steps solved before the cancel (converged false).
+      if (job.converged === false) {
+        summary.textContent = 'Cancelled: the load steps solved before the cancel are kept. Loading them…';
+        loadResult(job);
+      } else {
+        summary.textContent = 'Cancelled: there is no result.';
+      }
       break;
     case 'succeeded':
       summary.textContent = 'Succeeded. Loading the result…';
