@@ -19,7 +19,8 @@ ObjectRulePtr accuracy_rule(const CaseReadOptions& options) {
                      "estimated error is below it"),
       optional_field("max_dofs", finest_level_dofs_value(options.limits),
                      std::min(a.max_dofs, options.limits.max_dofs),
-                     "DOFs of the finest level (2 per vertex and 2 per edge, fixed ones "
+                     "DOFs of the finest level (2 per vertex and edge in 2D, 3 per vertex and face "
+                     "in 3D; fixed ones "
                      "included) that a refinement may not exceed: a refinement that would give "
                      "more is not made and the run stops without the accuracy"),
   };

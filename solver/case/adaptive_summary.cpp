@@ -21,11 +21,13 @@ double estimator_reduction(const std::vector<AdaptiveStepRecord>& steps) {
 /// |F_k − F_(k−1)| / |F_k| of the last step; null for one step or a zero force.
 nlohmann::json last_force_change(const std::vector<AdaptiveStepRecord>& steps) {
   if (steps.size() < 2) return nullptr;
-  const auto& a = steps[steps.size() - 2].force;
-  const auto& b = steps.back().force;
-  const double size = std::hypot(b[0], b[1]);
+  const ForceComponents& a = steps[steps.size() - 2].force;
+  const ForceComponents& b = steps.back().force;
+  const double size = force_norm(b);
   if (!(size > 0)) return nullptr;
-  return std::hypot(b[0] - a[0], b[1] - a[1]) / size;
+  ForceComponents change = b;
+  for (std::size_t i = 0; i < change.size(); ++i) change[i] -= a[i];
+  return force_norm(change) / size;
 }
 
 std::string why(const std::string& reason, const AdaptivitySpec& a) {
@@ -45,15 +47,14 @@ std::string why(const std::string& reason, const AdaptivitySpec& a) {
 
 }  // namespace
 
-void add_adaptive_summary(nlohmann::json& adaptivity, const CaseSolution& solution,
-                          const AdaptivitySpec& spec) {
-  const auto& steps = solution.steps;
+void add_adaptive_summary(nlohmann::json& adaptivity, const std::vector<AdaptiveStepRecord>& steps,
+                          const std::string& stop_reason, const AdaptivitySpec& spec) {
   if (steps.empty()) return;
   const double reduction = estimator_reduction(steps);
   const nlohmann::json change = last_force_change(steps);
   adaptivity["estimator_reduction"] = reduction;
   adaptivity["last_force_change"] = change;
-  std::string m = "stopped: " + why(solution.stop_reason, spec) + ". The estimator J^1/2 fell to " +
+  std::string m = "stopped: " + why(stop_reason, spec) + ". The estimator J^1/2 fell to " +
                   num(reduction) + " of its value on the starting mesh";
   if (change.is_number())
     m += "; the force changed by " + num(100.0 * change.get<double>(), 2) + " % in the last step";

@@ -22,12 +22,14 @@ ObjectRulePtr adaptivity_rule(const CaseReadOptions& options) {
                      "refinement steps at most: the case is solved steps + 1 times"),
       optional_field("max_dofs", finest_level_dofs_value(options.limits),
                      std::min(a.max_dofs, options.limits.max_dofs),
-                     "DOFs of the finest level (2 per vertex and 2 per edge, fixed ones "
+                     "DOFs of the finest level (2 per vertex and edge in 2D, 3 per vertex and face "
+                     "in 3D; fixed ones "
                      "included) that a refinement may not exceed: a refinement that would give "
                      "more is not made and the loop stops"),
-      optional_field("theta", number_value({0.0, 1.0, true, false}), a.theta,
-                     "Dörfler parameter: each step refines the fewest triangles whose error "
-                     "indicators make up theta of the functional J"),
+      optional_field(
+          "theta", number_value({0.0, 1.0, true, false}), a.theta,
+          "Dörfler parameter: each step refines the fewest triangles (tetrahedra) whose error "
+          "indicators make up theta of the functional J"),
       optional_field("target", number_value({0.0, 1.0, false, true}), a.target,
                      "stop once the estimator J^½ has fallen to target times its value on the "
                      "starting mesh (0: no target, only steps and max_dofs stop the loop)"),

@@ -186,7 +186,8 @@ CaseReadResult read_case(const nlohmann::json& j, const CaseReadOptions& options
   const auto solver_gives = [&j](const char* key) {
     return j.contains("solver") && j["solver"].contains(key);
   };
-  if ((spec.adaptivity || spec.accuracy) && !solver_gives("tolerance"))
+  // 3D keeps its number: its discretisation rule is refused for now (dimension_support.cpp).
+  if ((spec.adaptivity || spec.accuracy) && !solver_gives("tolerance") && spec.dimension == 2)
     spec.solver.stopping = StoppingRule::kDiscretisation;
   if (spec.accuracy && !solver_gives("discretisation_fraction"))
     spec.solver.discretisation_fraction = kAccuracyDiscretisationFraction;

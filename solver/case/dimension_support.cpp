@@ -6,24 +6,6 @@ namespace fosls {
 
 namespace {
 
-/// Sections whose loops run several solves or choose the levels: coming with the one
-/// finite-element stack for both dimensions (docs/architecture.md, "One case path for 2D and 3D").
-struct Section {
-  const char* key;
-  const char* why;
-};
-
-constexpr Section kComing[] = {
-    {"adaptivity",
-     "adaptive refinement is 2D only for now: the 3D levels are uniform refinements (each "
-     "tetrahedron into 8) until newest-vertex bisection of tetrahedra reaches the case layer; "
-     "refine with mesh.refinements"},
-    {"accuracy",
-     "a requested force accuracy is 2D only for now: its levels and its estimate of the force's "
-     "error come to 3D with the one finite-element stack; compare the force over "
-     "mesh.refinements (fosls-contact bench)"},
-};
-
 void check_contact(const std::string& name, const BoundaryCondition& bc,
                    std::vector<CaseError>& errors) {
   const std::string at = child_pointer("/boundary", name);
@@ -39,8 +21,6 @@ void check_contact(const std::string& name, const BoundaryCondition& bc,
 std::vector<CaseError> dimension_support_problems(const nlohmann::json& j, const CaseSpec& spec) {
   std::vector<CaseError> errors;
   if (spec.dimension != 3) return errors;
-  for (const Section& s : kComing)
-    if (j.contains(s.key)) errors.push_back({std::string("/") + s.key, s.why});
   if (spec.mesh.order == 2)
     errors.push_back({"/mesh/order",
                       "order 2 is 2D only for now: the order-2 space P2 × RT1 is built on "

@@ -10,8 +10,18 @@ namespace fosls {
 
 namespace {
 
-double distance(const std::array<double, 2>& a, const std::array<double, 2>& b) {
-  return std::hypot(a[0] - b[0], a[1] - b[1]);
+double distance(const ForceComponents& a, const ForceComponents& b) {
+  ForceComponents d = a;
+  for (std::size_t i = 0; i < d.size(); ++i) d[i] -= b[i];
+  return force_norm(d);
+}
+
+/// (a − b)·c.
+double dot_of_difference(const ForceComponents& a, const ForceComponents& b,
+                         const ForceComponents& c) {
+  double s = 0.0;
+  for (std::size_t i = 0; i < c.size(); ++i) s += (a[i] - b[i]) * c[i];
+  return s;
 }
 
 nlohmann::json number_or_null(double v) {
@@ -25,6 +35,11 @@ std::string estimate_text(const std::vector<AdaptiveStepRecord>& steps) {
   if (steps.empty()) return "no level solved";
   const ForceErrorEstimate& e = steps.back().force_error;
   if (e.available()) return "the estimated relative error of the force is " + num(e.estimate);
+  if (e.growing)
+    return "no error estimate: the force's change grew from " +
+           num(steps[steps.size() - 2].force_error.change) + " to " + num(e.change) +
+           " in the last level, so the levels are not yet where the change shrinks by a steady "
+           "ratio and predicts the error";
   for (auto s = steps.rbegin() + 1; s != steps.rend(); ++s)
     if (s->force_error.available())
       return "the last level has no estimate (its solve did not converge); the level before, "
@@ -55,11 +70,15 @@ std::string stop_message(const std::string& reason, const std::vector<AdaptiveSt
 
 }  // namespace
 
-ForceErrorEstimate estimate_force_error(const std::vector<std::array<double, 2>>& forces) {
+double force_norm(const ForceComponents& f) {
+  return f.size() == 3 ? std::hypot(f[0], f[1], f[2]) : std::hypot(f[0], f[1]);
+}
+
+ForceErrorEstimate estimate_force_error(const std::vector<ForceComponents>& forces) {
   ForceErrorEstimate e;
   const std::size_t k = forces.size();
   if (k < 2) return e;
-  const double size = std::hypot(forces[k - 1][0], forces[k - 1][1]);
+  const double size = force_norm(forces[k - 1]);
   if (!(size > 0)) return e;
   const double change = distance(forces[k - 1], forces[k - 2]);
   e.change = change / size;
@@ -71,29 +90,33 @@ ForceErrorEstimate estimate_force_error(const std::vector<std::array<double, 2>>
   e.ratio_observed = true;
   e.estimate = e.change / (e.ratio - 1.0);
   // The changes' components along F_k: of opposite signs, the errors cancel in a change.
-  const auto along = [&](const std::array<double, 2>& a, const std::array<double, 2>& b) {
-    return (a[0] - b[0]) * forces[k - 1][0] + (a[1] - b[1]) * forces[k - 1][1];
+  const auto along = [&](const ForceComponents& a, const ForceComponents& b) {
+    return dot_of_difference(a, b, forces[k - 1]);
   };
   if (along(forces[k - 1], forces[k - 2]) * along(forces[k - 2], forces[k - 3]) < 0) {
     e.monotone = false;
     e.estimate = std::max(change, previous) / size;
+  } else if (change > previous) {
+    e.growing = true;
+    e.estimate = ForceErrorEstimate::kNone;
   }
   return e;
 }
 
 std::string accuracy_stop_reason(const ForceErrorEstimate& e, const AccuracySpec& spec,
-                                 const std::vector<std::array<double, 2>>& forces) {
+                                 const std::vector<ForceComponents>& forces) {
   // A zero force on the first level may be a contact the coarse mesh does not resolve.
-  const auto zero = [](const std::array<double, 2>& f) { return !(std::hypot(f[0], f[1]) > 0); };
+  const auto zero = [](const ForceComponents& f) { return !(force_norm(f) > 0); };
   if (forces.size() >= 2 && zero(forces.back()) && zero(forces[forces.size() - 2]))
     return "no_force";
   if (e.available() && e.estimate <= spec.force) return "reached";
   return "";
 }
 
-nlohmann::json accuracy_json(const CaseSolution& solution, const AccuracySpec& spec) {
+nlohmann::json accuracy_json(const std::vector<AdaptiveStepRecord>& records,
+                             const std::string& stop_reason, const AccuracySpec& spec) {
   nlohmann::json steps = nlohmann::json::array();
-  for (const AdaptiveStepRecord& s : solution.steps)
+  for (const AdaptiveStepRecord& s : records)
     steps.push_back({{"refinements", s.levels - 1},
                      {"dofs", s.dofs},
                      {"dofs_total", s.dofs_total},
@@ -107,14 +130,14 @@ nlohmann::json accuracy_json(const CaseSolution& solution, const AccuracySpec& s
                      {"converged", s.converged},
                      {"time_s", s.time_s}});
   const ForceErrorEstimate last =
-      solution.steps.empty() ? ForceErrorEstimate{} : solution.steps.back().force_error;
+      records.empty() ? ForceErrorEstimate{} : records.back().force_error;
   return {{"force", spec.force},
           {"max_dofs", spec.max_dofs},
-          {"reached", solution.stop_reason == "reached"},
-          {"stop_reason", solution.stop_reason},
+          {"reached", stop_reason == "reached"},
+          {"stop_reason", stop_reason},
           {"estimate", number_or_null(last.estimate)},
           {"steps", steps},
-          {"stop_message", stop_message(solution.stop_reason, solution.steps, spec)}};
+          {"stop_message", stop_message(stop_reason, records, spec)}};
 }
 
 }  // namespace fosls

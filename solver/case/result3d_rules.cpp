@@ -56,7 +56,9 @@ ObjectRulePtr timing3d_rule() {
       {output_field("mesh_s", number(), "s", "coarse mesh, refinements and the groups' checks"),
        output_field("assembly_s", number(), "s",
                     "problem data, spaces and assembly of every level"),
-       output_field("solve_s", number(), "s", "the solver's set-up and iterations"),
+       output_field("solve_s", number(), "s",
+                    "the solver's set-up and iterations (of an adaptive or accuracy run: "
+                    "every step's, with the estimation and refinement between them)"),
        output_field("total_s", number(), "s", "the whole run")});
 }
 
@@ -114,7 +116,14 @@ std::vector<FieldRule> solution3d_fields() {
           output_field("solver_statistics", object_value(statistics_rule()), "",
                        "counts and times of the multilevel method's parts, as in 2D (the contact "
                        "strip's exact solves in strip_s)"),
-          output_field("timing", object_value(timing3d_rule()), "", "wall-clock times")};
+          output_field("timing", object_value(timing3d_rule()), "", "wall-clock times"),
+          optional_field("adaptivity", object_value(adaptivity_result_rule(3)), nullptr,
+                         "the adaptive loop, step by step, as in 2D (only when the case has an "
+                         "adaptivity section; the other fields describe its last step)"),
+          optional_field("accuracy", object_value(accuracy_result_rule(3)), nullptr,
+                         "the refinement towards the requested force accuracy, level by level, "
+                         "as in 2D (only when the case has an accuracy section; the other fields "
+                         "describe its last level)")};
 }
 
 }  // namespace

@@ -26,10 +26,10 @@ ObjectRulePtr statistics_rule();
 /// The `weights` echo: the weights as used, c3's rule and limit, the length scale.
 ObjectRulePtr weights_echo_rule();
 
-/// The `adaptivity` object of an adaptive run (result_refinement_rules.cpp).
-ObjectRulePtr adaptivity_result_rule();
+/// The `adaptivity` object of an adaptive run (result_refinement_rules.cpp) of dimension dim.
+ObjectRulePtr adaptivity_result_rule(int dim = 2);
 /// The `accuracy` object of a run to a requested force accuracy (result_refinement_rules.cpp).
-ObjectRulePtr accuracy_result_rule();
+ObjectRulePtr accuracy_result_rule(int dim = 2);
 /// A sweep's object, with its points in `dim` dimensions (result_series_rules.cpp).
 ObjectRulePtr sweep_result_rule(ValueRule reasons, int dim);
 /// The `load_steps` object: every step a result of `result_fields` but its history.

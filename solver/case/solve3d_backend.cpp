@@ -10,6 +10,7 @@
 
 #include "assembly/contact_weight.hpp"
 #include "assembly/discretization.hpp"
+#include "case/adaptive_runner.hpp"
 #include "case/case3d_result.hpp"
 #include "case/case_admission.hpp"
 #include "case/case_error.hpp"
@@ -140,12 +141,13 @@ RunOutput run_3d_point(const CaseSpec& spec, const RunControl& control, const Ca
   check_size_of(tet_mesh_unknowns(coarse), true, spec, limits);
   CaseSpec used = spec;  // the case with the weights as used
   used.weights.length_scale = length_scale(coarse);
+  // The coarse mesh's extent names a body too thin for double precision (indefinite_3d).
+  const TetMesh coarse_for_messages = coarse;
   TetHierarchy meshes = build_tet_hierarchy(std::move(coarse), spec.mesh.refinements);
   deadline.check("refining the mesh");
   check_groups(spec, meshes.finest());
   const double mesh_s = seconds_since(t0);
 
-  const auto t1 = Clock::now();
   ProblemData<3> data = problem_data<3>(used, meshes.finest());
   if (used.weights.c3_auto && has_contact(used)) {
     // As in 2D: c3 = min(0.1, c3*/2), c3* on the finest level of at most 20 000 unknowns.
@@ -153,54 +155,46 @@ RunOutput run_3d_point(const CaseSpec& spec, const RunControl& control, const Ca
     used.weights.c3_limit = limit.limit;
     used.weights.c3 = data.weights.c3 = automatic_contact_weight(limit);
   }
-  const Discretization<3> disc(std::move(meshes), std::move(data), deadline);
-  const double assembly_s = seconds_since(t1);
-
-  const auto t2 = Clock::now();
-  const BoxQp& qp = disc.problem().qp;
-  Vector x = Vector::Zero(qp.size());
-  SolverOptions options = spec.solver;
-  // A continued solution (load steps, sweeps) is a better start than the nested iteration would
-  // compute again on the coarser levels, as in 2D.
-  if (control.start && control.start->size() == qp.size()) {
-    x = *control.start;
-    options.nested = false;
-  }
-  SolverObserver observer;
-  observer.on_iteration = control.on_iteration;
+  CaseSolveObserver observer;
+  observer.solver.on_iteration = control.on_iteration;
   if (control.cancel)
-    observer.cancelled = [&control] { return control.cancel->load(std::memory_order_relaxed); };
-  if (deadline.is_set()) observer.out_of_time = [deadline] { return deadline.passed(); };
-  if (control.on_step) control.on_step(0, qp.size());
-  const bool multilevel = spec.solver.method == SolverMethod::kMmg;
-  SolverReport report;
+    observer.solver.cancelled = [&control] {
+      return control.cancel->load(std::memory_order_relaxed);
+    };
+  if (deadline.is_set()) observer.solver.out_of_time = [deadline] { return deadline.passed(); };
+  observer.deadline = deadline;
+  observer.on_step = control.on_step;
+  // The one loop of both dimensions (adaptive_runner.hpp): a plain solve is its first step.
+  CaseSolutionOf<3> solution;
   try {
-    LevelHierarchy levels = multilevel ? disc.build_level_hierarchy() : LevelHierarchy{};
-    deadline.check("building the level hierarchy");
-    report = solve_box_qp(qp, levels, options, observer, x);
+    solution = solve_case_levels<3>(std::move(meshes), data, spec, observer, control.start);
   } catch (const NonFiniteError& e) {
     throw CaseException({non_finite_problem(e.what())});
   } catch (const IndefiniteSystemError&) {
-    throw indefinite_3d(used, disc.meshes().finest());
+    throw indefinite_3d(used, coarse_for_messages);
   }
-  const double solve_s = seconds_since(t2);
 
   RunOutput out;
-  if (report.cancelled) {
+  if (solution.report.cancelled) {
     out.cancelled = true;
     return out;
   }
-  out.result = case3d_result(used, disc, x, report);
+  const Discretization<3>& disc = *solution.disc;
+  out.result = case3d_result(used, disc, solution.x, solution.report);
+  if (spec.adaptivity) out.result["adaptivity"] = adaptivity_json(solution, *spec.adaptivity);
+  if (spec.accuracy) out.result["accuracy"] = accuracy_json(solution, *spec.accuracy);
+  // Estimation and refinement between the solves of an adaptive run count as solving.
+  const double total_s = seconds_since(t0);
   out.result["timing"] = {{"mesh_s", mesh_s},
-                          {"assembly_s", assembly_s},
-                          {"solve_s", solve_s},
-                          {"total_s", seconds_since(t0)}};
+                          {"assembly_s", solution.assembly_s},
+                          {"solve_s", total_s - mesh_s - solution.assembly_s},
+                          {"total_s", total_s}};
   if (control.want_vtu) {
     const FoslsAssembler<3>& a = disc.assembler();
-    out.vtu = write_tet_vtu(a, disc.problem(), a.full_vector(disc.problem(), x),
+    out.vtu = write_tet_vtu(a, disc.problem(), solution.full,
                             control.vtu_ascii ? VtuEncoding::kAscii : VtuEncoding::kBinary);
   }
-  out.solution = std::move(x);
+  out.solution = std::move(solution.x);
   return out;
 }
 

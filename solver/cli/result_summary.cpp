@@ -187,6 +187,8 @@ void print_result_summary_3d(std::ostream& out, const json& r) {
       << " (scaled units)\n";
   if (r.contains("sweep")) print_sweep(out, r["sweep"], 3);
   if (r.contains("load_steps")) print_load_steps(out, r["load_steps"], 3);
+  if (r.contains("adaptivity")) print_adaptivity(out, r["adaptivity"]);
+  if (r.contains("accuracy")) print_accuracy(out, r["accuracy"]);
   print_review(out, r);
 }
 

@@ -7,6 +7,7 @@
 
 #include <filesystem>
 #include <fstream>
+#include <functional>
 #include <nlohmann/json.hpp>
 #include <string>
 
@@ -171,6 +172,55 @@ TEST(Cli3d, EstimateChecksA3dCaseAndPrintsEachMethodsMemoryAndTime) {
   EXPECT_EQ(refused.exit_code, 2);
   EXPECT_NE(refused.err.find("error: /mesh/refinements: the solve needs about"), std::string::npos)
       << refused.err;
+}
+
+/// F_z of `fosls-contact solve` on the shipped hertz_3d with `change` applied, and the result.
+json solved_hertz_3d(const std::function<void(json&)>& change) {
+  json j = json::parse(fosls_contact({"example", "hertz_3d"}).out);
+  change(j);
+  const CliRun solve = fosls_contact({"solve", "-"}, j.dump());
+  EXPECT_EQ(solve.exit_code, 0) << solve.err;
+  // The summary says how the loop ended, as 2D's does.
+  if (j.contains("adaptivity")) EXPECT_NE(solve.err.find("adaptive run "), std::string::npos);
+  if (j.contains("accuracy")) EXPECT_NE(solve.err.find("force accuracy "), std::string::npos);
+  return solve.out.empty() ? json::object() : json::parse(solve.out);
+}
+
+double force_z(const json& r) { return r["contact"]["force"][2].get<double>(); }
+
+// The adaptive and the accuracy loop of 2D run a 3D case through the same loop (issue 47): the
+// accuracy loop's last level is the plain solve's mesh at its refinements (the same force to the
+// solver's tolerance), and the adaptive loop's last force is within the change one uniform
+// refinement makes at that resolution (F_z 0.00399 at refinements 1, 0.00378 at 2 and after four
+// adaptive steps from 1).
+TEST(Cli3d, AdaptivityAndAccuracyRunAndAgreeWithThePlainSolve) {
+  const json plain = solved_hertz_3d([](json& j) { j["mesh"]["refinements"] = 1; });
+  const json accuracy = solved_hertz_3d([](json& j) {
+    j["mesh"]["refinements"] = 0;
+    j["accuracy"] = {{"force", 1e-4}, {"max_dofs", 20000}};  // refinements 0 and 1 only
+    j["solver"] = {{"tolerance", 1e-8}};
+  });
+  ASSERT_TRUE(accuracy.contains("accuracy"));
+  EXPECT_EQ(accuracy["accuracy"]["stop_reason"], "max_dofs");
+  ASSERT_EQ(accuracy["accuracy"]["steps"].size(), 2u);
+  EXPECT_EQ(accuracy["levels"], plain["levels"]);
+  EXPECT_EQ(accuracy["dofs"], plain["dofs"]);
+  EXPECT_NEAR(force_z(accuracy), force_z(plain), 1e-6 * force_z(plain));
+  EXPECT_TRUE(accuracy["accuracy"]["estimate"].is_number());
+
+  const json adaptive = solved_hertz_3d([](json& j) {
+    j["mesh"]["refinements"] = 1;
+    j["adaptivity"] = {{"steps", 2}, {"theta", 0.5}};
+  });
+  ASSERT_TRUE(adaptive.contains("adaptivity"));
+  const json& steps = adaptive["adaptivity"]["steps"];
+  ASSERT_EQ(steps.size(), 3u);
+  EXPECT_TRUE(steps[0].contains("tetrahedra"));
+  EXPECT_EQ(steps[0]["force"].size(), 3u);
+  EXPECT_NEAR(steps[0]["force"][2].get<double>(), force_z(plain), 1e-6 * force_z(plain));
+  EXPECT_GT(adaptive["dofs"].get<long long>(), plain["dofs"].get<long long>());
+  EXPECT_NEAR(force_z(adaptive), force_z(plain), 0.08 * force_z(plain));
+  EXPECT_LT(steps[2]["estimator"].get<double>(), steps[0]["estimator"].get<double>());
 }
 
 }  // namespace
