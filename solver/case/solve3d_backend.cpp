@@ -88,7 +88,7 @@ void check_groups(const CaseSpec& spec, const TetMesh& mesh) {
 
 /// A FOSLS matrix that is not positive definite in 3D: a body too thin for double precision
 /// (its stiffness across and along differ by more than it can hold), or the weights.
-CaseException indefinite_3d(const CaseSpec& spec, const TetMesh& mesh) {
+CaseException indefinite_3d(const CaseSpec& spec, const TetMesh& mesh, const std::string& found) {
   Point3 lo = mesh.vertex(0), hi = mesh.vertex(0);
   for (int v = 1; v < mesh.num_vertices(); ++v) {
     lo = lo.cwiseMin(mesh.vertex(v));
@@ -112,7 +112,8 @@ CaseException indefinite_3d(const CaseSpec& spec, const TetMesh& mesh) {
                         " computed on a coarser level; give a smaller c3 by hand"
                   : std::string("give a smaller c3, or \"auto\" to have it chosen"))
     << "); with null displacement components, also check that the dirichlet groups leave no "
-       "rigid motion";
+       "rigid motion (found by the solver: "
+    << found << ")";
   return CaseException("/weights", m.str());
 }
 
@@ -170,8 +171,8 @@ RunOutput run_3d_point(const CaseSpec& spec, const RunControl& control, const Ca
     solution = solve_case_levels<3>(std::move(meshes), data, spec, observer, control.start);
   } catch (const NonFiniteError& e) {
     throw CaseException({non_finite_problem(e.what())});
-  } catch (const IndefiniteSystemError&) {
-    throw indefinite_3d(used, coarse_for_messages);
+  } catch (const IndefiniteSystemError& e) {
+    throw indefinite_3d(used, coarse_for_messages, e.what());
   }
 
   RunOutput out;
