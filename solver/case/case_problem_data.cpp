@@ -2,6 +2,7 @@
 
 #include <string>
 
+#include "assembly/contact_weight.hpp"
 #include "case/case_error.hpp"
 #include "case/expression.hpp"
 
@@ -104,7 +105,18 @@ ProblemData<dim> problem_data(const CaseSpec& spec, const SimplexMesh<dim>& mesh
   return d;
 }
 
+template <int dim>
+void choose_contact_weight(CaseSpec& used, const SimplexHierarchy<dim>& meshes,
+                           ProblemData<dim>& data) {
+  if (!used.weights.c3_auto || !has_contact(used)) return;
+  const ContactWeightLimit limit = contact_weight_limit(meshes, data);
+  used.weights.c3_limit = limit.limit;
+  used.weights.c3 = data.weights.c3 = automatic_contact_weight(limit);
+}
+
 template ProblemData<2> problem_data<2>(const CaseSpec&, const SimplexMesh<2>&);
 template ProblemData<3> problem_data<3>(const CaseSpec&, const SimplexMesh<3>&);
+template void choose_contact_weight<2>(CaseSpec&, const SimplexHierarchy<2>&, ProblemData<2>&);
+template void choose_contact_weight<3>(CaseSpec&, const SimplexHierarchy<3>&, ProblemData<3>&);
 
 }  // namespace fosls

@@ -13,4 +13,10 @@ namespace fosls {
 template <int dim>
 ProblemData<dim> problem_data(const CaseSpec& spec, const SimplexMesh<dim>& mesh);
 
+/// With c3 "auto" and a contact group: c3 chosen from the definiteness limit on `meshes`
+/// (assembly/contact_weight.hpp), set in `data` and recorded in `used.weights` (c3, c3_limit).
+template <int dim>
+void choose_contact_weight(CaseSpec& used, const SimplexHierarchy<dim>& meshes,
+                           ProblemData<dim>& data);
+
 }  // namespace fosls

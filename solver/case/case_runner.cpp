@@ -2,6 +2,7 @@
 
 #include "case/load_step_runner.hpp"
 #include "case/solve3d_backend.hpp"
+#include "case/solve_observer.hpp"
 #include "case/sweep_runner.hpp"
 
 #include <chrono>
@@ -149,20 +150,8 @@ RunOutput run_point(const CaseSpec& spec, const RunControl& control, const CaseL
   const auto t_mesh = Clock::now();
   RunMemory memory;
   memory.mesh_mib = peak_rss_mib();
-  if (has_contact(spec) && spec.weights.c3_auto) {
-    const ContactWeightLimit limit = contact_weight_limit(meshes, data);
-    used.weights.c3_limit = limit.limit;
-    used.weights.c3 = data.weights.c3 = automatic_contact_weight(limit);
-  }
-  CaseSolveObserver observer;
-  if (control.on_iteration) observer.solver.on_iteration = control.on_iteration;
-  if (control.cancel)
-    observer.solver.cancelled = [&control] {
-      return control.cancel->load(std::memory_order_relaxed);
-    };
-  if (deadline.is_set()) observer.solver.out_of_time = [deadline] { return deadline.passed(); };
-  observer.deadline = deadline;
-  observer.on_step = control.on_step;
+  choose_contact_weight<2>(used, meshes, data);
+  const CaseSolveObserver observer = solve_observer(control, deadline);
   CaseSolution solution;
   try {
     solution = solve_case_levels(std::move(meshes), data, spec, observer, control.start);

@@ -8,7 +8,6 @@
 #include <cmath>
 #include <sstream>
 
-#include "assembly/contact_weight.hpp"
 #include "assembly/discretization.hpp"
 #include "case/adaptive_runner.hpp"
 #include "case/case3d_result.hpp"
@@ -19,6 +18,7 @@
 #include "case/expression.hpp"
 #include "case/mesh_factory.hpp"
 #include "case/solve3d_checks.hpp"
+#include "case/solve_observer.hpp"
 #include "core/indefinite_system.hpp"
 #include "core/non_finite.hpp"
 #include "mesh/gmsh_mesh.hpp"
@@ -150,21 +150,8 @@ RunOutput run_3d_point(const CaseSpec& spec, const RunControl& control, const Ca
   const double mesh_s = seconds_since(t0);
 
   ProblemData<3> data = problem_data<3>(used, meshes.finest());
-  if (used.weights.c3_auto && has_contact(used)) {
-    // As in 2D: c3 = min(0.1, c3*/2), c3* on the finest level of at most 20 000 unknowns.
-    const ContactWeightLimit limit = contact_weight_limit(meshes, data);
-    used.weights.c3_limit = limit.limit;
-    used.weights.c3 = data.weights.c3 = automatic_contact_weight(limit);
-  }
-  CaseSolveObserver observer;
-  observer.solver.on_iteration = control.on_iteration;
-  if (control.cancel)
-    observer.solver.cancelled = [&control] {
-      return control.cancel->load(std::memory_order_relaxed);
-    };
-  if (deadline.is_set()) observer.solver.out_of_time = [deadline] { return deadline.passed(); };
-  observer.deadline = deadline;
-  observer.on_step = control.on_step;
+  choose_contact_weight<3>(used, meshes, data);  // as in 2D
+  const CaseSolveObserver observer = solve_observer(control, deadline);
   // The one loop of both dimensions (adaptive_runner.hpp): a plain solve is its first step.
   CaseSolutionOf<3> solution;
   try {
