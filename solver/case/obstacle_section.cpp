@@ -152,9 +152,10 @@ void check_direction(const json& j, const std::string& pointer, RuleChecker& che
       !checker.usable(j, pointer, {"obstacle", "direction"}))
     return;
   if (j["direction"] == "obstacle_normal" && j["obstacle"]["type"] == "gap")
-    checker.error(child_pointer(pointer, "direction"),
-                  "direction obstacle_normal needs a plane or circle obstacle; a gap obstacle has "
-                  "no normal of its own (use body_normal)");
+    checker.error(
+        child_pointer(pointer, "direction"),
+        "direction obstacle_normal needs a plane, circle (2D) or sphere (3D) obstacle; a gap "
+        "obstacle has no normal of its own (use body_normal)");
 }
 
 /// The direction, and a plane given by the condition's own point and normal.
