@@ -2,6 +2,8 @@
 
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
+#include <string_view>
 
 #include "job_store.hpp"
 
@@ -88,6 +90,18 @@ void PostgresConnection::exec(const std::string& sql) {
   Result r(PQexec(conn_.get(), sql.c_str()));
   const auto status = r ? PQresultStatus(r.get()) : PGRES_FATAL_ERROR;
   if (status != PGRES_COMMAND_OK && status != PGRES_TUPLES_OK) fail(sql, r.get());
+  count_written_rows(r.get());
+}
+
+void PostgresConnection::count_written_rows(const PGresult* result) {
+  // PQcmdTuples also counts the rows a SELECT returned; only writes are changes.
+  const std::string_view command = PQcmdStatus(const_cast<PGresult*>(result));
+  for (const std::string_view write : {"INSERT", "UPDATE", "DELETE", "MERGE"}) {
+    if (command.substr(0, write.size()) == write) {
+      rows_changed_ += std::atoll(PQcmdTuples(const_cast<PGresult*>(result)));
+      return;
+    }
+  }
 }
 
 void PostgresConnection::rollback() noexcept {
@@ -142,6 +156,7 @@ SqlRows PostgresConnection::query(const std::string& sql, const std::vector<SqlV
   if (status != PGRES_COMMAND_OK && status != PGRES_TUPLES_OK) {
     fail("running '" + translate_sql(SqlDialect::kPostgres, sql) + "'", r.get());
   }
+  count_written_rows(r.get());
   SqlRows rows;
   const int n_rows = PQntuples(r.get());
   const int n_cols = PQnfields(r.get());

@@ -29,6 +29,7 @@ class PostgresConnection final : public SqlConnection {
   void commit() override { exec("COMMIT"); }
   void rollback() noexcept override;
   bool usable() const override;
+  std::int64_t rows_changed() const override { return rows_changed_; }
 
  private:
   struct Finish {
@@ -37,9 +38,12 @@ class PostgresConnection final : public SqlConnection {
   /// The name of the prepared statement for store SQL `sql` with `n_params` parameters.
   const std::string& prepared(const std::string& sql, int n_params);
   [[noreturn]] void fail(const std::string& what, const PGresult* result) const;
+  /// Adds the rows an INSERT, UPDATE or DELETE wrote to rows_changed_.
+  void count_written_rows(const PGresult* result);
 
   std::unique_ptr<PGconn, Finish> conn_;
   std::unordered_map<std::string, std::string> statements_;  ///< store SQL → statement name
+  std::int64_t rows_changed_ = 0;
 };
 
 }  // namespace fosls::service

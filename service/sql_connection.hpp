@@ -84,9 +84,14 @@ class SqlConnection {
   /// False once the connection is broken (the server went away); it is then discarded.
   virtual bool usable() const { return true; }
 
+  /// Rows inserted, updated or deleted through this connection so far: a commit is proof that
+  /// the disk has room only when its transaction wrote something.
+  virtual std::int64_t rows_changed() const = 0;
+
   /// Told of every statement that failed because the disk is full (`full`, with the message,
-  /// before StoreFullError is thrown) and of every commit that went through (not `full`), so
-  /// that the store can tell whether it can write.
+  /// before StoreFullError is thrown) and of every commit that went through having written rows
+  /// (not `full`), so that the store can tell whether it can write. A commit that wrote nothing
+  /// (the lease reaper's, when no lease expired) says nothing: it goes through on a full disk.
   void observe_disk(std::function<void(bool full, const std::string& message)> observer) {
     disk_observer_ = std::move(observer);
   }
@@ -109,6 +114,7 @@ class SqlTransaction {
  public:
   explicit SqlTransaction(SqlConnection& connection) : connection_(connection) {
     connection_.begin_write();
+    rows_changed_at_begin_ = connection_.rows_changed();
   }
   ~SqlTransaction() {
     if (open_) connection_.rollback();
@@ -119,12 +125,13 @@ class SqlTransaction {
   void commit() {
     connection_.commit();
     open_ = false;
-    connection_.committed();
+    if (connection_.rows_changed() != rows_changed_at_begin_) connection_.committed();
   }
 
  private:
   SqlConnection& connection_;
   bool open_ = true;
+  std::int64_t rows_changed_at_begin_ = 0;
 };
 
 /// A connection lent to one call; the deleter gives it back to where it came from.

@@ -31,6 +31,7 @@ class SqliteConnection final : public SqlConnection {
   void begin_write() override { exec("BEGIN IMMEDIATE"); }
   void commit() override { exec("COMMIT"); }
   void rollback() noexcept override;
+  std::int64_t rows_changed() const override { return sqlite3_total_changes64(db_.get()); }
 
   /// Up to `length` bytes from `offset` of the BLOB or TEXT value in `column` of the row
   /// `rowid` of `table`, read without loading the rest of the value (incremental blob I/O, its

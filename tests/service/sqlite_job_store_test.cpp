@@ -249,7 +249,17 @@ TEST(SqliteConnection, AFullDiskIsStoreFullErrorAndTheObserverHearsOfIt) {
   ASSERT_TRUE(full) << "the page limit was never reached";
   ASSERT_FALSE(heard.empty());
   EXPECT_TRUE(heard.back().first);
-  // A commit that goes through tells the observer the disk took it.
+  // A commit that wrote nothing goes through even on a full disk (the lease reaper makes one
+  // whenever no lease expired): it is no proof of room, so the observer hears nothing.
+  const auto heard_before = heard.size();
+  {
+    SqlTransaction tx(c);
+    c.query("SELECT count(*) FROM t");
+    c.query("DELETE FROM t WHERE x = 'no such row'");
+    tx.commit();
+  }
+  EXPECT_EQ(heard.size(), heard_before);
+  // A commit that wrote rows tells the observer the disk took it.
   c.exec("DELETE FROM t");
   {
     SqlTransaction tx(c);
