@@ -11,7 +11,7 @@
 #include "case/case_error.hpp"
 #include "case/case_reader.hpp"
 #include "case/case_runner.hpp"
-#include "case/solve3d_checks.hpp"
+#include "case/volume_mesh_checks.hpp"
 #include "shipped_example.hpp"
 
 namespace fosls::testing {

@@ -63,7 +63,7 @@ void solve_finest_order2(CaseSolutionOf<2>& solution, const SolverOptions& optio
 }
 
 /// The contact output of the solution in `solution.full`: 2D's ContactResult (whose force the
-/// loop records), 3D's force (the rest of its output is case3d_result's).
+/// loop records), 3D's force (the rest of its output is contact_faces.hpp's).
 template <int dim>
 void evaluate_contact(CaseSolutionOf<dim>& solution) {
   const Discretization<dim>& disc = *solution.disc;

@@ -55,7 +55,7 @@ struct CaseSolutionOf {
   Vector x;     ///< free DOFs
   Vector full;  ///< all DOFs (rotated, scaled)
   FunctionalParts parts;
-  /// 2D's contact output (a 3D result's is case3d_result's, from disc and x).
+  /// 2D's contact output (a 3D result's is contact_faces.hpp's, from disc and full).
   ContactResult contact;
   ForceComponents force;               ///< the contact force, dim components
   SolverReport report;                 ///< of the last solve

@@ -72,8 +72,8 @@ int most_solves(const CaseSpec& spec);
 std::vector<CaseError> validate_case(const nlohmann::json& j, const CaseReadOptions& options = {},
                                      const MeshingControl& meshing = {});
 
-/// Runs a case from read_case, 2D or 3D (a case of dimension 3 through the 3D backend,
-/// solve3d_backend.hpp); a case with a sweep runs every point in order (sweep_runner.hpp).
+/// Runs a case from read_case, 2D or 3D (one point: point_runner.hpp); a case with load steps
+/// or a sweep runs every point in order (load_step_runner.hpp, sweep_runner.hpp).
 /// Throws CaseException for problems a user caused that show up only with the coarse mesh (mesh
 /// errors, groups the mesh lacks, DOF limits: validate_case's checks, made here once the mesh is
 /// built) or while running (for example weights that make the matrix indefinite). A cancel while

@@ -1,7 +1,7 @@
 #pragma once
 // What a 3D case cannot do yet, refused once it is read, at the field, with why and that it is
 // coming (docs/case-format.md, "3D cases"): the format reads every section in both dimensions,
-// and the 3D backend (solve3d_backend.hpp) runs a frictionless solve on uniform levels.
+// and one point runner (point_runner.hpp) solves both; 3D has no friction or order 2 yet.
 
 #include <nlohmann/json.hpp>
 #include <vector>

@@ -80,14 +80,14 @@ nlohmann::json result_json_schema() {
 }
 
 nlohmann::json result3d_json_schema() {
-  return rules_json_schema(*result3d_rule(), "https://fosls-contact.invalid/schemas/result3d.json",
+  return rules_json_schema(*result_rule(3), "https://fosls-contact.invalid/schemas/result3d.json",
                            "The result of a 3D case (docs/result-format.md, \"3D results\").");
 }
 
 std::map<std::string, std::string> result_format_blocks() {
   auto blocks = object_tables(*result_rule(), TableKind::kOutput);
   // The 3D result's own objects; history, warning and material are 2D's tables.
-  blocks.merge(object_tables(*result3d_rule(), TableKind::kOutput));
+  blocks.merge(object_tables(*result_rule(3), TableKind::kOutput));
   blocks["vtu"] = vtu_table(vtu_arrays());
   blocks["vtu_3d"] = vtu_table(tet_vtu_arrays());
   return blocks;

@@ -46,6 +46,29 @@ double extent(const Mesh& mesh) {
   return (hi - lo).norm();
 }
 
+/// The warnings of either dimension from the case and the body's size: implausible units, a
+/// tangential load on a frictionless contact.
+std::vector<ResultWarning> case_warnings(const CaseSpec& spec, double body_size) {
+  std::vector<ResultWarning> warnings;
+  const std::string units = implausible_units(
+      spec.units, youngs_modulus(spec.material.mu, spec.material.lambda), body_size);
+  if (!units.empty()) warnings.push_back({"units_implausible", units, true});
+  if (auto w = tangential_load_warning(spec)) warnings.push_back(std::move(*w));
+  return warnings;
+}
+
+/// The accuracy request that was not met, or nothing. A zero force has its own warning
+/// (no_contact).
+std::optional<ResultWarning> accuracy_warning(const json& result) {
+  if (!result.contains("accuracy") || result["accuracy"]["reached"].get<bool>() ||
+      result["accuracy"]["stop_reason"] == "no_force")
+    return std::nullopt;
+  return ResultWarning{"accuracy_not_reached",
+                       "the requested force accuracy was not reached: " +
+                           result["accuracy"]["stop_message"].get<std::string>(),
+                       false};
+}
+
 }  // namespace
 
 void annotate_result(json& result, const CaseSpec& spec, const Mesh& finest,
@@ -57,21 +80,20 @@ void annotate_result(json& result, const CaseSpec& spec, const Mesh& finest,
   c["zone"]["width"] = contact_width(finest, contact);
   c["zone"]["end_edge_length"] = zone_end_edge_length(contact);
 
-  std::vector<ResultWarning> warnings;
-  const std::string units = implausible_units(
-      spec.units, youngs_modulus(spec.material.mu, spec.material.lambda), extent(finest));
-  if (!units.empty()) warnings.push_back({"units_implausible", units, true});
-  if (auto w = tangential_load_warning(spec)) warnings.push_back(std::move(*w));
+  std::vector<ResultWarning> warnings = case_warnings(spec, extent(finest));
   for (auto& w : contact_warnings(spec, finest, contact)) warnings.push_back(std::move(w));
   if (auto w = large_strain_warning(strain.strain, strain.largest, strain.where))
     warnings.push_back(std::move(*w));
-  // A zero force has its own warning (no_contact); otherwise say that the request was not met.
-  if (result.contains("accuracy") && !result["accuracy"]["reached"].get<bool>() &&
-      result["accuracy"]["stop_reason"] != "no_force")
-    warnings.push_back({"accuracy_not_reached",
-                        "the requested force accuracy was not reached: " +
-                            result["accuracy"]["stop_message"].get<std::string>(),
-                        false});
+  if (auto w = accuracy_warning(result)) warnings.push_back(std::move(*w));
+  add_warnings(result, warnings);
+}
+
+void annotate_result(json& result, const CaseSpec& spec, const FoslsSpace<3>& finest,
+                     const FaceContact& contact) {
+  result["units"] = units_json(spec.units);
+  std::vector<ResultWarning> warnings = case_warnings(spec, finest.mesh().diameter());
+  for (auto& w : face_contact_warnings(spec, finest, contact)) warnings.push_back(std::move(w));
+  if (auto w = accuracy_warning(result)) warnings.push_back(std::move(*w));
   add_warnings(result, warnings);
 }
 

@@ -6,6 +6,7 @@
 #include <nlohmann/json.hpp>
 
 #include "case/case_spec.hpp"
+#include "case/contact_faces.hpp"
 #include "mesh/mesh.hpp"
 #include "post/contact_output.hpp"
 #include "post/strain_measure.hpp"
@@ -16,5 +17,9 @@ namespace fosls {
 /// review_required), `units`, and `contact.shape`. `strain` is the solution's largest strain.
 void annotate_result(nlohmann::json& result, const CaseSpec& spec, const Mesh& finest,
                      const ContactResult& contact, const StrainPeak& strain);
+
+/// The same for a body whose contact boundary is a set of faces (3D).
+void annotate_result(nlohmann::json& result, const CaseSpec& spec, const FoslsSpace<3>& finest,
+                     const FaceContact& contact);
 
 }  // namespace fosls

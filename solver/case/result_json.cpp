@@ -26,32 +26,8 @@ const char* obstacle_name(Obstacle::Kind kind, int dim) {
   return "?";
 }
 
-json contact_json(const ContactResult& contact, const CaseSpec& spec) {
-  json c;
-  std::vector<double> xs, ys, ss, ls, ps, gs, shear, slip;
-  std::vector<bool> active;
-  std::vector<std::string> state;
-  for (const auto& e : contact.edges) {
-    xs.push_back(e.x), ys.push_back(e.y), ss.push_back(e.s), ls.push_back(e.length);
-    ps.push_back(e.pressure), gs.push_back(e.gap), active.push_back(e.active);
-    shear.push_back(e.shear), slip.push_back(e.slip), state.push_back(state_name(e.state));
-  }
-  c["x"] = xs, c["y"] = ys, c["s"] = ss, c["length"] = ls;
-  c["pressure"] = ps, c["gap"] = gs, c["active"] = active;
-  c["shear"] = shear, c["slip"] = slip, c["state"] = state;
-  const ContactZone stick = contact.stick_zone();
-  c["stick_zone"] = {{"edges", stick.edges},
-                     {"length", stick.length},
-                     {"s_start", stick.edges ? json(stick.s_start) : json(nullptr)},
-                     {"s_end", stick.edges ? json(stick.s_end) : json(nullptr)}};
-  c["force"] = {contact.force_x, contact.force_y};
-  const ContactZone z = contact.zone();
-  c["zone"] = {{"edges", z.edges},
-               {"length", z.length},
-               {"s_start", z.edges ? json(z.s_start) : json(nullptr)},
-               {"s_end", z.edges ? json(z.s_end) : json(nullptr)},
-               {"peak_pressure", z.peak_pressure},
-               {"peak_location", z.edges ? json({z.peak_x, z.peak_y}) : json(nullptr)}};
+/// The constraint's direction and each contact group's obstacle, in both dimensions.
+void add_constraint_json(json& c, const CaseSpec& spec) {
   bool obstacle_normal = false;
   json obstacles = json::object();
   for (const auto& [name, bc] : spec.boundary)
@@ -61,7 +37,6 @@ json contact_json(const ContactResult& contact, const CaseSpec& spec) {
     }
   c["direction"] = obstacle_normal ? "obstacle_normal" : "body_normal";
   c["obstacles"] = obstacles;
-  return c;
 }
 
 /// The friction laws and, for Coulomb, the updates of the slip bounds; null without friction.
@@ -95,7 +70,7 @@ json mesh_json(const MeshSpec& mesh) {
   // What a viewer needs to compare with a reference (e.g. the Hertz radius).
   if (mesh.kind == MeshSpec::Kind::kBuiltin) {
     m["builtin"] = mesh.builtin;
-    m["params"] = mesh.params;
+    if (!mesh.params.empty()) m["params"] = mesh.params;  // a 3D builtin has none by default
   }
   return m;
 }
@@ -112,6 +87,35 @@ json stopping_json(const SolverReport& report, const SolverOptions& options) {
 }
 
 }  // namespace
+
+json contact_json(const ContactResult& contact) {
+  json c;
+  std::vector<double> xs, ys, ss, ls, ps, gs, shear, slip;
+  std::vector<bool> active;
+  std::vector<std::string> state;
+  for (const auto& e : contact.edges) {
+    xs.push_back(e.x), ys.push_back(e.y), ss.push_back(e.s), ls.push_back(e.length);
+    ps.push_back(e.pressure), gs.push_back(e.gap), active.push_back(e.active);
+    shear.push_back(e.shear), slip.push_back(e.slip), state.push_back(state_name(e.state));
+  }
+  c["x"] = xs, c["y"] = ys, c["s"] = ss, c["length"] = ls;
+  c["pressure"] = ps, c["gap"] = gs, c["active"] = active;
+  c["shear"] = shear, c["slip"] = slip, c["state"] = state;
+  const ContactZone stick = contact.stick_zone();
+  c["stick_zone"] = {{"edges", stick.edges},
+                     {"length", stick.length},
+                     {"s_start", stick.edges ? json(stick.s_start) : json(nullptr)},
+                     {"s_end", stick.edges ? json(stick.s_end) : json(nullptr)}};
+  c["force"] = {contact.force_x, contact.force_y};
+  const ContactZone z = contact.zone();
+  c["zone"] = {{"edges", z.edges},
+               {"length", z.length},
+               {"s_start", z.edges ? json(z.s_start) : json(nullptr)},
+               {"s_end", z.edges ? json(z.s_end) : json(nullptr)},
+               {"peak_pressure", z.peak_pressure},
+               {"peak_location", z.edges ? json({z.peak_x, z.peak_y}) : json(nullptr)}};
+  return c;
+}
 
 StopReason stop_reason(const SolverReport& report) {
   if (report.converged) return StopReason::kConverged;
@@ -215,7 +219,7 @@ json weights_json(const Weights& w) {
           {"length_scale", w.length_scale}};
 }
 
-json result_json(const CaseSpec& spec, const SolverReport& report, const ContactResult& contact,
+json result_json(const CaseSpec& spec, const SolverReport& report, json contact,
                  const FunctionalParts& functional, const ProblemSize& size,
                  const RunTiming& timing, const RunMemory& memory) {
   const SolverOptions& options = spec.solver;
@@ -232,7 +236,8 @@ json result_json(const CaseSpec& spec, const SolverReport& report, const Contact
   r["dofs"] = size.dofs;
   r["dofs_total"] = size.dofs_total;
   r["vertices"] = size.vertices;
-  r["triangles"] = size.triangles;
+  r[spec.dimension == 3 ? "tetrahedra" : "triangles"] = size.cells;
+  if (spec.dimension == 3) r["dimension"] = 3;  // absent: 2, as in the case
   r["initial_kkt_residual"] = report.initial_kkt;
   r["final_kkt_residual"] = report.final_kkt;
   r["relative_kkt_residual"] = relative_kkt(report);
@@ -243,7 +248,8 @@ json result_json(const CaseSpec& spec, const SolverReport& report, const Contact
   add_warnings(r, result_warnings(report, options));
   r["history"] = history_json(report.history);
   r["solver_statistics"] = statistics_json(report);
-  r["contact"] = contact_json(contact, spec);
+  add_constraint_json(contact, spec);
+  r["contact"] = std::move(contact);
   r["functional"] = {{"total", functional.total()},
                      {"momentum", functional.momentum},
                      {"constitutive", functional.constitutive},

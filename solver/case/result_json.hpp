@@ -21,7 +21,7 @@ struct ProblemSize {
   long long dofs = 0;        ///< unknowns solved for
   long long dofs_total = 0;  ///< all DOFs of the finest level
   long long vertices = 0;
-  long long triangles = 0;
+  long long cells = 0;  ///< triangles (2D) or tetrahedra (3D)
 };
 
 /// Wall-clock times of a run, in seconds.
@@ -57,10 +57,14 @@ std::vector<ResultWarning> result_warnings(const SolverReport& report,
 /// The result's `weights` object: the weights as used, in both dimensions.
 nlohmann::json weights_json(const Weights& weights);
 
-/// The whole result JSON.
-nlohmann::json result_json(const CaseSpec& spec, const SolverReport& report,
-                           const ContactResult& contact, const FunctionalParts& functional,
-                           const ProblemSize& size, const RunTiming& timing,
-                           const RunMemory& memory);
+/// The result's `contact` object of a 2D solve (a boundary of edges; 3D's is contact_faces.hpp's)
+/// but for the constraint's direction and obstacles, which result_json adds.
+nlohmann::json contact_json(const ContactResult& contact);
+
+/// The whole result JSON of either dimension; `contact` is the dimension's contact object
+/// (contact_json, face_contact_json).
+nlohmann::json result_json(const CaseSpec& spec, const SolverReport& report, nlohmann::json contact,
+                           const FunctionalParts& functional, const ProblemSize& size,
+                           const RunTiming& timing, const RunMemory& memory);
 
 }  // namespace fosls

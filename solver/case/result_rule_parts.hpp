@@ -34,6 +34,11 @@ ObjectRulePtr accuracy_result_rule(int dim = 2);
 ObjectRulePtr sweep_result_rule(ValueRule reasons, int dim);
 /// The `load_steps` object: every step a result of `result_fields` but its history.
 ObjectRulePtr load_steps_result_rule(const std::vector<FieldRule>& result_fields, int dim);
+/// The contact object's constraint direction and obstacle types, in `dim` dimensions.
+std::vector<FieldRule> constraint_fields(int dim);
+/// The `contact` object of a body whose contact boundary is a set of faces (3D;
+/// contact_faces_rules.cpp).
+ObjectRulePtr contact_faces_rule();
 /// The stop reasons' names, in the order of StopReason.
 std::vector<std::string> stop_reason_names();
 

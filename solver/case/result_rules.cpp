@@ -105,6 +105,17 @@ ObjectRulePtr weights_echo_rule() {
   return object_rule("the weights", "weights_echo", std::move(fields));
 }
 
+std::vector<FieldRule> constraint_fields(int dim) {
+  ValueRule obstacles =
+      map_value(name_value(1000, "the group name"),
+                choice_value({"plane", dim == 3 ? "sphere" : "circle", "gap"}), 100000,
+                "object mapping contact groups to obstacle types", "groups");
+  obstacles.range.lo = 0;
+  return {output_field("direction", choice_value({"body_normal", "obstacle_normal"}), "",
+                       "the constraint direction (obstacle_normal when any contact group uses it)"),
+          output_field("obstacles", obstacles, "", "the obstacle type of each contact group")};
+}
+
 }  // namespace result_parts
 
 namespace {
@@ -199,54 +210,48 @@ ObjectRulePtr stick_zone_rule() {
 }
 
 ObjectRulePtr contact_rule() {
-  ValueRule obstacles =
-      map_value(name_value(1000, "the group name"), choice_value({"plane", "circle", "gap"}),
-                100000, "object mapping contact groups to obstacle types", "groups");
-  obstacles.range.lo = 0;
-  return object_rule(
-      "the contact output", "contact",
-      {output_field("x", numbers("per contact edge"), "L",
-                    "midpoint x of each contact edge, in order along the contact boundary"),
-       output_field("y", numbers("per contact edge"), "L", "midpoint y of each contact edge"),
-       output_field("s", numbers("per contact edge"), "L",
-                    "arc length at the midpoint, from the start of the contact boundary (its "
-                    "leftmost end)"),
-       output_field("length", numbers("per contact edge"), "L", "length of each contact edge"),
-       output_field("pressure", numbers("per contact edge"), "S",
-                    "contact pressure p = −σ_nn ≥ 0 on each edge (constant on an edge; σ_nn with "
-                    "the body's outward normal n)"),
-       output_field("gap", numbers("per contact edge"), "L",
-                    "the remaining gap g − u·n after deformation, mean over the edge (0 where "
-                    "closed; g is the initial gap along the constraint direction)"),
-       output_field("active", list_value(boolean_value(), "per contact edge"), "1",
-                    "whether the edge is in contact (pressure > 0)"),
-       output_field("force", point_value(), "S·L",
-                    "[F_x, F_y] = ∫ σn ds over the contact boundary: the force of the obstacle "
-                    "on the body, per unit thickness (plane strain)"),
-       output_field("zone", object_value(zone_rule()), "", "where the body touches the obstacle"),
-       output_field("shear", numbers("per contact edge"), "S",
-                    "tangential traction σ_nt on each edge, t = (−n_y, n_x) with the body's "
-                    "outward normal n (t runs counter-clockwise around the body); 0 on a "
-                    "frictionless edge"),
-       output_field("slip", numbers("per contact edge"), "L",
-                    "the tangential slip u·t minus its value in the reference state (the "
-                    "previous load step; zero without one), mean over the edge"),
-       output_field("state",
-                    list_value(choice_value({"open", "stick", "slip"}), "per contact edge"), "",
-                    "open: not in contact; stick: in contact with |σ_nt| below the slip "
-                    "bound; slip: at the bound (every edge in contact on frictionless contact)"),
-       output_field("stick_zone", object_value(stick_zone_rule()), "",
-                    "where the body sticks: the edges in state stick"),
-       output_field("direction", choice_value({"body_normal", "obstacle_normal"}), "",
-                    "the constraint direction (obstacle_normal when any contact group uses it)"),
-       output_field("obstacles", obstacles, "", "the obstacle type of each contact group"),
-       output_field("shape", object_value(shape_rule()), "",
-                    "the shape of the contact boundary (a circular arc against a plane is a "
-                    "Hertz problem: the web page offers the comparison by this)"),
-       output_field("plane_normal", one_of_value({point_value(), null_value()}, "[x, y] or null"),
-                    "1",
-                    "the unit normal (from the obstacle into the body) of the plane obstacle "
-                    "when every contact group has a plane with this normal; null otherwise")});
+  std::vector<FieldRule> fields = {
+      output_field("x", numbers("per contact edge"), "L",
+                   "midpoint x of each contact edge, in order along the contact boundary"),
+      output_field("y", numbers("per contact edge"), "L", "midpoint y of each contact edge"),
+      output_field("s", numbers("per contact edge"), "L",
+                   "arc length at the midpoint, from the start of the contact boundary (its "
+                   "leftmost end)"),
+      output_field("length", numbers("per contact edge"), "L", "length of each contact edge"),
+      output_field("pressure", numbers("per contact edge"), "S",
+                   "contact pressure p = −σ_nn ≥ 0 on each edge (constant on an edge; σ_nn with "
+                   "the body's outward normal n)"),
+      output_field("gap", numbers("per contact edge"), "L",
+                   "the remaining gap g − u·n after deformation, mean over the edge (0 where "
+                   "closed; g is the initial gap along the constraint direction)"),
+      output_field("active", list_value(boolean_value(), "per contact edge"), "1",
+                   "whether the edge is in contact (pressure > 0)"),
+      output_field("force", point_value(), "S·L",
+                   "[F_x, F_y] = ∫ σn ds over the contact boundary: the force of the obstacle "
+                   "on the body, per unit thickness (plane strain)"),
+      output_field("zone", object_value(zone_rule()), "", "where the body touches the obstacle"),
+      output_field("shear", numbers("per contact edge"), "S",
+                   "tangential traction σ_nt on each edge, t = (−n_y, n_x) with the body's "
+                   "outward normal n (t runs counter-clockwise around the body); 0 on a "
+                   "frictionless edge"),
+      output_field("slip", numbers("per contact edge"), "L",
+                   "the tangential slip u·t minus its value in the reference state (the "
+                   "previous load step; zero without one), mean over the edge"),
+      output_field("state", list_value(choice_value({"open", "stick", "slip"}), "per contact edge"),
+                   "",
+                   "open: not in contact; stick: in contact with |σ_nt| below the slip "
+                   "bound; slip: at the bound (every edge in contact on frictionless contact)"),
+      output_field("stick_zone", object_value(stick_zone_rule()), "",
+                   "where the body sticks: the edges in state stick"),
+      output_field("shape", object_value(shape_rule()), "",
+                   "the shape of the contact boundary (a circular arc against a plane is a "
+                   "Hertz problem: the web page offers the comparison by this)"),
+      output_field("plane_normal", one_of_value({point_value(), null_value()}, "[x, y] or null"),
+                   "1",
+                   "the unit normal (from the obstacle into the body) of the plane obstacle "
+                   "when every contact group has a plane with this normal; null otherwise")};
+  for (FieldRule& f : constraint_fields(2)) fields.push_back(std::move(f));
+  return object_rule("the contact output", "contact", std::move(fields));
 }
 
 ObjectRulePtr functional_rule() {
@@ -301,7 +306,7 @@ ObjectRulePtr mesh_echo_rule() {
                     "mesh.order of the case: 1, or 2 for the order-2 space (dofs and dofs_total "
                     "count its DOFs; the contact output and the VTU are its lowest-order "
                     "interpolant)"),
-       optional_field("builtin", choice_value({"square", "hertz"}), nullptr,
+       optional_field("builtin", choice_value({"square", "hertz", "box", "half_ball"}), nullptr,
                       "the builtin geometry (builtin meshes only)"),
        optional_field("params", params, nullptr,
                       "every parameter of the builtin geometry, defaults included")});
@@ -340,10 +345,12 @@ ObjectRulePtr memory_rule() {
 namespace {
 
 /// The result's fields that say how the solve went: method, convergence, sizes, residuals.
-std::vector<FieldRule> outcome_fields(const std::vector<std::string>& reasons) {
-  return {
+std::vector<FieldRule> outcome_fields(const std::vector<std::string>& reasons, int dim) {
+  std::vector<FieldRule> fields = {
       output_field("name", text(), "", "the case's name"),
-      output_field("method", choice_value(method_names()), "", "the solver method"),
+      output_field("method",
+                   dim == 3 ? choice_value({"mmg", "pdas"}) : choice_value(method_names()), "",
+                   "the solver method"),
       output_field("converged", boolean_value(), "",
                    "the stopping rule was met: final_kkt_residual ≤ tolerance · "
                    "initial_kkt_residual or, with solver.tolerance \"discretisation\", the "
@@ -369,7 +376,8 @@ std::vector<FieldRule> outcome_fields(const std::vector<std::string>& reasons) {
       output_field("dofs", count(), "1", "unknowns of the finest level that are solved for"),
       output_field("dofs_total", count(), "1", "all DOFs of the finest level, fixed ones included"),
       output_field("vertices", count(), "1", "vertices of the finest mesh"),
-      output_field("triangles", count(), "1", "triangles of the finest mesh"),
+      dim == 3 ? output_field("tetrahedra", count(), "1", "tetrahedra of the finest mesh")
+               : output_field("triangles", count(), "1", "triangles of the finest mesh"),
       output_field("initial_kkt_residual", number(), "scaled",
                    "KKT residual of the initial iterate"),
       output_field("final_kkt_residual", number(), "scaled", "KKT residual at the end"),
@@ -381,11 +389,16 @@ std::vector<FieldRule> outcome_fields(const std::vector<std::string>& reasons) {
                    "bounded unknowns at their bound at the end (U_n at the obstacle or S_n at "
                    "zero); not the number of contact edges in contact, see contact.zone.edges"),
       output_field("active", count(), "1", "deprecated: the same as active_bounds")};
+  // A 3D result says its dimension; a result without one is 2D's, as a case without one is.
+  if (dim == 3)
+    fields.insert(fields.begin() + 1,
+                  output_field("dimension", integer_value(Range::closed(3, 3)), "", "3"));
+  return fields;
 }
 
 /// The result's fields that carry what the solve computed and how it ran.
-std::vector<FieldRule> solution_fields(const std::vector<std::string>& reasons) {
-  return {
+std::vector<FieldRule> solution_fields(const std::vector<std::string>& reasons, int dim) {
+  std::vector<FieldRule> fields = {
       optional_field("message", text(), nullptr,
                      "why the solve did not converge or was cancelled (also in warnings)"),
       output_field("warnings", list_value(text(), "list of sentences"), "",
@@ -403,8 +416,9 @@ std::vector<FieldRule> solution_fields(const std::vector<std::string>& reasons) 
                    "the initial iterate and every iteration"),
       output_field("solver_statistics", object_value(statistics_rule()), "",
                    "counts and times of the multilevel method's parts"),
-      output_field("contact", object_value(contact_rule()), "",
-                   "the contact output (empty arrays when the case has no contact group)"),
+      output_field("contact", object_value(dim == 3 ? contact_faces_rule() : contact_rule()), "",
+                   "the contact output (empty arrays or zeros when the case has no contact "
+                   "group)"),
       output_field("functional", object_value(functional_rule()), "",
                    "the FOSLS functional at the solution and its parts"),
       output_field("units", object_value(units_echo_rule()), "",
@@ -417,20 +431,23 @@ std::vector<FieldRule> solution_fields(const std::vector<std::string>& reasons) 
       output_field("timing", object_value(timing_rule()), "", "wall-clock times"),
       output_field("memory", object_value(memory_rule()), "",
                    "peak resident set of the process at the end of each stage"),
-      optional_field("friction", object_value(friction_result_rule()), nullptr,
-                     "the friction laws and the updates of Coulomb's slip bounds (only when a "
-                     "contact group has friction)"),
-      optional_field("adaptivity", object_value(adaptivity_result_rule()), nullptr,
+      optional_field("adaptivity", object_value(adaptivity_result_rule(dim)), nullptr,
                      "the adaptive loop, step by step (only when the case has an adaptivity "
                      "section; the other fields describe its last step)"),
-      optional_field("accuracy", object_value(accuracy_result_rule()), nullptr,
+      optional_field("accuracy", object_value(accuracy_result_rule(dim)), nullptr,
                      "the refinement towards the requested force accuracy, level by level "
                      "(only when the case has an accuracy section; the other fields describe "
                      "its last level)"),
-      optional_field("sweep", object_value(sweep_result_rule(choice_value(reasons), 2)), nullptr,
+      optional_field("sweep", object_value(sweep_result_rule(choice_value(reasons), dim)), nullptr,
                      "a case with a sweep: every point's force and convergence; the other "
                      "fields are the last point's, except converged and stop_reason, which say "
                      "whether every point converged (and why the first that did not stopped)")};
+  // Friction is 2D's only (dimension_support.cpp).
+  if (dim == 2)
+    fields.push_back(optional_field("friction", object_value(friction_result_rule()), nullptr,
+                                    "the friction laws and the updates of Coulomb's slip bounds "
+                                    "(only when a contact group has friction)"));
+  return fields;
 }
 
 }  // namespace
@@ -444,16 +461,17 @@ std::vector<std::string> result_parts::stop_reason_names() {
   return reasons;
 }
 
-ObjectRulePtr result_rule() {
+ObjectRulePtr result_rule(int dim) {
   const std::vector<std::string> reasons = result_parts::stop_reason_names();
-  std::vector<FieldRule> fields = outcome_fields(reasons);
-  for (FieldRule& f : solution_fields(reasons)) fields.push_back(std::move(f));
+  std::vector<FieldRule> fields = outcome_fields(reasons, dim);
+  for (FieldRule& f : solution_fields(reasons, dim)) fields.push_back(std::move(f));
   fields.push_back(optional_field(
-      "load_steps", object_value(load_steps_result_rule(fields, 2)), nullptr,
+      "load_steps", object_value(load_steps_result_rule(fields, dim)), nullptr,
       "a case with load steps: every step's result in order (the case as given is step 0); the "
       "other fields are the last step's, except converged and stop_reason, which say whether "
       "every step converged"));
-  return object_rule("the result", "result", std::move(fields));
+  return object_rule(dim == 3 ? "the 3D result" : "the result", dim == 3 ? "result3d" : "result",
+                     std::move(fields));
 }
 
 const char* stop_reason_name(StopReason reason) {

@@ -11,9 +11,8 @@ namespace fosls {
 enum class StopReason { kConverged, kMaxIterations, kTimeLimit, kCancelled };
 const char* stop_reason_name(StopReason reason);
 
-/// The rules of the result JSON of one solve.
-ObjectRulePtr result_rule();
-/// The rules of a 3D case's result (result3d_rules.cpp; docs/result-format.md, "3D results").
-ObjectRulePtr result3d_rule();
+/// The rules of the result JSON of one solve of dimension `dim` (docs/result-format.md; a 3D
+/// result's contact object is contact_faces_rules.cpp's).
+ObjectRulePtr result_rule(int dim = 2);
 
 }  // namespace fosls

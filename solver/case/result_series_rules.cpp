@@ -1,5 +1,5 @@
 // The result's objects of a series of solves — a sweep's points and the load steps — described
-// field by field for both dimensions (result_rules.cpp, result3d_rules.cpp).
+// field by field for both dimensions (result_rules.cpp).
 
 #include "case/result_rule_parts.hpp"
 #include "case/result_warnings.hpp"
@@ -38,10 +38,9 @@ ObjectRulePtr sweep_point_rule(ValueRule reasons, int dim) {
                         "the codes of this point's warnings (warning_details.code), e.g. "
                         "no_contact at an indentation that does not reach the body")})
     fields.push_back(std::move(f));
-  if (dim == 2)  // 3D results have no stopping object yet
-    fields.insert(fields.end() - 2,
-                  output_field("converged_by", converged_by_value(), "",
-                               "the test this point's solve met, as stopping.converged_by"));
+  fields.insert(fields.end() - 2,
+                output_field("converged_by", converged_by_value(), "",
+                             "the test this point's solve met, as stopping.converged_by"));
   return object_rule(dim == 3 ? "a 3D sweep point" : "a sweep point",
                      dim == 3 ? "sweep_point3d" : "sweep_point", std::move(fields));
 }

@@ -29,7 +29,7 @@ json point_json(double value, const json& r) {
   }
   point["converged"] = r["converged"];
   point["stop_reason"] = r["stop_reason"];
-  if (r.contains("stopping")) point["converged_by"] = r["stopping"]["converged_by"];  // 2D's
+  point["converged_by"] = r["stopping"]["converged_by"];
   point["iterations"] = r["iterations"];
   point["warning_codes"] = warning_codes_of(r);
   return point;

@@ -8,6 +8,7 @@
 
 #include <Eigen/Core>
 #include <type_traits>
+#include <utility>
 
 #include "mesh/mesh.hpp"
 #include "mesh/refinement.hpp"
@@ -35,5 +36,13 @@ using SimplexRefinementMaps = std::conditional_t<dim == 2, RefinementMaps, TetRe
 /// The nested meshes T_1 ⊂ … ⊂ T_J: MeshHierarchy for 2, TetHierarchy for 3.
 template <int dim>
 using SimplexHierarchy = std::conditional_t<dim == 2, MeshHierarchy, TetHierarchy>;
+
+/// The coarse mesh and its uniform refinements, in either dimension.
+inline MeshHierarchy build_uniform_hierarchy(Mesh coarse, int refinements) {
+  return build_mesh_hierarchy(std::move(coarse), refinements);
+}
+inline TetHierarchy build_uniform_hierarchy(TetMesh coarse, int refinements) {
+  return build_tet_hierarchy(std::move(coarse), refinements);
+}
 
 }  // namespace fosls

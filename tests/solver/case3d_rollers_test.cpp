@@ -12,7 +12,7 @@
 #include "case/case_admission.hpp"
 #include "case/case_error.hpp"
 #include "case/case_reader.hpp"
-#include "case/solve3d_checks.hpp"
+#include "case/volume_mesh_checks.hpp"
 
 namespace fosls {
 namespace {

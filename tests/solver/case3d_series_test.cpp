@@ -22,7 +22,7 @@ using testing::hertz_3d;
 /// The problems of the result rules with a 3D result, one per line; empty when it is documented.
 std::string undocumented(const json& r) {
   RuleChecker checker(CaseReadOptions{});
-  checker.check_object(r, *result3d_rule(), "");
+  checker.check_object(r, *result_rule(3), "");
   std::string s;
   for (const auto& e : checker.errors()) s += e.pointer + ": " + e.detail + "\n";
   return s;

@@ -20,7 +20,7 @@
 #include "case/case_runner.hpp"
 #include "case/result_rules.hpp"
 #include "case/rule_checker.hpp"
-#include "case/solve3d_checks.hpp"
+#include "case/volume_mesh_checks.hpp"
 
 namespace fosls {
 namespace {
@@ -85,12 +85,12 @@ TEST(Case3d, HertzForceIsAThreeVectorAndMmgAgreesWithPdas) {
   EXPECT_FALSE(mmg["review_required"].get<bool>());
   EXPECT_EQ(mmg["stop_reason"], "converged");
   EXPECT_EQ(mmg["history"].size(), mmg["iterations"].get<std::size_t>() + 1);
-  // Every field is documented (result3d_rule: docs/result-format.md, "3D results"), as the runner
+  // Every field is documented (result_rule(3): docs/result-format.md, "3D results"), as the runner
   // adds timing; and a field the rules do not know is found.
   json full = run_case(*read_case(hertz_3d(1)).spec).result;
   const auto undocumented = [](const json& r) {
     RuleChecker checker(CaseReadOptions{});
-    checker.check_object(r, *result3d_rule(), "");
+    checker.check_object(r, *result_rule(3), "");
     std::string s;
     for (const auto& e : checker.errors()) s += e.pointer + ": " + e.detail + "\n";
     return s;
@@ -253,7 +253,8 @@ TEST(Case3d, AnMshFileIsReadOnceWhenTheCaseIsRead) {
   EXPECT_EQ(run_problem(inline_text), "/mesh/msh");
 }
 
-TEST(Case3d, ACancelStopsTheSolveAndLeavesNoResult) {
+TEST(Case3d, ACancelStopsTheSolveAndItsResultSaysCancelled) {
+  // As in 2D (one point runner): the last iterate comes back, marked cancelled.
   std::atomic<bool> cancel = false;
   RunControl control;
   control.cancel = &cancel;
@@ -266,8 +267,10 @@ TEST(Case3d, ACancelStopsTheSolveAndLeavesNoResult) {
   const RunOutput out = run_case(*read_case(hertz_3d(1)).spec, control);
   EXPECT_TRUE(out.cancelled);
   EXPECT_EQ(seen, 2);
-  EXPECT_TRUE(out.result.is_null());
-  EXPECT_TRUE(out.vtu.empty());
+  EXPECT_EQ(out.result["cancelled"], true);
+  EXPECT_EQ(out.result["stop_reason"], "cancelled");
+  EXPECT_EQ(out.result["iterations"], 2);
+  EXPECT_EQ(out.result["dimension"], 3);
 }
 
 }  // namespace

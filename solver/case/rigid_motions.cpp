@@ -1,4 +1,4 @@
-#include "case/rigid_motions3d.hpp"
+#include "case/rigid_motions.hpp"
 
 #include <Eigen/Eigenvalues>
 #include <cmath>

@@ -1,4 +1,7 @@
-#include "case/case3d_result.hpp"
+// The contact output of a body whose contact boundary is a set of faces (3D): the force, the
+// zone's area, extent and peak, and the warnings about it (contact_faces.hpp).
+
+#include "case/contact_faces.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -8,11 +11,7 @@
 #include <string>
 #include <vector>
 
-#include "case/obstacle3d.hpp"
-#include "case/result_json.hpp"
-#include "case/result_warnings.hpp"
-#include "case/solver_methods.hpp"
-#include "case/units.hpp"
+#include "case/obstacle_gap.hpp"
 #include "post/contact_force.hpp"
 
 namespace fosls {
@@ -21,59 +20,10 @@ namespace {
 
 using nlohmann::json;
 
-struct ContactSummary {
-  Point3 force = Point3::Zero();
-  double max_pressure = 0.0;
-  double area = 0.0;  ///< of the faces with p > 0
-  int faces = 0;      ///< of the contact groups
-  int faces_in_contact = 0;
-  Point3 peak_at = Point3::Zero();  ///< centroid of the face with the largest pressure
-  /// The bounding box of the faces with p > 0 (empty: lo > hi).
-  Point3 lo = Point3::Constant(std::numeric_limits<double>::infinity());
-  Point3 hi = -Point3::Constant(std::numeric_limits<double>::infinity());
-};
-
 Point3 face_centroid(const TetMesh& mesh, int f) {
   Point3 c = Point3::Zero();
   for (int v : mesh.face(f)) c += mesh.vertex(v);
   return c / 3.0;
-}
-
-/// The zone's extent and peak (docs/result-format.md, "3D results"): the radius of the disc of
-/// the same area (Hertz's a), its bounding box, and where the pressure peaks. Zeros and nulls
-/// without contact, as in 2D.
-json zone_json(const ContactSummary& c) {
-  const bool touching = c.faces_in_contact > 0;
-  const auto point = [touching](const Point3& x) {
-    return touching ? json::array({x.x(), x.y(), x.z()}) : json(nullptr);
-  };
-  return {{"faces", c.faces_in_contact},     {"radius", std::sqrt(c.area / M_PI)},
-          {"box_min", point(c.lo)},          {"box_max", point(c.hi)},
-          {"peak_pressure", c.max_pressure}, {"peak_location", point(c.peak_at)}};
-}
-
-ContactSummary contact_summary(const Discretization<3>& disc, const Vector& x_full) {
-  const FoslsSpace<3>& space = disc.finest_space();
-  const TetMesh& mesh = disc.meshes().finest();
-  const double scale = disc.problem().stress_scale;
-  const std::vector<double> p = contact_pressure(space, x_full, scale);
-  ContactSummary s;
-  s.force = contact_force(space, x_full, scale);
-  for (int f = 0; f < mesh.num_faces(); ++f) {
-    if (!disc.finest_space().is_contact_facet(f)) continue;
-    ++s.faces;
-    if (p[f] > s.max_pressure) s.peak_at = face_centroid(mesh, f);
-    s.max_pressure = std::max(s.max_pressure, p[f]);
-    if (p[f] > 0) {
-      s.area += mesh.face_area(f);
-      ++s.faces_in_contact;
-      for (int v : mesh.face(f)) {
-        s.lo = s.lo.cwiseMin(mesh.vertex(v));
-        s.hi = s.hi.cwiseMax(mesh.vertex(v));
-      }
-    }
-  }
-  return s;
 }
 
 /// The smallest initial gap of a contact vertex along its face's normal, where, and the
@@ -87,10 +37,10 @@ struct SmallestGap {
 /// `at_rest`: to the obstacles where the case puts them, before their displacement.
 SmallestGap smallest_gap(const CaseSpec& spec, const TetMesh& mesh, bool at_rest) {
   SmallestGap out;
-  std::map<std::string, ObstacleGap3d> gaps;
+  std::map<std::string, ObstacleGap<3>> gaps;
   for (const auto& [name, bc] : spec.boundary)
     if (bc.type == BoundaryCondition::Type::kContact)
-      gaps.emplace(name, ObstacleGap3d(bc.obstacle));
+      gaps.emplace(name, ObstacleGap<3>(bc.obstacle));
   for (int f = 0; f < mesh.num_faces(); ++f) {
     if (mesh.face_group(f) < 0) continue;  // an interior face
     const auto it = gaps.find(mesh.group_names()[mesh.face_group(f)]);
@@ -126,7 +76,7 @@ std::string where(const Point3& x) {
 /// radius of the disc of its area, spans fewer than kResolvedZoneEdges face sizes h (a face of
 /// area A has h = √(2A), a right triangle's leg). Only a zone with a front, not a whole contact
 /// group in contact, whose edges the mesh gives exactly.
-std::optional<ResultWarning> zone_resolution_warning(const ContactSummary& c) {
+std::optional<ResultWarning> zone_resolution_warning(const FaceContact& c) {
   if (c.faces_in_contact == 0 || c.faces_in_contact == c.faces) return std::nullopt;
   const double radius = std::sqrt(c.area / M_PI);
   const double h = std::sqrt(2.0 * c.area / c.faces_in_contact);
@@ -147,13 +97,13 @@ std::optional<ResultWarning> zone_resolution_warning(const ContactSummary& c) {
 
 /// The contact warnings 2D gives for the same findings, with the same codes; overlaps below
 /// kTouchingOverlap of the body's size are touching, as in 2D.
-std::vector<ResultWarning> contact_warnings(const CaseSpec& spec, const TetMesh& mesh,
-                                            const ContactSummary& c) {
+std::vector<ResultWarning> zone_warnings(const CaseSpec& spec, const TetMesh& mesh,
+                                         const FaceContact& c) {
   std::vector<ResultWarning> warnings;
   if (c.faces == 0) return warnings;
   // An overlap where the case puts the obstacle is a mistake; its displacement is not.
   const SmallestGap rest = smallest_gap(spec, mesh, true);
-  const std::string noun = obstacle_noun_3d(*rest.obstacle);
+  const std::string noun = obstacle_noun(*rest.obstacle, 3);
   if (rest.gap < -kTouchingOverlap * mesh.diameter())
     warnings.push_back({"initial_penetration",
                         "the body starts inside the " + noun +
@@ -165,7 +115,6 @@ std::vector<ResultWarning> contact_warnings(const CaseSpec& spec, const TetMesh&
                             "displacement or the body's)",
                         true});
   if (auto w = zone_resolution_warning(c)) warnings.push_back(*w);
-  if (auto w = tangential_load_warning(spec)) warnings.push_back(std::move(*w));  // as 2D's
   if (c.faces_in_contact == 0) {
     const SmallestGap moved = smallest_gap(spec, mesh, false);
     warnings.push_back(
@@ -210,56 +159,59 @@ std::vector<ResultWarning> roller_warnings(const FoslsSpace<3>& space) {
            true}};
 }
 
+/// The zone's extent and peak (docs/result-format.md, "3D results"): the radius of the disc of
+/// the same area (Hertz's a), its bounding box, and where the pressure peaks. Zeros and nulls
+/// without contact, as in 2D.
+json zone_json(const FaceContact& c) {
+  const bool touching = c.faces_in_contact > 0;
+  const auto point = [touching](const Point3& x) {
+    return touching ? json::array({x.x(), x.y(), x.z()}) : json(nullptr);
+  };
+  return {{"faces", c.faces_in_contact},     {"radius", std::sqrt(c.area / M_PI)},
+          {"box_min", point(c.lo)},          {"box_max", point(c.hi)},
+          {"peak_pressure", c.max_pressure}, {"peak_location", point(c.peak_at)}};
+}
+
 }  // namespace
 
-json case3d_result(const CaseSpec& spec, const Discretization<3>& disc, const Vector& x_free,
-                   const SolverReport& report) {
-  const FoslsAssembler<3>& a = disc.assembler();
-  const Vector x_full = a.full_vector(disc.problem(), x_free);
+FaceContact face_contact(const Discretization<3>& disc, const Vector& x_full) {
+  const FoslsSpace<3>& space = disc.finest_space();
   const TetMesh& mesh = disc.meshes().finest();
-  const ContactSummary c = contact_summary(disc, x_full);
-  const FunctionalParts parts = a.functional(x_full);
-  json r;
-  r["name"] = spec.name;
-  r["dimension"] = 3;
-  r["converged"] = report.converged;
-  r["iterations"] = report.iterations;
-  r["method"] = method_info(spec.solver.method).name;
-  r["tolerance"] = spec.solver.tolerance;
-  r["stop_reason"] = stop_reason_name(stop_reason(report));
-  r["cancelled"] = report.cancelled;
-  r["final_kkt_residual"] = report.final_kkt;
-  r["relative_kkt_residual"] = relative_kkt(report);
-  r["asymptotic_rate"] = report.asymptotic_rate;
-  r["levels"] = disc.meshes().num_levels();
-  r["dofs"] = disc.problem().qp.size();
-  r["tetrahedra"] = mesh.num_tets();
-  r["vertices"] = mesh.num_vertices();
-  r["material"] = {
-      {"mu", spec.material.mu},
-      {"lambda", spec.material.incompressible() ? json("inf") : json(spec.material.lambda)}};
-  r["weights"] = weights_json(spec.weights);
-  r["functional"] = {{"total", parts.total()}, {"estimator", std::sqrt(parts.total())}};
-  r["contact"] = {{"force", {c.force.x(), c.force.y(), c.force.z()}},
-                  {"max_pressure", c.max_pressure},
-                  {"area", c.area},
-                  {"faces", c.faces},
-                  {"faces_in_contact", c.faces_in_contact},
-                  {"zone", zone_json(c)}};
-  r["warnings"] = json::array();
-  r["warning_details"] = json::array();
-  r["review_required"] = false;
-  // As 2D's: a modulus implausible for the declared units and the body's size.
-  if (const std::string units = implausible_units(
-          spec.units, youngs_modulus(spec.material.mu, spec.material.lambda), mesh.diameter());
-      !units.empty())
-    add_warnings(r, {{"units_implausible", units, true}});
-  add_warnings(r, contact_warnings(spec, mesh, c));
-  add_warnings(r, roller_warnings(disc.finest_space()));
-  add_warnings(r, result_warnings(report, spec.solver));  // 2D's: not_converged, rounding, …
-  r["history"] = history_json(report.history);
-  r["solver_statistics"] = statistics_json(report);
-  return r;
+  const double scale = disc.problem().stress_scale;
+  const std::vector<double> p = contact_pressure(space, x_full, scale);
+  FaceContact s;
+  s.force = contact_force(space, x_full, scale);
+  for (int f = 0; f < mesh.num_faces(); ++f) {
+    if (!disc.finest_space().is_contact_facet(f)) continue;
+    ++s.faces;
+    if (p[f] > s.max_pressure) s.peak_at = face_centroid(mesh, f);
+    s.max_pressure = std::max(s.max_pressure, p[f]);
+    if (p[f] > 0) {
+      s.area += mesh.face_area(f);
+      ++s.faces_in_contact;
+      for (int v : mesh.face(f)) {
+        s.lo = s.lo.cwiseMin(mesh.vertex(v));
+        s.hi = s.hi.cwiseMax(mesh.vertex(v));
+      }
+    }
+  }
+  return s;
+}
+
+json face_contact_json(const FaceContact& c) {
+  return {{"force", {c.force.x(), c.force.y(), c.force.z()}},
+          {"max_pressure", c.max_pressure},
+          {"area", c.area},
+          {"faces", c.faces},
+          {"faces_in_contact", c.faces_in_contact},
+          {"zone", zone_json(c)}};
+}
+
+std::vector<ResultWarning> face_contact_warnings(const CaseSpec& spec, const FoslsSpace<3>& space,
+                                                 const FaceContact& c) {
+  std::vector<ResultWarning> warnings = zone_warnings(spec, space.mesh(), c);
+  for (ResultWarning& w : roller_warnings(space)) warnings.push_back(std::move(w));
+  return warnings;
 }
 
 }  // namespace fosls

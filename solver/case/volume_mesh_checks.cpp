@@ -1,4 +1,4 @@
-#include "case/solve3d_checks.hpp"
+#include "case/volume_mesh_checks.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -10,7 +10,7 @@
 #include "case/early_group_check.hpp"
 #include "case/expression.hpp"
 #include "case/mesh_factory.hpp"
-#include "case/rigid_motions3d.hpp"
+#include "case/rigid_motions.hpp"
 #include "mesh/mesh_error.hpp"
 #include "mesh/tet_half_ball.hpp"
 #include "mesh/tet_msh_reader.hpp"
