@@ -17,9 +17,9 @@
 #include <nlohmann/json.hpp>
 #include <string>
 
-#include "case/case_error.hpp"
-#include "case/case_reader.hpp"
-#include "case/case_runner.hpp"
+#include "case/format/case_error.hpp"
+#include "case/format/case_reader.hpp"
+#include "case/run/case_runner.hpp"
 
 int main(int argc, char** argv) {
   const std::string path =

@@ -1,9 +1,9 @@
 #include "case_job_runner.hpp"
 
-#include "case/case_admission.hpp"
-#include "case/case_reader.hpp"
-#include "case/case_runner.hpp"
-#include "case/job_time.hpp"
+#include "case/admission/case_admission.hpp"
+#include "case/admission/job_time.hpp"
+#include "case/format/case_reader.hpp"
+#include "case/run/case_runner.hpp"
 
 namespace fosls::service {
 

@@ -1,6 +1,6 @@
 #pragma once
 // Production wiring of the service to the solver library: validation of submitted cases and
-// the job runner that solves them (case/case_runner.hpp).
+// the job runner that solves them (case/run/case_runner.hpp).
 
 #include <cstddef>
 #include <functional>
@@ -10,21 +10,20 @@
 #include <vector>
 
 #include "admission_budget.hpp"
-#include "case/case_error.hpp"
+#include "case/format/case_error.hpp"
 #include "case_verdict.hpp"
 #include "job_runner.hpp"
 
 namespace fosls::service {
 
 /// Validates a submitted case as the service must, on the request thread and without gmsh
-/// (case/case_admission.hpp): `mesh.geo_file` is refused, because a gmsh .geo script can run
-/// shell commands and read or write files; problems that need the coarse mesh of a geometry
-/// are found by the job (it fails naming them). A case whose estimated memory exceeds the
-/// budget `budget` gives at the time (none when it is empty: --admit-over-budget) is refused at
-/// the field that sets its size.
-/// A case whose whole time estimate (case/job_time.hpp) exceeds `max_job_seconds` (0: none) is
-/// refused too, at the field that sets its time.
-/// Its verdict carries admission's time estimate of an admitted case.
+/// (case/admission/case_admission.hpp): `mesh.geo_file` is refused, because a gmsh .geo script can
+/// run shell commands and read or write files; problems that need the coarse mesh of a geometry are
+/// found by the job (it fails naming them). A case whose estimated memory exceeds the budget
+/// `budget` gives at the time (none when it is empty: --admit-over-budget) is refused at the field
+/// that sets its size. A case whose whole time estimate (case/admission/job_time.hpp) exceeds
+/// `max_job_seconds` (0: none) is refused too, at the field that sets its time. Its verdict carries
+/// admission's time estimate of an admitted case.
 CaseValidator submitted_case_validator(std::function<MemoryBudget()> budget,
                                        double max_job_seconds = 0);
 

@@ -7,7 +7,7 @@
 #include <optional>
 #include <vector>
 
-#include "case/case_error.hpp"
+#include "case/format/case_error.hpp"
 
 namespace fosls::service {
 

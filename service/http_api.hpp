@@ -17,7 +17,7 @@
 #include "admission_pool.hpp"
 #include "api_routes.hpp"
 #include "bounded_http_server.hpp"
-#include "case/case_error.hpp"
+#include "case/format/case_error.hpp"
 #include "event_log.hpp"
 #include "job_store.hpp"
 #include "metrics.hpp"

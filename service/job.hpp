@@ -30,7 +30,7 @@ bool is_finished(JobState state);
 
 /// The solver's last reported iteration (throttled while it runs). A job with load steps, a
 /// sweep or adaptive levels runs several solves, each counting its iterations from 0: `step`
-/// says which one (RunControl::on_solve, solver/case/case_runner.hpp).
+/// says which one (RunControl::on_solve, solver/case/run/case_runner.hpp).
 struct JobProgress {
   int iteration = 0;
   double kkt_residual = 0.0;

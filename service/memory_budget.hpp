@@ -7,7 +7,7 @@
 #include <string>
 #include <string_view>
 
-#include "case/memory_size.hpp"
+#include "case/admission/memory_size.hpp"
 
 namespace fosls::service {
 

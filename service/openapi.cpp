@@ -3,7 +3,7 @@
 #include <cctype>
 
 #include "api_routes.hpp"
-#include "case/published_formats.hpp"
+#include "case/format/published_formats.hpp"
 #include "job.hpp"
 #include "openapi_builders.hpp"
 

@@ -8,7 +8,7 @@
 #include <string_view>
 #include <vector>
 
-#include "case/case_error.hpp"
+#include "case/format/case_error.hpp"
 
 namespace fosls::service {
 

@@ -8,7 +8,7 @@
 #include <string>
 #include <vector>
 
-#include "case/case_error.hpp"
+#include "case/format/case_error.hpp"
 #include "job.hpp"
 #include "problem.hpp"
 

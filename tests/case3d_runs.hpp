@@ -7,11 +7,11 @@
 #include <string>
 #include <vector>
 
-#include "case/case_admission.hpp"
-#include "case/case_error.hpp"
-#include "case/case_reader.hpp"
-#include "case/case_runner.hpp"
-#include "case/volume_mesh_checks.hpp"
+#include "case/admission/case_admission.hpp"
+#include "case/format/case_error.hpp"
+#include "case/format/case_reader.hpp"
+#include "case/run/case_runner.hpp"
+#include "case/run/volume_mesh_checks.hpp"
 #include "shipped_example.hpp"
 
 namespace fosls::testing {

@@ -7,9 +7,9 @@
 
 #include "assembly/contact_weight.hpp"
 #include "assembly/discretization.hpp"
-#include "case/case_problem_data.hpp"
-#include "case/case_reader.hpp"
-#include "case/mesh_factory.hpp"
+#include "case/format/case_reader.hpp"
+#include "case/run/case_problem_data.hpp"
+#include "case/run/mesh_factory.hpp"
 #include "mesh/length_scale.hpp"
 #include "mesh/refinement.hpp"
 

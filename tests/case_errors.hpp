@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <string>
 
-#include "case/case_reader.hpp"
+#include "case/format/case_reader.hpp"
 
 namespace fosls::testing {
 

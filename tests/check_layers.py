@@ -47,9 +47,12 @@ def closure(links, folder):
 
 
 def sources(folder):
-    for name in sorted(os.listdir(folder)):
-        if name.endswith((".cpp", ".hpp")):
-            yield os.path.join(folder, name)
+    """Every source below `folder`, its subfolders' included (the case layer's by role)."""
+    for where, dirs, names in sorted(os.walk(folder)):
+        dirs.sort()
+        for name in sorted(names):
+            if name.endswith((".cpp", ".hpp")):
+                yield os.path.join(where, name)
 
 
 def includes(path):
@@ -95,6 +98,7 @@ def check(build):
     for folder in links:
         allowed = closure(links, folder) | {folder}
         for path in sources(os.path.join(ROOT, "solver", folder)):
+            rel = os.path.relpath(path, os.path.join(ROOT, "solver"))
             for target, written in includes(path):
                 target_folder = target.split("/")[0] if "/" in target else folder
                 if target_folder not in links:

@@ -4,8 +4,8 @@
 
 #include <nlohmann/json.hpp>
 
-#include "case/case_reader.hpp"
-#include "case/case_runner.hpp"
+#include "case/format/case_reader.hpp"
+#include "case/run/case_runner.hpp"
 
 namespace fosls::testing {
 

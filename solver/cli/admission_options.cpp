@@ -1,6 +1,6 @@
 #include "cli/admission_options.hpp"
 
-#include "case/memory_size.hpp"
+#include "case/admission/memory_size.hpp"
 
 namespace fosls {
 

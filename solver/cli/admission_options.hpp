@@ -1,13 +1,13 @@
 #pragma once
 // The admission rule the CLI's estimate, solve and bench share with the service
-// (case/case_admission.hpp): the same read options and the same memory budget, given by
+// (case/admission/case_admission.hpp): the same read options and the same memory budget, given by
 // --max-memory (default: this machine's memory), so that estimate refuses exactly what solve
 // refuses.
 
 #include <CLI/CLI.hpp>
 #include <string>
 
-#include "case/case_reader.hpp"
+#include "case/format/case_reader.hpp"
 
 namespace fosls {
 

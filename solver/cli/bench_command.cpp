@@ -15,12 +15,12 @@
 #include <optional>
 #include <sstream>
 
-#include "case/case_admission.hpp"
-#include "case/case_reader.hpp"
-#include "case/case_runner.hpp"
-#include "case/memory_size.hpp"
-#include "case/solver_methods.hpp"
-#include "case/time_estimate.hpp"
+#include "case/admission/case_admission.hpp"
+#include "case/admission/memory_size.hpp"
+#include "case/admission/time_estimate.hpp"
+#include "case/format/case_reader.hpp"
+#include "case/format/solver_methods.hpp"
+#include "case/run/case_runner.hpp"
 #include "cli/admission_options.hpp"
 #include "cli/case_file.hpp"
 #include "cli/exit_codes.hpp"

@@ -1,6 +1,6 @@
 #pragma once
 // `fosls-contact estimate CASE`: checks a case without solving it and prints the unknowns and
-// the memory its solve will need (case/resource_estimate.hpp), for each method.
+// the memory its solve will need (case/admission/resource_estimate.hpp), for each method.
 
 #include <CLI/CLI.hpp>
 

@@ -4,7 +4,7 @@
 #include <memory>
 #include <string>
 
-#include "case/published_formats.hpp"
+#include "case/format/published_formats.hpp"
 #include "cli/exit_codes.hpp"
 
 namespace fosls {

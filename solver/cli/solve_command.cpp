@@ -13,10 +13,10 @@
 #include <string>
 #include <vector>
 
-#include "case/case_admission.hpp"
-#include "case/case_error.hpp"
-#include "case/case_reader.hpp"
-#include "case/case_runner.hpp"
+#include "case/admission/case_admission.hpp"
+#include "case/format/case_error.hpp"
+#include "case/format/case_reader.hpp"
+#include "case/run/case_runner.hpp"
 #include "cli/admission_options.hpp"
 #include "cli/case_file.hpp"
 #include "cli/exit_codes.hpp"

@@ -1,6 +1,6 @@
 #pragma once
-// The refinement steps of the adaptive and accuracy loops (case/adaptive_runner.hpp) under one
-// set of names for both dimensions: newest-vertex bisection of triangles (bisection.hpp) and of
+// The refinement steps of the adaptive and accuracy loops (case/strategy/adaptive_runner.hpp) under
+// one set of names for both dimensions: newest-vertex bisection of triangles (bisection.hpp) and of
 // tetrahedra (tet_bisection.hpp), and the uniform refinement of either. The algorithms stay in
 // their own files because the geometry differs; the loop that calls them is written once.
 

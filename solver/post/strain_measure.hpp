@@ -1,6 +1,6 @@
 #pragma once
 // The size of the strain a solution has: linear elasticity holds for small strains only, and
-// a result whose strains reach several per cent says so (case/result_warnings.hpp).
+// a result whose strains reach several per cent says so (case/result/result_warnings.hpp).
 
 #include "assembly/fosls_assembler.hpp"
 #include "mesh/mesh.hpp"

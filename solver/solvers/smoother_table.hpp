@@ -1,8 +1,8 @@
 #pragma once
 // The smoothers a case can choose (`solver.smoother`): one row each, from which the multilevel
-// cycle and pgs construct them and the case layer takes their names (case/solver_methods.hpp).
-// A new smoother: its own files (a Smoother and its make_ function) and an enumerator, a
-// declaration and a row here (docs/architecture.md, "Where to add").
+// cycle and pgs construct them and the case layer takes their names
+// (case/format/solver_methods.hpp). A new smoother: its own files (a Smoother and its make_
+// function) and an enumerator, a declaration and a row here (docs/architecture.md, "Where to add").
 
 #include <memory>
 #include <stdexcept>

@@ -29,7 +29,7 @@
 #include "../case_discretization.hpp"
 #include "assembly/discretization.hpp"
 #include "assembly/friction_terms.hpp"
-#include "case/case_reader.hpp"
+#include "case/format/case_reader.hpp"
 #include "solvers/solve_loop.hpp"
 
 using namespace fosls;

@@ -35,9 +35,9 @@
 #include <string>
 #include <vector>
 
-#include "case/case_reader.hpp"
-#include "case/expression.hpp"
-#include "case/mesh_factory.hpp"
+#include "case/format/case_reader.hpp"
+#include "case/format/expression.hpp"
+#include "case/run/mesh_factory.hpp"
 #include "displacement_elements.hpp"
 #include "mesh/refinement.hpp"
 

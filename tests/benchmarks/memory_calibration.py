@@ -6,7 +6,7 @@ shipped Signorini square at several refinement levels with each method, each in 
 process, and records the peak resident set (VmHWM) and the unknowns. It then fits
     peak_bytes ≈ base + per_unknown[method] · unknowns
 by least squares on relative error and prints the table for docs/case-format.md and the
-coefficients for solver/case/resource_estimate.cpp.
+coefficients for solver/case/admission/resource_estimate.cpp.
 
     tests/benchmarks/memory_calibration.py build/bin/fosls-contact [--levels 4,5,6,7] [--hertz]
         [--adaptive]
@@ -14,7 +14,7 @@ coefficients for solver/case/resource_estimate.cpp.
 With --adaptive it also runs the shipped hertz_adaptive example to 6, 8 and 10 steps with mmg
 and tnnmg (solved to the end: the adaptive mesh depends on the solutions) and prints the factor
 by which its peak exceeds the uniform estimate for the same finest size: the
-kAdaptiveHierarchyFactor of solver/case/resource_estimate.hpp.
+kAdaptiveHierarchyFactor of solver/case/admission/resource_estimate.hpp.
 
 Only two iterations are run: the peak is reached while setting up (hierarchy, factorisation)
 and in the first cycles; later iterations allocate nothing new.

@@ -19,7 +19,7 @@
 #include "assembly/discretization.hpp"
 #include "assembly/p2_rt1_assembler.hpp"
 #include "assembly/p2_rt1_level.hpp"
-#include "case/case_reader.hpp"
+#include "case/format/case_reader.hpp"
 #include "solvers/pdas_step.hpp"
 #include "solvers/solve_loop.hpp"
 

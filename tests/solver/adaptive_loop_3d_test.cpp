@@ -1,10 +1,10 @@
-// The one adaptive loop of case/adaptive_runner.hpp in 3D (issues 47, 48): the Signorini block of
-// tests/tet_problems.hpp solved, estimated, marked (Dörfler) and bisected (tet_bisection.hpp)
-// three times. On every adapted level mmg keeps J non-increasing and every iterate feasible after
-// every smoother sweep and coarse correction, each step's solve converges in a bounded number of
-// iterations from the prolongated solution, and the estimator J^½ decreases. The same loop with an
-// accuracy section refines uniformly and estimates the force's error, which bounds the error
-// against the force of the next uniform refinement.
+// The one adaptive loop of case/strategy/adaptive_runner.hpp in 3D (issues 47, 48): the Signorini
+// block of tests/tet_problems.hpp solved, estimated, marked (Dörfler) and bisected
+// (tet_bisection.hpp) three times. On every adapted level mmg keeps J non-increasing and every
+// iterate feasible after every smoother sweep and coarse correction, each step's solve converges in
+// a bounded number of iterations from the prolongated solution, and the estimator J^½ decreases.
+// The same loop with an accuracy section refines uniformly and estimates the force's error, which
+// bounds the error against the force of the next uniform refinement.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -12,7 +12,7 @@
 
 #include "../sweep_checks.hpp"
 #include "../tet_problems.hpp"
-#include "case/adaptive_runner.hpp"
+#include "case/strategy/adaptive_runner.hpp"
 
 namespace fosls {
 namespace {

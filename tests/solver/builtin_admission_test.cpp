@@ -5,7 +5,7 @@
 
 #include <string>
 
-#include "case/case_admission.hpp"
+#include "case/admission/case_admission.hpp"
 
 namespace fosls {
 namespace {

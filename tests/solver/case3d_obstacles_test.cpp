@@ -1,5 +1,5 @@
-// The rigid obstacles of 3D contact cases (case/obstacle_section.cpp): a plane given in either
-// form, a sphere and a gap function of x, y and z, each checked against an exact or an
+// The rigid obstacles of 3D contact cases (case/format/obstacle_section.cpp): a plane given in
+// either form, a sphere and a gap function of x, y and z, each checked against an exact or an
 // independent answer; and every problem of an obstacle named by its field.
 
 #include <gtest/gtest.h>
@@ -7,9 +7,9 @@
 #include <nlohmann/json.hpp>
 
 #include "../case3d_runs.hpp"
-#include "case/case_error.hpp"
-#include "case/case_reader.hpp"
-#include "case/case_runner.hpp"
+#include "case/format/case_error.hpp"
+#include "case/format/case_reader.hpp"
+#include "case/run/case_runner.hpp"
 
 namespace fosls {
 namespace {

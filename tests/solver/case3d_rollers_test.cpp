@@ -9,10 +9,10 @@
 #include <nlohmann/json.hpp>
 
 #include "../case3d_runs.hpp"
-#include "case/case_admission.hpp"
-#include "case/case_error.hpp"
-#include "case/case_reader.hpp"
-#include "case/volume_mesh_checks.hpp"
+#include "case/admission/case_admission.hpp"
+#include "case/format/case_error.hpp"
+#include "case/format/case_reader.hpp"
+#include "case/run/volume_mesh_checks.hpp"
 
 namespace fosls {
 namespace {

@@ -1,6 +1,7 @@
 // Load steps and sweeps of a 3D case run through the same series runners as 2D
-// (case/load_step_runner.hpp, case/sweep_runner.hpp; issue 47): each step or point is one 3D
-// solve, started from the previous one's solution, and the last one's force is the plain solve's.
+// (case/run/load_step_runner.hpp, case/run/sweep_runner.hpp; issue 47): each step or point is one
+// 3D solve, started from the previous one's solution, and the last one's force is the plain
+// solve's.
 
 #include <gtest/gtest.h>
 
@@ -8,10 +9,10 @@
 #include <string>
 
 #include "../case3d_runs.hpp"
-#include "case/case_reader.hpp"
-#include "case/case_runner.hpp"
-#include "case/result_rules.hpp"
-#include "case/rule_checker.hpp"
+#include "case/format/case_reader.hpp"
+#include "case/format/rule_checker.hpp"
+#include "case/result/result_rules.hpp"
+#include "case/run/case_runner.hpp"
 
 namespace fosls {
 namespace {

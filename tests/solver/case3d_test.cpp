@@ -1,6 +1,7 @@
-// 3D cases through the case layer (case/case_reader.hpp, case/case_runner.hpp): the shipped
-// hertz_3d example read and solved by mmg and pdas to the same force, against 3D Hertz; every
-// problem of a bad case named by its field; the warnings a 2D result gives for the same finding.
+// 3D cases through the case layer (case/format/case_reader.hpp, case/run/case_runner.hpp): the
+// shipped hertz_3d example read and solved by mmg and pdas to the same force, against 3D Hertz;
+// every problem of a bad case named by its field; the warnings a 2D result gives for the same
+// finding.
 
 #include <gtest/gtest.h>
 
@@ -14,13 +15,13 @@
 #include "../one_tetrahedron_msh.hpp"
 #include "../shipped_example.hpp"
 #include "../tet_problems.hpp"
-#include "case/case_admission.hpp"
-#include "case/case_error.hpp"
-#include "case/case_reader.hpp"
-#include "case/case_runner.hpp"
-#include "case/result_rules.hpp"
-#include "case/rule_checker.hpp"
-#include "case/volume_mesh_checks.hpp"
+#include "case/admission/case_admission.hpp"
+#include "case/format/case_error.hpp"
+#include "case/format/case_reader.hpp"
+#include "case/format/rule_checker.hpp"
+#include "case/result/result_rules.hpp"
+#include "case/run/case_runner.hpp"
+#include "case/run/volume_mesh_checks.hpp"
 
 namespace fosls {
 namespace {

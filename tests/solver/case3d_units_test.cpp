@@ -8,8 +8,8 @@
 #include <cmath>
 
 #include "../case3d_runs.hpp"
-#include "case/case_reader.hpp"
-#include "case/case_runner.hpp"
+#include "case/format/case_reader.hpp"
+#include "case/run/case_runner.hpp"
 #include "core/deadline.hpp"
 
 namespace fosls {

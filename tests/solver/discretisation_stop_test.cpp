@@ -7,8 +7,8 @@
 #include <cmath>
 
 #include "../shipped_example.hpp"
-#include "case/case_reader.hpp"
-#include "case/case_runner.hpp"
+#include "case/format/case_reader.hpp"
+#include "case/run/case_runner.hpp"
 #include "solvers/algebraic_error.hpp"
 
 namespace fosls {

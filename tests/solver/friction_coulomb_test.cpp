@@ -14,7 +14,7 @@
 #include "../shipped_example.hpp"
 #include "../solved_case.hpp"
 #include "assembly/discretization.hpp"
-#include "case/case_reader.hpp"
+#include "case/format/case_reader.hpp"
 #include "solvers/solve_loop.hpp"
 
 namespace fosls {

@@ -10,9 +10,9 @@
 
 #include "../shipped_example.hpp"
 #include "../solved_case.hpp"
-#include "case/case_error.hpp"
-#include "case/case_reader.hpp"
-#include "case/case_runner.hpp"
+#include "case/format/case_error.hpp"
+#include "case/format/case_reader.hpp"
+#include "case/run/case_runner.hpp"
 
 namespace fosls {
 namespace {

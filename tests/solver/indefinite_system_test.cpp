@@ -4,7 +4,7 @@
 #include <gtest/gtest.h>
 
 #include "assembly/definiteness.hpp"
-#include "case/case_runner.hpp"
+#include "case/run/case_runner.hpp"
 #include "contact_problems.hpp"
 #include "core/indefinite_system.hpp"
 #include "solvers/exact_box_qp.hpp"

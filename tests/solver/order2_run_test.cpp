@@ -7,7 +7,7 @@
 
 #include "../shipped_example.hpp"
 #include "../solved_case.hpp"
-#include "case/resource_estimate.hpp"
+#include "case/admission/resource_estimate.hpp"
 
 namespace fosls {
 namespace {

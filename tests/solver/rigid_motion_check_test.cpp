@@ -6,7 +6,7 @@
 
 #include <string>
 
-#include "case/case_runner.hpp"
+#include "case/run/case_runner.hpp"
 
 namespace fosls {
 namespace {

@@ -7,7 +7,7 @@
 #include <limits>
 
 #include "adapted_hierarchy.hpp"
-#include "case/solver_methods.hpp"
+#include "case/format/solver_methods.hpp"
 #include "contact_problems.hpp"
 #include "solvers/solve_loop.hpp"
 

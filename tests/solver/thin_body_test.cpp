@@ -6,9 +6,9 @@
 
 #include <string>
 
-#include "case/case_error.hpp"
-#include "case/case_reader.hpp"
-#include "case/case_runner.hpp"
+#include "case/format/case_error.hpp"
+#include "case/format/case_reader.hpp"
+#include "case/run/case_runner.hpp"
 
 namespace fosls {
 namespace {

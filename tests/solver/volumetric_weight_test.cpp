@@ -11,8 +11,8 @@
 #include <vector>
 
 #include "../shipped_example.hpp"
-#include "case/case_reader.hpp"
-#include "case/case_runner.hpp"
+#include "case/format/case_reader.hpp"
+#include "case/run/case_runner.hpp"
 #include "contact_problems.hpp"
 #include "solvers/solve_loop.hpp"
 

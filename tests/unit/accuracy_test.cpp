@@ -1,17 +1,17 @@
 // The `accuracy` section and the estimate of the contact force's error from successive uniform
-// refinements (solver/case/force_accuracy.hpp): the estimate is exact on a geometric sequence of
-// forces, the ratio is observed once three levels exist and limited to [2, 4], and the section
-// is read with its defaults, refused with what it cannot be combined with, and checked value by
-// value.
+// refinements (solver/case/strategy/force_accuracy.hpp): the estimate is exact on a geometric
+// sequence of forces, the ratio is observed once three levels exist and limited to [2, 4], and the
+// section is read with its defaults, refused with what it cannot be combined with, and checked
+// value by value.
 #include <gtest/gtest.h>
 
 #include <algorithm>
 #include <cmath>
 
 #include "../case_errors.hpp"
-#include "case/adaptive_runner.hpp"
-#include "case/case_reader.hpp"
-#include "case/force_accuracy.hpp"
+#include "case/format/case_reader.hpp"
+#include "case/strategy/adaptive_runner.hpp"
+#include "case/strategy/force_accuracy.hpp"
 
 namespace fosls {
 namespace {

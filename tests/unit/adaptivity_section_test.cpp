@@ -5,8 +5,8 @@
 #include <algorithm>
 
 #include "../case_errors.hpp"
-#include "case/case_admission.hpp"
-#include "case/case_reader.hpp"
+#include "case/admission/case_admission.hpp"
+#include "case/format/case_reader.hpp"
 
 namespace fosls {
 namespace {

@@ -8,8 +8,8 @@
 #include <string>
 #include <vector>
 
-#include "case/case_error.hpp"
-#include "case/early_group_check.hpp"
+#include "case/admission/early_group_check.hpp"
+#include "case/format/case_error.hpp"
 
 namespace fosls {
 namespace {

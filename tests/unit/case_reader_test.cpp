@@ -1,7 +1,7 @@
-// Case JSON → CaseSpec (case/case_reader.hpp): the shipped examples read, every field lands
+// Case JSON → CaseSpec (case/format/case_reader.hpp): the shipped examples read, every field lands
 // where it belongs, and bad input gets every problem listed with its JSON pointer.
 
-#include "case/case_reader.hpp"
+#include "case/format/case_reader.hpp"
 #include "../case_errors.hpp"
 #include "../shipped_example.hpp"
 

@@ -10,7 +10,7 @@
 #include <cmath>
 #include <numbers>
 
-#include "case/resource_estimate.hpp"
+#include "case/admission/resource_estimate.hpp"
 #include "mesh/gmsh_mesh.hpp"
 
 namespace fosls {

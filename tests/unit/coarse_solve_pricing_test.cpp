@@ -4,9 +4,9 @@
 // The 24³ box that was admitted at 1.2 GiB and ran out of memory at 2.1 GiB is priced above 5 GiB.
 #include <gtest/gtest.h>
 
-#include "case/case_admission.hpp"
-#include "case/resource_estimate.hpp"
-#include "case/solver_methods.hpp"
+#include "case/admission/case_admission.hpp"
+#include "case/admission/resource_estimate.hpp"
+#include "case/format/solver_methods.hpp"
 
 namespace fosls {
 namespace {

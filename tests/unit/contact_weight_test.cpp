@@ -8,8 +8,8 @@
 #include "../solver/contact_problems.hpp"
 #include "assembly/contact_weight.hpp"
 #include "assembly/discretization.hpp"
-#include "case/case_reader.hpp"
-#include "case/case_runner.hpp"
+#include "case/format/case_reader.hpp"
+#include "case/run/case_runner.hpp"
 
 namespace fosls {
 namespace {

@@ -7,8 +7,8 @@
 
 #include "../solver/contact_problems.hpp"
 #include "assembly/definiteness.hpp"
-#include "case/case_reader.hpp"
-#include "case/case_runner.hpp"
+#include "case/format/case_reader.hpp"
+#include "case/run/case_runner.hpp"
 #include "solvers/solve_loop.hpp"
 
 namespace fosls {

@@ -1,13 +1,14 @@
 // What the one reader reads in 3D but the 3D backend cannot run yet is refused at its field with
-// the reason (case/dimension_support.cpp) — among them the discretisation stopping rule, which
-// stopped 3D solves 4–44 % short of the answer while the result reported 1e-8 (issue 50, item 4).
+// the reason (case/format/dimension_support.cpp) — among them the discretisation stopping rule,
+// which stopped 3D solves 4–44 % short of the answer while the result reported 1e-8 (issue 50, item
+// 4).
 
 #include <gtest/gtest.h>
 
 #include <string>
 
 #include "../shipped_example.hpp"
-#include "case/case_reader.hpp"
+#include "case/format/case_reader.hpp"
 
 namespace fosls {
 namespace {

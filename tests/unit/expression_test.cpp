@@ -1,6 +1,6 @@
-// Scalars of the case: numbers and muParser expressions of x, y (case/expression.hpp).
+// Scalars of the case: numbers and muParser expressions of x, y (case/format/expression.hpp).
 
-#include "case/expression.hpp"
+#include "case/format/expression.hpp"
 
 #include <gtest/gtest.h>
 

@@ -10,7 +10,7 @@
 #include <numbers>
 #include <thread>
 
-#include "case/mesh_factory.hpp"
+#include "case/run/mesh_factory.hpp"
 #include "mesh/gmsh_mesh.hpp"
 #include "mesh/mesh_error.hpp"
 #include "mesh/refinement.hpp"

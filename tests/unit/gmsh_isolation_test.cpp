@@ -12,7 +12,7 @@
 #include <fstream>
 #include <thread>
 
-#include "case/mesh_factory.hpp"
+#include "case/run/mesh_factory.hpp"
 #include "mesh/gmsh_mesh.hpp"
 #include "mesh/mesher_protocol.hpp"
 #include "process/child_process.hpp"

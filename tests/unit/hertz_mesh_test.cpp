@@ -6,8 +6,8 @@
 #include <cmath>
 #include <numbers>
 
-#include "case/case_error.hpp"
-#include "case/mesh_factory.hpp"
+#include "case/format/case_error.hpp"
+#include "case/run/mesh_factory.hpp"
 #include "mesh/builtin_meshes.hpp"
 #include "mesh/refinement.hpp"
 

@@ -1,5 +1,5 @@
-// The time a whole case may take (case/job_time.hpp): pgs bounded by its max_iterations, sweeps
-// by their points, solver.time_limit_s bounding it; admission against a time budget (the
+// The time a whole case may take (case/admission/job_time.hpp): pgs bounded by its max_iterations,
+// sweeps by their points, solver.time_limit_s bounding it; admission against a time budget (the
 // service's --max-job-seconds) refuses the hostile probe's pgs sweep naming the time and the
 // flag, and the CLI, which sets no budget, admits it; a job's limit is a margin times its
 // estimate within the floor and the cap.
@@ -8,8 +8,8 @@
 #include <string>
 
 #include "../shipped_example.hpp"
-#include "case/case_admission.hpp"
-#include "case/job_time.hpp"
+#include "case/admission/case_admission.hpp"
+#include "case/admission/job_time.hpp"
 
 namespace fosls {
 namespace {

@@ -10,9 +10,9 @@
 #include <vector>
 
 #include "../shipped_example.hpp"
-#include "case/case_error.hpp"
-#include "case/case_reader.hpp"
-#include "case/load_step_runner.hpp"
+#include "case/format/case_error.hpp"
+#include "case/format/case_reader.hpp"
+#include "case/run/load_step_runner.hpp"
 #include "core/deadline.hpp"
 
 namespace fosls {

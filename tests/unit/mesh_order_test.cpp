@@ -4,7 +4,7 @@
 
 #include "../case_errors.hpp"
 #include "../shipped_example.hpp"
-#include "case/resource_estimate.hpp"
+#include "case/admission/resource_estimate.hpp"
 
 namespace fosls {
 namespace {

@@ -12,8 +12,8 @@
 #include <sstream>
 
 #include "../gmsh_text.hpp"
-#include "case/case_error.hpp"
-#include "case/mesh_factory.hpp"
+#include "case/format/case_error.hpp"
+#include "case/run/mesh_factory.hpp"
 #include "mesh/msh_reader.hpp"
 
 namespace fosls {

@@ -3,7 +3,7 @@
 // the reader checks and every result is checked against.
 // To refresh them after changing a rule: FOSLS_UPDATE_DOCS=1 build/bin/published_formats_test
 
-#include "case/published_formats.hpp"
+#include "case/format/published_formats.hpp"
 
 #include <gtest/gtest.h>
 

@@ -11,9 +11,9 @@
 #include <vector>
 
 #include "../shipped_example.hpp"
-#include "case/case_reader.hpp"
-#include "case/case_runner.hpp"
-#include "case/result_warnings.hpp"
+#include "case/format/case_reader.hpp"
+#include "case/result/result_warnings.hpp"
+#include "case/run/case_runner.hpp"
 
 namespace fosls {
 namespace {

@@ -11,10 +11,10 @@
 #include <string>
 
 #include "../solved_case.hpp"
-#include "case/case_reader.hpp"
-#include "case/case_runner.hpp"
-#include "case/result_rules.hpp"
-#include "case/rule_checker.hpp"
+#include "case/format/case_reader.hpp"
+#include "case/format/rule_checker.hpp"
+#include "case/result/result_rules.hpp"
+#include "case/run/case_runner.hpp"
 
 namespace fosls {
 namespace {

@@ -4,8 +4,8 @@
 // faster than N for pdas.
 #include <gtest/gtest.h>
 
-#include "case/solver_methods.hpp"
-#include "case/time_estimate.hpp"
+#include "case/admission/time_estimate.hpp"
+#include "case/format/solver_methods.hpp"
 
 namespace fosls {
 namespace {

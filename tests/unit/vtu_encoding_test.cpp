@@ -14,8 +14,8 @@
 #include <vector>
 
 #include "../uniaxial_case.hpp"
-#include "case/case_reader.hpp"
-#include "case/case_runner.hpp"
+#include "case/format/case_reader.hpp"
+#include "case/run/case_runner.hpp"
 
 namespace fosls {
 namespace {

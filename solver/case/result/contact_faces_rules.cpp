@@ -1,0 +1,46 @@
+// The `contact` object of a body whose contact boundary is a set of faces (3D; contact_faces.hpp)
+// described field by field; the rest of the result's rules are both dimensions' (result_rules.cpp).
+
+#include "case/result/result_rule_parts.hpp"
+
+namespace fosls {
+
+namespace {
+
+using namespace result_parts;
+
+ObjectRulePtr zone3d_rule() {
+  const ValueRule where = one_of_value({tuple_value(number_value(), 3, "[x, y, z]"), null_value()},
+                                       "[x, y, z] or null");
+  return object_rule(
+      "the 3D contact zone", "zone3d",
+      {output_field("faces", count(), "1", "contact faces in contact (pressure > 0)"),
+       output_field("radius", number(), "L",
+                    "√(area/π): the radius of the disc of the zone's area (for Hertz, a)"),
+       output_field("box_min", where, "L",
+                    "the smallest x, y and z of the faces in contact; null without contact"),
+       output_field("box_max", where, "L", "the largest x, y and z of the faces in contact"),
+       output_field("peak_pressure", number(), "S",
+                    "the largest face pressure (= max_pressure; 0 without contact)"),
+       output_field("peak_location", where, "L",
+                    "centroid [x, y, z] of the face with the peak pressure; null without one")});
+}
+
+}  // namespace
+
+ObjectRulePtr result_parts::contact_faces_rule() {
+  std::vector<FieldRule> fields = {
+      output_field("force", tuple_value(number_value(), 3, "[F_x, F_y, F_z]"), "S·L²",
+                   "∫σn dA over the contact groups: the plane's force on the body"),
+      output_field("max_pressure", number(), "S",
+                   "the largest face pressure −σ_nn (RT0: one value per face)"),
+      output_field("area", number(), "L²", "the area of the contact faces with pressure > 0"),
+      output_field("faces", count(), "1", "faces of the contact groups"),
+      output_field("faces_in_contact", count(), "1", "of those, the faces with pressure > 0"),
+      output_field("zone", object_value(zone3d_rule()), "",
+                   "where the body touches the obstacle: its extent and peak, as 2D's zone")};
+  for (FieldRule& f : constraint_fields(3)) fields.push_back(std::move(f));
+  return object_rule("the 3D contact output", "contact3d", std::move(fields));
+}
+
+}  // namespace fosls

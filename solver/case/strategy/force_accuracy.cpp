@@ -1,0 +1,143 @@
+#include "case/strategy/force_accuracy.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include "case/result/result_warnings.hpp"
+#include "case/strategy/adaptive_runner.hpp"
+
+namespace fosls {
+
+namespace {
+
+double distance(const ForceComponents& a, const ForceComponents& b) {
+  ForceComponents d = a;
+  for (std::size_t i = 0; i < d.size(); ++i) d[i] -= b[i];
+  return force_norm(d);
+}
+
+/// (a − b)·c.
+double dot_of_difference(const ForceComponents& a, const ForceComponents& b,
+                         const ForceComponents& c) {
+  double s = 0.0;
+  for (std::size_t i = 0; i < c.size(); ++i) s += (a[i] - b[i]) * c[i];
+  return s;
+}
+
+nlohmann::json number_or_null(double v) {
+  return std::isfinite(v) ? nlohmann::json(v) : nlohmann::json();
+}
+
+std::string num(double v) { return sentence_number(v, 3); }
+
+/// The last level's estimate, or what the levels before it said when it has none.
+std::string estimate_text(const std::vector<AdaptiveStepRecord>& steps) {
+  if (steps.empty()) return "no level solved";
+  const ForceErrorEstimate& e = steps.back().force_error;
+  if (e.available()) return "the estimated relative error of the force is " + num(e.estimate);
+  if (e.growing)
+    return "no error estimate: the force's change grew from " +
+           num(steps[steps.size() - 2].force_error.change) + " to " + num(e.change) +
+           " in the last level, so the levels are not yet where the change shrinks by a steady "
+           "ratio and predicts the error";
+  for (auto s = steps.rbegin() + 1; s != steps.rend(); ++s)
+    if (s->force_error.available())
+      return "the last level has no estimate (its solve did not converge); the level before, "
+             "at " +
+             std::to_string(s->levels - 1) + " refinements, had " + num(s->force_error.estimate);
+  return steps.back().converged ? "no error estimate yet (it needs two levels)"
+                                : "no error estimate (the level's solve did not converge)";
+}
+
+std::string stop_message(const std::string& reason, const std::vector<AdaptiveStepRecord>& steps,
+                         const AccuracySpec& spec) {
+  const std::string estimated = estimate_text(steps);
+  const std::string requested = " (accuracy.force = " + num(spec.force) + ")";
+  if (reason == "reached") return estimated + ", within accuracy.force = " + num(spec.force);
+  if (reason == "no_force")
+    return "the contact force is zero on two levels, so it has no relative error to reach; "
+           "check that the obstacle touches the body";
+  if (reason == "max_dofs")
+    return "the next refinement would exceed accuracy.max_dofs = " + std::to_string(spec.max_dofs) +
+           "; " + estimated + requested;
+  if (reason == "not_converged")
+    return "the last level's solve did not converge, so its force is not the level's; " +
+           estimated + requested;
+  if (reason == "time_limit") return "solver.time_limit_s ran out; " + estimated + requested;
+  if (reason == "cancelled") return "the run was cancelled; " + estimated + requested;
+  return reason;
+}
+
+}  // namespace
+
+double force_norm(const ForceComponents& f) {
+  return f.size() == 3 ? std::hypot(f[0], f[1], f[2]) : std::hypot(f[0], f[1]);
+}
+
+ForceErrorEstimate estimate_force_error(const std::vector<ForceComponents>& forces) {
+  ForceErrorEstimate e;
+  const std::size_t k = forces.size();
+  if (k < 2) return e;
+  const double size = force_norm(forces[k - 1]);
+  if (!(size > 0)) return e;
+  const double change = distance(forces[k - 1], forces[k - 2]);
+  e.change = change / size;
+  e.ratio = kAssumedForceRatio;
+  e.estimate = e.change / (e.ratio - 1.0);
+  if (k < 3 || !(change > 0)) return e;
+  const double previous = distance(forces[k - 2], forces[k - 3]);
+  e.ratio = std::clamp(previous / change, kMinForceRatio, kMaxForceRatio);
+  e.ratio_observed = true;
+  e.estimate = e.change / (e.ratio - 1.0);
+  // The changes' components along F_k: of opposite signs, the errors cancel in a change.
+  const auto along = [&](const ForceComponents& a, const ForceComponents& b) {
+    return dot_of_difference(a, b, forces[k - 1]);
+  };
+  if (along(forces[k - 1], forces[k - 2]) * along(forces[k - 2], forces[k - 3]) < 0) {
+    e.monotone = false;
+    e.estimate = std::max(change, previous) / size;
+  } else if (change > previous) {
+    e.growing = true;
+    e.estimate = ForceErrorEstimate::kNone;
+  }
+  return e;
+}
+
+std::string accuracy_stop_reason(const ForceErrorEstimate& e, const AccuracySpec& spec,
+                                 const std::vector<ForceComponents>& forces) {
+  // A zero force on the first level may be a contact the coarse mesh does not resolve.
+  const auto zero = [](const ForceComponents& f) { return !(force_norm(f) > 0); };
+  if (forces.size() >= 2 && zero(forces.back()) && zero(forces[forces.size() - 2]))
+    return "no_force";
+  if (e.available() && e.estimate <= spec.force) return "reached";
+  return "";
+}
+
+nlohmann::json accuracy_json(const std::vector<AdaptiveStepRecord>& records,
+                             const std::string& stop_reason, const AccuracySpec& spec) {
+  nlohmann::json steps = nlohmann::json::array();
+  for (const AdaptiveStepRecord& s : records)
+    steps.push_back({{"refinements", s.levels - 1},
+                     {"dofs", s.dofs},
+                     {"dofs_total", s.dofs_total},
+                     {"force", s.force},
+                     {"change", number_or_null(s.force_error.change)},
+                     {"ratio", number_or_null(s.force_error.ratio)},
+                     {"ratio_observed", s.force_error.ratio_observed},
+                     {"monotone", s.force_error.monotone},
+                     {"estimate", number_or_null(s.force_error.estimate)},
+                     {"iterations", s.iterations},
+                     {"converged", s.converged},
+                     {"time_s", s.time_s}});
+  const ForceErrorEstimate last =
+      records.empty() ? ForceErrorEstimate{} : records.back().force_error;
+  return {{"force", spec.force},
+          {"max_dofs", spec.max_dofs},
+          {"reached", stop_reason == "reached"},
+          {"stop_reason", stop_reason},
+          {"estimate", number_or_null(last.estimate)},
+          {"steps", steps},
+          {"stop_message", stop_message(stop_reason, records, spec)}};
+}
+
+}  // namespace fosls
