@@ -277,7 +277,7 @@ void TruncatedHierarchy::truncate_level(int j) {
         level.prolongation, any ? truncated : std::vector<char>{}, std::move(moves));
   } else {
     prolongations_[j] = TruncatedProlongation::formed(
-        sparse_sum(level.prolongation, moves, any ? &truncated : nullptr));
+        sparse_sum(level.prolongation, moves, any ? &truncated : nullptr), &level.prolongation);
   }
   if (j > 1) level_truncated_[j - 1] = std::move(coarse);
 }

@@ -10,6 +10,7 @@
 #include <cmath>
 #include <cstdio>
 
+#include "../step_energy_counter.hpp"
 #include "../sweep_checks.hpp"
 #include "../tet_problems.hpp"
 #include "case/strategy/adaptive_runner.hpp"
@@ -40,21 +41,13 @@ TetHierarchy first_levels(const TetHierarchy& h, int levels) {
 TEST(AdaptiveLoop3d, MonotoneFeasibleBoundedAndTheEstimatorDecreases) {
   const ProblemData<3> data = testing::signorini_block(1.0);
   // J after every fine-level sweep of every step's solve: non-increasing within a step.
-  int sweeps = 0, increases = 0;
-  double last_energy = 0.0;
-  CaseSolveObserver observer;
-  observer.on_step = [&](int, long long) { last_energy = std::numeric_limits<double>::infinity(); };
-  observer.solver.on_sweep = [&](double energy) {
-    if (energy > last_energy + 1e-13 * (std::abs(last_energy) + 1.0)) ++increases;
-    last_energy = energy;
-    ++sweeps;
-  };
+  testing::StepEnergyCounter energy;
   const CaseSolutionOf<3> s = solve_case_levels<3>(build_tet_hierarchy(make_box({2, 2, 2}), 1),
-                                                   data, adaptive_spec(3), observer);
+                                                   data, adaptive_spec(3), energy.observer());
   EXPECT_EQ(s.stop_reason, "steps");
   ASSERT_EQ(s.steps.size(), 4u);
-  EXPECT_GT(sweeps, 0);
-  EXPECT_EQ(increases, 0);
+  EXPECT_GT(energy.sweeps, 0);
+  EXPECT_EQ(energy.increases, 0);
   EXPECT_TRUE(s.disc->problem().qp.feasible(s.x));
   const int uniform_tets = build_tet_hierarchy(make_box({2, 2, 2}), 2).finest().num_tets();
   for (std::size_t k = 0; k < s.steps.size(); ++k) {
