@@ -34,7 +34,12 @@ void KinkSides::choose(const Vector& x, Vector& r) {
     const double gradient = qp_.b[i] - r[i] - b_[k];  // of the smooth part: A x − b
     signed char side = 0;
     if (!diagonal_.size()) {
-      if (x[i] > o || (x[i] == o && gradient + w < 0.0))
+      // A kink of weight 0 (Coulomb's bound 0 on both edges of a vertex out of contact) is no
+      // kink: the DOF keeps its own bounds instead of being stopped at o for an iteration and
+      // then truncated from the coarse levels there (docs/method.md §8.4).
+      if (w == 0.0)
+        side = 0;
+      else if (x[i] > o || (x[i] == o && gradient + w < 0.0))
         side = 1;
       else if (x[i] < o || (x[i] == o && gradient - w > 0.0))
         side = -1;
@@ -52,7 +57,7 @@ void KinkSides::choose(const Vector& x, Vector& r) {
     qp_.b[i] = b_new;
     // The side's bound at the kink keeps a monotone method on its side; a Newton step on the
     // side's linearisation chooses its side again from the prox point instead.
-    const bool bounded = !diagonal_.size() || side == 0;
+    const bool bounded = (!diagonal_.size() && w != 0.0) || (diagonal_.size() && side == 0);
     qp_.lower[i] = side < 0 || !bounded ? lower_[k] : std::max(lower_[k], o);
     qp_.upper[i] = side > 0 || !bounded ? upper_[k] : std::min(upper_[k], o);
   }

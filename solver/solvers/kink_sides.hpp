@@ -2,10 +2,11 @@
 // The kinks of a frictional problem (core/kinks.hpp) for the box-QP methods (docs/method.md §8):
 // before each iteration every kinked DOF is held on one side of its kink — above it (the kink
 // is the linear term +w, the kink its lower bound), below it, or at it (both bounds there) —
-// chosen from the iterate and the subgradient. On its side J + kinks is a box QP up to a
-// constant, so each monotone step on it decreases the kinked functional and keeps feasibility;
-// a DOF that reaches its kink is given a new side in the next iteration. The QP's b and bounds
-// are changed at the kinked DOFs only and restored when the sides go.
+// chosen from the iterate and the subgradient (a kink of weight 0 is no kink and gets no side).
+// On its side J + kinks is a box QP up to a constant, so each monotone step on it decreases the
+// kinked functional and keeps feasibility; a DOF that reaches its kink is given a new side in
+// the next iteration. The QP's b and bounds are changed at the kinked DOFs only and restored
+// when the sides go.
 
 #include <vector>
 

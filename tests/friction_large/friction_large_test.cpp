@@ -53,8 +53,8 @@ TEST(FrictionLarge, CoulombConvergesAtRefinements6) {
 
 /// The shipped cattaneo_mindlin (press, then shift in two steps) at refinements 5, where its
 /// shift steps stopped at 200 iterations before the stopping rule of docs/method.md §8.4 took the
-/// last update's move instead of the bounds' change (measured: 32/22/23 iterations per step;
-/// at refinements 6, by hand: 47/28/26, docs/performance.md "Friction").
+/// last update's move instead of the bounds' change (measured: 32/14/14 iterations per step,
+/// 32/22/23 before kinks of weight 0 were left free; docs/performance.md "Friction").
 TEST(FrictionLarge, CattaneoMindlinLoadStepsConvergeAtRefinements5) {
   if (!asked()) GTEST_SKIP() << "set FOSLS_LARGE_TESTS=1 to run (a minute or two, 340 MiB)";
   nlohmann::json j = testing::load_shipped_example("cattaneo_mindlin");
@@ -65,7 +65,7 @@ TEST(FrictionLarge, CattaneoMindlinLoadStepsConvergeAtRefinements5) {
   ASSERT_EQ(steps.size(), 3u);
   for (std::size_t k = 0; k < steps.size(); ++k) {
     EXPECT_TRUE(steps[k]["converged"].get<bool>()) << "step " << k;
-    EXPECT_LE(steps[k]["iterations"].get<int>(), k == 0 ? 40 : 30) << "step " << k;
+    EXPECT_LE(steps[k]["iterations"].get<int>(), k == 0 ? 40 : 20) << "step " << k;
   }
 }
 
