@@ -123,10 +123,15 @@ StopReason stop_reason(const SolverReport& report) {
   return report.time_limited ? StopReason::kTimeLimit : StopReason::kMaxIterations;
 }
 
+namespace {
+
+/// The KKT residual at the end over the initial one (0 when the start was already exact).
 double relative_kkt(const SolverReport& report) {
   return report.initial_kkt > 0 ? report.final_kkt / report.initial_kkt : 0.0;
 }
 
+/// Why a solve stopped without converging, with the numbers and what to change; empty when it
+/// converged.
 std::string convergence_message(const SolverReport& report, const SolverOptions& options) {
   switch (stop_reason(report)) {
     case StopReason::kConverged:
@@ -152,6 +157,7 @@ std::string convergence_message(const SolverReport& report, const SolverOptions&
          "case (a too fine mesh for the method, or a contact zone the mesh does not resolve)";
 }
 
+/// The result's `history`: iteration 0 and every iteration after it.
 json history_json(const std::vector<IterationRecord>& history) {
   json h = json::array();
   for (const auto& r : history)
@@ -165,6 +171,7 @@ json history_json(const std::vector<IterationRecord>& history) {
   return h;
 }
 
+/// The result's `solver_statistics`: counts and times of the multilevel method's parts.
 json statistics_json(const SolverReport& report) {
   const CycleStatistics& c = report.cycle;
   return {{"nested_iterations", report.nested_iterations},
@@ -179,6 +186,7 @@ json statistics_json(const SolverReport& report) {
           {"coarse_s", c.coarse_s}};
 }
 
+/// The solver's warnings of a result, each saying what happened and what it means.
 std::vector<ResultWarning> result_warnings(const SolverReport& report,
                                            const SolverOptions& options) {
   std::vector<ResultWarning> warnings;
@@ -208,6 +216,7 @@ std::vector<ResultWarning> result_warnings(const SolverReport& report,
   return warnings;
 }
 
+/// The result's `weights` object: the weights as used, in both dimensions.
 json weights_json(const Weights& w) {
   return {{"c1", w.c1},
           {"c2", w.c2},
@@ -218,6 +227,8 @@ json weights_json(const Weights& w) {
           {"c3_limit", w.c3_limit > 0 ? json(w.c3_limit) : json()},
           {"length_scale", w.length_scale}};
 }
+
+}  // namespace
 
 json result_json(const CaseSpec& spec, const SolverReport& report, json contact,
                  const FunctionalParts& functional, const ProblemSize& size,

@@ -37,26 +37,6 @@ struct RunMemory {
 
 StopReason stop_reason(const SolverReport& report);
 
-/// The KKT residual at the end over the initial one (0 when the start was already exact).
-double relative_kkt(const SolverReport& report);
-
-/// Why a solve stopped without converging, with the numbers and what to change; empty when it
-/// converged.
-std::string convergence_message(const SolverReport& report, const SolverOptions& options);
-
-/// The result's `history`: iteration 0 and every iteration after it.
-nlohmann::json history_json(const std::vector<IterationRecord>& history);
-
-/// The result's `solver_statistics`: counts and times of the multilevel method's parts.
-nlohmann::json statistics_json(const SolverReport& report);
-
-/// The solver's warnings of a result, each saying what happened and what it means.
-std::vector<ResultWarning> result_warnings(const SolverReport& report,
-                                           const SolverOptions& options);
-
-/// The result's `weights` object: the weights as used, in both dimensions.
-nlohmann::json weights_json(const Weights& weights);
-
 /// The result's `contact` object of a 2D solve (a boundary of edges; 3D's is contact_faces.hpp's)
 /// but for the constraint's direction and obstacles, which result_json adds.
 nlohmann::json contact_json(const ContactResult& contact);
