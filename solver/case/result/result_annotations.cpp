@@ -40,12 +40,6 @@ json plane_normal(const CaseSpec& spec) {
   return normal ? json({normal->x(), normal->y()}) : json(nullptr);
 }
 
-double extent(const Mesh& mesh) {
-  Point lo = mesh.vertex(0), hi = mesh.vertex(0);
-  for (const Point& p : mesh.vertices()) lo = lo.cwiseMin(p), hi = hi.cwiseMax(p);
-  return (hi - lo).norm();
-}
-
 /// The warnings of either dimension from the case and the body's size: implausible units, a
 /// tangential load on a frictionless contact.
 std::vector<ResultWarning> case_warnings(const CaseSpec& spec, double body_size) {
@@ -80,7 +74,7 @@ void annotate_result(json& result, const CaseSpec& spec, const Mesh& finest,
   c["zone"]["width"] = contact_width(finest, contact);
   c["zone"]["end_edge_length"] = zone_end_edge_length(contact);
 
-  std::vector<ResultWarning> warnings = case_warnings(spec, extent(finest));
+  std::vector<ResultWarning> warnings = case_warnings(spec, finest.diameter());
   for (auto& w : contact_warnings(spec, finest, contact)) warnings.push_back(std::move(w));
   if (auto w = large_strain_warning(strain.strain, strain.largest, strain.where))
     warnings.push_back(std::move(*w));

@@ -73,9 +73,7 @@ ContactGeometry contact_geometry(const CaseSpec& spec, const Mesh& mesh,
           {mesh.group_names()[group], condition_of(spec, mesh, group)->obstacle.normal.head<2>()});
   // Overlaps below 1e-6 of the body's size are touching: a meshed arc's vertices lie on the
   // arc only to gmsh's tolerance (3e-7 on the robustness cases' annulus sector, a body of 2).
-  Point lo = mesh.vertex(0), hi = mesh.vertex(0);
-  for (const Point& p : mesh.vertices()) lo = lo.cwiseMin(p), hi = hi.cwiseMax(p);
-  const double tolerance = kTouchingOverlap * (hi - lo).norm();
+  const double tolerance = kTouchingOverlap * mesh.diameter();
   std::map<int, const BoundaryCondition*> vertex_condition;
   for (const auto& e : contact.edges) {
     const int group = mesh.edge_group(e.edge);
