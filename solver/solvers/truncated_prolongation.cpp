@@ -7,29 +7,28 @@ namespace fosls {
 
 namespace {
 
-/// The columns of P̃ whose largest entry is at most kNegligibleColumn times P's (and not 0:
-/// an empty column is vanished already). `kept_max` holds P̃'s largest entry per column.
-std::vector<char> negligible_columns(const SparseMatrix& p, const std::vector<double>& kept_max) {
-  std::vector<char> negligible(p.cols(), 0);
-  bool any = false;
-  for (int col = 0; col < p.outerSize(); ++col) {
-    double all = 0.0;
-    for (SparseMatrix::InnerIterator it(p, col); it; ++it)
-      all = std::max(all, std::abs(it.value()));
-    const double kept = kept_max[col];
-    if (kept > 0.0 && kept <= TruncatedProlongation::kNegligibleColumn * all)
-      negligible[col] = 1, any = true;
-  }
-  if (!any) negligible.clear();
-  return negligible;
-}
-
+/// The largest magnitude in each column of m.
 std::vector<double> column_max(const SparseMatrix& m) {
   std::vector<double> largest(m.cols(), 0.0);
   for (int col = 0; col < m.outerSize(); ++col)
     for (SparseMatrix::InnerIterator it(m, col); it; ++it)
       largest[col] = std::max(largest[col], std::abs(it.value()));
   return largest;
+}
+
+/// The columns of P̃ whose largest entry is at most kNegligibleColumn times P's (and not 0:
+/// an empty column is vanished already). `kept_max` holds P̃'s largest entry per column.
+std::vector<char> negligible_columns(const SparseMatrix& p, const std::vector<double>& kept_max) {
+  const std::vector<double> all = column_max(p);
+  std::vector<char> negligible(p.cols(), 0);
+  bool any = false;
+  for (int col = 0; col < p.outerSize(); ++col) {
+    const double kept = kept_max[col];
+    if (kept > 0.0 && kept <= TruncatedProlongation::kNegligibleColumn * all[col])
+      negligible[col] = 1, any = true;
+  }
+  if (!any) negligible.clear();
+  return negligible;
 }
 
 }  // namespace
