@@ -4,6 +4,7 @@
 #include <sstream>
 
 #include "case/format/solver_methods.hpp"
+#include "case/result/obstacle_gap.hpp"
 #include "solvers/rounding_level_stop.hpp"
 
 namespace fosls {
@@ -14,18 +15,6 @@ using nlohmann::json;
 
 std::string short_number(double v) { return sentence_number(v, 3); }
 
-const char* obstacle_name(Obstacle::Kind kind, int dim) {
-  switch (kind) {
-    case Obstacle::Kind::kPlane:
-      return "plane";
-    case Obstacle::Kind::kBall:
-      return dim == 3 ? "sphere" : "circle";
-    case Obstacle::Kind::kGap:
-      return "gap";
-  }
-  return "?";
-}
-
 /// The constraint's direction and each contact group's obstacle, in both dimensions.
 void add_constraint_json(json& c, const CaseSpec& spec) {
   bool obstacle_normal = false;
@@ -33,7 +22,10 @@ void add_constraint_json(json& c, const CaseSpec& spec) {
   for (const auto& [name, bc] : spec.boundary)
     if (bc.type == BoundaryCondition::Type::kContact) {
       obstacle_normal |= bc.direction == ContactDirection::kObstacleNormal;
-      obstacles[name] = obstacle_name(bc.obstacle.kind, spec.dimension);
+      // The type's name; a gap function is "gap" here, "obstacle" in sentences.
+      obstacles[name] = bc.obstacle.kind == Obstacle::Kind::kGap
+                            ? "gap"
+                            : obstacle_noun(bc.obstacle, spec.dimension);
     }
   c["direction"] = obstacle_normal ? "obstacle_normal" : "body_normal";
   c["obstacles"] = obstacles;
