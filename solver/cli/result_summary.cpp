@@ -178,11 +178,20 @@ void print_result_summary_3d(std::ostream& out, const json& r) {
       << " unknowns, " << g(r["timing"]["total_s"], 3) << " s; relative KKT residual "
       << g(r["relative_kkt_residual"], 2) << ")\n";
   const auto& c = r["contact"];
-  if (c["faces"].get<int>() > 0)
+  if (c["faces"].get<int>() > 0) {
     out << "  contact force       F = [" << g(c["force"][0], 6) << ", " << g(c["force"][1], 6)
         << ", " << g(c["force"][2], 6) << "], peak pressure " << g(c["max_pressure"], 4)
         << ", area in contact " << g(c["area"], 4) << " (" << c["faces_in_contact"].get<int>()
         << " faces)\n";
+    const auto& z = c["zone"];
+    const int mirrored = z.value("symmetry_planes", 0);
+    if (c["faces_in_contact"].get<int>() > 0)
+      out << "  contact zone        radius " << g(z["radius"], 4)
+          << (mirrored > 0 ? " (the whole zone, mirrored across " + std::to_string(mirrored) +
+                                 " symmetry plane" + (mirrored > 1 ? "s)" : ")")
+                           : std::string())
+          << ", its front located within the faces\n";
+  }
   out << "  error estimator     J^1/2 = " << g(r["functional"]["estimator"], 3)
       << " (scaled units)\n";
   if (r.contains("sweep")) print_sweep(out, r["sweep"], 3);

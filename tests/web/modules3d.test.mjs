@@ -193,6 +193,9 @@ test('3D Hertz for hertz_3d: E* = 8/3, a = 0.1 and p0 = 3F/(2πa²) at F = 0.003
   assert.equal(hertzForResult3d(result, { ...caseDoc, mesh: { builtin: 'box' } }), null, 'not a ball: no Hertz');
   assert.equal(hertzForResult3d({ ...result, material: { mu: 1, lambda: 'inf' } }, caseDoc).Estar, 4);
   assert.equal(hertzForResult3d({ ...result, contact: { force: [0, 0, 0] } }, caseDoc), null, 'no force: no Hertz');
+  // A quarter ball (two symmetry planes against the zone) carries a quarter of the force.
+  const quarter = hertzForResult3d({ ...result, contact: { force: [0, 0, F / 4], zone: { symmetry_planes: 2 } } }, caseDoc);
+  assert.ok(Math.abs(quarter.F - F) < 1e-15 && Math.abs(quarter.a - 0.1) < 1e-6);
 });
 
 test('the default camera looks at the contact face from the plane, and a turn keeps the frame and the size', async () => {

@@ -125,7 +125,8 @@ export function halfBallRadius(caseDoc) {
 /**
  * 3D Hertz for a result and its case, or null when it does not apply: the mesh is the builtin
  * half ball (a sphere of radius R at its pole) against one contact plane (the case's), loaded
- * by the normal force F = |F·n| of the result (n the plane's unit normal).
+ * by the normal force F = 2^k |F·n| of the result (n the plane's unit normal; k the symmetry
+ * planes the zone lies against: a quarter ball carries a quarter of the force).
  */
 export function hertzForResult3d(result, caseDoc) {
   const R = halfBallRadius(caseDoc);
@@ -135,7 +136,9 @@ export function hertzForResult3d(result, caseDoc) {
   if (R === null || planes.length !== 1 || !Array.isArray(force) || force.length !== 3 || !lame) return null;
   const n = planes[0].normal;
   const length = Math.hypot(...n);
-  const F = Math.abs((force[0] * n[0] + force[1] * n[1] + force[2] * n[2]) / length);
+  // A model cut at symmetry planes carries 1/2^k of the ball's force (contact.zone.symmetry_planes).
+  const k = result.contact.zone?.symmetry_planes ?? 0;
+  const F = Math.abs((force[0] * n[0] + force[1] * n[1] + force[2] * n[2]) / length) * 2 ** k;
   if (!(F > 0) || !(length > 0)) return null;
   return { F, R, ...hertzSphereContact(F, R, lame) };
 }

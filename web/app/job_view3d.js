@@ -57,9 +57,11 @@ export function renderSummary3d(job, view) {
     "∫σn dA over the contact groups: the plane's force on the body, in the case's units");
   addNumber(dl, 'Peak pressure', `${fmt(c.max_pressure)}${h ? ` (Hertz p0 = ${fmt(h.p0)})` : ''}`,
     'contact.max_pressure: the largest face pressure −σ_nn (one value per contact face)');
-  const radius = Math.sqrt(c.area / Math.PI);
-  addNumber(dl, 'Contact area', `${fmt(c.area)} (radius √(A/π) = ${fmt(radius)}${h ? `; Hertz a = ${fmt(h.a)}` : ''})`,
-    'contact.area: the area of the contact faces with pressure > 0, and the radius of a disc of that area');
+  addNumber(dl, 'Contact area', fmt(c.area), 'contact.area: the area of the contact faces with pressure > 0, each counted whole');
+  const zone = c.zone ?? {};
+  const mirrored = zone.symmetry_planes > 0 ? `, the whole zone across ${zone.symmetry_planes} symmetry plane${zone.symmetry_planes > 1 ? 's' : ''}` : '';
+  addNumber(dl, 'Contact radius', `${fmt(zone.radius)}${mirrored}${h ? ` (Hertz a = ${fmt(h.a)})` : ''}`,
+    "contact.zone.radius: the radius of the disc of the zone's area, its front located within the faces, mirrored across the symmetry planes it lies against");
   addNumber(dl, 'Contact faces in contact', `${c.faces_in_contact ?? '—'} of ${c.faces ?? '—'}`);
   addNumber(dl, 'Iterations', `${r.iterations}${r.converged ? '' : ' (not converged)'}`);
   addNumber(dl, 'Relative KKT residual', fmt(r.relative_kkt_residual, 3), `the final KKT residual over the initial one (tolerance ${fmt(r.tolerance, 3)})`);

@@ -12,19 +12,15 @@
 #include <vector>
 
 #include "case/result/obstacle_gap.hpp"
+#include "case/result/symmetry_planes.hpp"
 #include "post/contact_force.hpp"
+#include "post/contact_front.hpp"
 
 namespace fosls {
 
 namespace {
 
 using nlohmann::json;
-
-Point3 face_centroid(const TetMesh& mesh, int f) {
-  Point3 c = Point3::Zero();
-  for (int v : mesh.face(f)) c += mesh.vertex(v);
-  return c / 3.0;
-}
 
 /// The smallest initial gap of a contact vertex along its face's normal, where, and the
 /// obstacle it is measured to.
@@ -72,21 +68,28 @@ std::string where(const Point3& x) {
          sentence_number(x.z()) + ")";
 }
 
+/// The radius of the disc of the whole zone's `area` (the modelled part's, mirrored across the
+/// symmetry planes it lies against).
+double whole_zone_radius(const FaceContact& c, double area) {
+  return std::sqrt(std::ldexp(area, c.symmetry_planes) / M_PI);
+}
+
 /// 2D's contact_zone_underresolved for a zone that is a patch of faces: its diameter 2a, a the
-/// radius of the disc of its area, spans fewer than kResolvedZoneEdges face sizes h (a face of
-/// area A has h = √(2A), a right triangle's leg). Only a zone with a front, not a whole contact
-/// group in contact, whose edges the mesh gives exactly.
+/// radius of the disc of the whole zone's area, spans fewer than kResolvedZoneEdges face sizes
+/// h (a face of area A has h = √(2A), a right triangle's leg). Only a zone with a front, not a
+/// whole contact group in contact, whose edges the mesh gives exactly.
 std::optional<ResultWarning> zone_resolution_warning(const FaceContact& c) {
   if (c.faces_in_contact == 0 || c.faces_in_contact == c.faces) return std::nullopt;
-  const double radius = std::sqrt(c.area / M_PI);
+  const double radius = whole_zone_radius(c, c.area);
   const double h = std::sqrt(2.0 * c.area / c.faces_in_contact);
   const double across = 2.0 * radius / h;
   if (across >= kResolvedZoneEdges) return std::nullopt;
   return ResultWarning{
       "contact_zone_underresolved",
       "the contact zone is resolved by only " + std::to_string(c.faces_in_contact) +
-          " faces: its diameter 2√(area/π) = " + sentence_number(2.0 * radius) + " spans about " +
-          sentence_number(across, 2) + " faces of size " + sentence_number(h) +
+          " faces: its diameter 2√(area/π) = " + sentence_number(2.0 * radius) +
+          (c.symmetry_planes > 0 ? " (mirrored across the symmetry planes)" : "") +
+          " spans about " + sentence_number(across, 2) + " faces of size " + sentence_number(h) +
           ", so its edge is known to about one face, the radius only to about ±" +
           sentence_number(100.0 * h / radius, 2) +
           " %, and the peak pressure less well than the force. Refine the mesh near the contact "
@@ -159,34 +162,43 @@ std::vector<ResultWarning> roller_warnings(const FoslsSpace<3>& space) {
            true}};
 }
 
-/// The zone's extent and peak (docs/result-format.md, "3D results"): the radius of the disc of
-/// the same area (Hertz's a), its bounding box, and where the pressure peaks. Zeros and nulls
-/// without contact, as in 2D.
+/// The zone's extent and peak (docs/result-format.md, "3D results"): its area within the located
+/// front, the radius of the disc of the whole zone's area (Hertz's a), its bounding box, and
+/// where the pressure peaks. Zeros and nulls without contact, as in 2D.
 json zone_json(const FaceContact& c) {
   const bool touching = c.faces_in_contact > 0;
   const auto point = [touching](const Point3& x) {
     return touching ? json::array({x.x(), x.y(), x.z()}) : json(nullptr);
   };
-  return {{"faces", c.faces_in_contact},     {"radius", std::sqrt(c.area / M_PI)},
-          {"box_min", point(c.lo)},          {"box_max", point(c.hi)},
-          {"peak_pressure", c.max_pressure}, {"peak_location", point(c.peak_at)}};
+  return {{"faces", c.faces_in_contact},
+          {"area", c.front_area},
+          {"symmetry_planes", c.symmetry_planes},
+          {"radius", whole_zone_radius(c, c.front_area)},
+          {"box_min", point(c.lo)},
+          {"box_max", point(c.hi)},
+          {"peak_pressure", c.max_pressure},
+          {"peak_location", point(c.peak_at)}};
 }
 
 }  // namespace
 
-FaceContact face_contact(const Discretization<3>& disc, const Vector& x_full) {
+FaceContact face_contact(const CaseSpec& spec, const Discretization<3>& disc,
+                         const Vector& x_full) {
   const FoslsSpace<3>& space = disc.finest_space();
   const TetMesh& mesh = disc.meshes().finest();
   const double scale = disc.problem().stress_scale;
   const std::vector<double> p = contact_pressure(space, x_full, scale);
   FaceContact s;
   s.force = contact_force(space, x_full, scale);
+  std::vector<int> contact_faces, loaded;
   for (int f = 0; f < mesh.num_faces(); ++f) {
     if (!disc.finest_space().is_contact_facet(f)) continue;
+    contact_faces.push_back(f);
     ++s.faces;
-    if (p[f] > s.max_pressure) s.peak_at = face_centroid(mesh, f);
+    if (p[f] > s.max_pressure) s.peak_at = mesh.face_centroid(f);
     s.max_pressure = std::max(s.max_pressure, p[f]);
     if (p[f] > 0) {
+      loaded.push_back(f);
       s.area += mesh.face_area(f);
       ++s.faces_in_contact;
       for (int v : mesh.face(f)) {
@@ -195,6 +207,9 @@ FaceContact face_contact(const Discretization<3>& disc, const Vector& x_full) {
       }
     }
   }
+  const std::vector<MirrorPlane> planes = symmetry_planes(spec, mesh);
+  s.front_area = area_within_front(mesh, contact_faces, p, planes);
+  s.symmetry_planes = planes_against(planes, mesh, loaded);
   return s;
 }
 

@@ -18,7 +18,12 @@ struct FaceContact {
   Point3 force = Point3::Zero();
   double max_pressure = 0.0;
   double area = 0.0;  ///< of the faces with p > 0
-  int faces = 0;      ///< of the contact groups
+  /// Of the part of those faces within the front located by post/contact_front.hpp.
+  double front_area = 0.0;
+  /// The symmetry planes the zone lies against (symmetry_planes.hpp): the whole zone is
+  /// 2^symmetry_planes times the modelled one.
+  int symmetry_planes = 0;
+  int faces = 0;  ///< of the contact groups
   int faces_in_contact = 0;
   Point3 peak_at = Point3::Zero();  ///< centroid of the face with the largest pressure
   /// The bounding box of the faces with p > 0 (empty: lo > hi).
@@ -26,8 +31,8 @@ struct FaceContact {
   Point3 hi = -Point3::Constant(std::numeric_limits<double>::infinity());
 };
 
-/// The contact output of the finest level's full DOF vector.
-FaceContact face_contact(const Discretization<3>& disc, const Vector& x_full);
+/// The contact output of the finest level's full DOF vector; the case names the symmetry planes.
+FaceContact face_contact(const CaseSpec& spec, const Discretization<3>& disc, const Vector& x_full);
 
 /// The result's `contact` object but for the constraint's direction and obstacles, which
 /// result_json adds in both dimensions.

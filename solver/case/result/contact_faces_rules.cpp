@@ -15,8 +15,18 @@ ObjectRulePtr zone3d_rule() {
   return object_rule(
       "the 3D contact zone", "zone3d",
       {output_field("faces", count(), "1", "contact faces in contact (pressure > 0)"),
+       output_field("area", number(), "L²",
+                    "the area of the zone with its front located within the faces: where the "
+                    "p² interpolated from a least-squares plane through the loaded faces' p² "
+                    "around each vertex is positive, within the faces with pressure > 0 (≤ "
+                    "contact.area, which counts those faces whole)"),
+       output_field("symmetry_planes", count(), "1",
+                    "the symmetry planes the zone lies against (dirichlet groups holding only "
+                    "their normal component at 0, in one plane): the whole zone is 2^k times "
+                    "the modelled one"),
        output_field("radius", number(), "L",
-                    "√(area/π): the radius of the disc of the zone's area (for Hertz, a)"),
+                    "√(2^k area/π), k = symmetry_planes: the radius of the disc of the whole "
+                    "zone's area, mirrored across its symmetry planes (for Hertz, a)"),
        output_field("box_min", where, "L",
                     "the smallest x, y and z of the faces in contact; null without contact"),
        output_field("box_max", where, "L", "the largest x, y and z of the faces in contact"),

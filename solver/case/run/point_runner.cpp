@@ -83,7 +83,7 @@ void write_result(RunOutput& out, const CaseSpec& used, const CaseSolutionOf<dim
                     largest_strain(disc.assembler(), disc.problem(), solution.full));
     out.displacement = vertex_displacements(disc.finest_space(), solution.full);
   } else {
-    const FaceContact contact = face_contact(disc, solution.full);
+    const FaceContact contact = face_contact(used, disc, solution.full);
     out.result = result(face_contact_json(contact));
     annotate_result(out.result, used, disc.finest_space(), contact);
   }
