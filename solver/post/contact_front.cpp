@@ -40,8 +40,8 @@ std::vector<Point3> seen_at(const Point3& x, const Point3& c, const std::vector<
   for (const MirrorPlane& plane : m)
     if (std::abs((x - plane.point).dot(plane.normal)) <= tolerance)
       for (std::size_t k = 0, n = points.size(); k < n; ++k)
-        points.push_back(points[k] - 2.0 * (points[k] - plane.point).dot(plane.normal) *
-                                         plane.normal);
+        points.push_back(points[k] -
+                         2.0 * (points[k] - plane.point).dot(plane.normal) * plane.normal);
   return points;
 }
 
@@ -75,8 +75,7 @@ double squared_pressure_at(const TetMesh& mesh, const VertexFaces& at, int v,
     }
   const Eigen::LDLT<Eigen::Matrix3d> fit(normal_matrix);
   const double value = fit.info() == Eigen::Success ? fit.solve(rhs)[0] : kOutside;
-  const bool inside =
-      std::all_of(own.begin(), own.end(), [&](int f) { return pressure[f] > 0; });
+  const bool inside = std::all_of(own.begin(), own.end(), [&](int f) { return pressure[f] > 0; });
   if (inside) return std::max(value, std::numeric_limits<double>::min());
   return std::isfinite(value) ? value : kOutside;
 }

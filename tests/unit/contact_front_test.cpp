@@ -46,8 +46,8 @@ struct Zone {
 Zone zone_on_bottom(int cells, const std::function<double(const Point3&)>& p) {
   const TetMesh mesh = make_box({cells, cells, 1}, Point3(1, 1, 0.25));
   const auto& names = mesh.group_names();
-  const int bottom = static_cast<int>(std::find(names.begin(), names.end(), "bottom") -
-                                      names.begin());
+  const int bottom =
+      static_cast<int>(std::find(names.begin(), names.end(), "bottom") - names.begin());
   std::vector<int> faces;
   std::vector<double> pressure(mesh.num_faces(), 0.0);
   Zone z;

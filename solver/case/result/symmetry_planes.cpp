@@ -26,8 +26,7 @@ std::optional<MirrorPlane> group_plane(const TetMesh& mesh, int g, int axis) {
   std::optional<MirrorPlane> plane;
   for (int f = 0; f < mesh.num_faces(); ++f) {
     if (mesh.face_group(f) != g) continue;
-    if (std::abs(std::abs(mesh.face_normal(f)[axis]) - 1.0) > kNormalTolerance)
-      return std::nullopt;
+    if (std::abs(std::abs(mesh.face_normal(f)[axis]) - 1.0) > kNormalTolerance) return std::nullopt;
     for (int v : mesh.face(f)) {
       const Point3& x = mesh.vertex(v);
       if (!plane) plane = MirrorPlane{x, Point3::Unit(axis)};
