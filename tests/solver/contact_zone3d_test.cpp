@@ -15,9 +15,15 @@ nlohmann::json quarter_ball(int refinements) {
   return j;
 }
 
+/// The quarter ball at refinements 2, solved once for the tests that read it.
+const nlohmann::json& quarter_r2() {
+  static const nlohmann::json result = run_3d(quarter_ball(2));
+  return result;
+}
+
 TEST(ContactZone3d, AQuarterModelGivesTheWholeBallsRadius) {
   const nlohmann::json half = run_3d(hertz_3d(2));
-  const nlohmann::json quarter = run_3d(quarter_ball(2));
+  const nlohmann::json& quarter = quarter_r2();
   const nlohmann::json& hz = half["contact"]["zone"];
   const nlohmann::json& qz = quarter["contact"]["zone"];
   EXPECT_EQ(hz["symmetry_planes"], 0);
@@ -29,6 +35,38 @@ TEST(ContactZone3d, AQuarterModelGivesTheWholeBallsRadius) {
               1.0, 1e-3);
   EXPECT_NEAR(qz["radius"].get<double>() / hz["radius"].get<double>(), 1.0, 0.03);
   EXPECT_NEAR(4.0 * qz["area"].get<double>() / hz["area"].get<double>(), 1.0, 0.07);
+}
+
+/// The line's steps tile one interval, in order; its ends.
+std::pair<double, double> tiled_range(const nlohmann::json& line) {
+  const auto& from = line["from"];
+  const auto& to = line["to"];
+  EXPECT_EQ(from.size(), to.size());
+  EXPECT_EQ(from.size(), line["pressure"].size());
+  for (std::size_t k = 0; k + 1 < from.size(); ++k)
+    EXPECT_NEAR(to[k].get<double>(), from[k + 1].get<double>(), 1e-9) << k;
+  return {from.front().get<double>(), to.back().get<double>()};
+}
+
+TEST(ContactZone3d, ThePressureLineRunsThroughTheCentreOfTheWholeZone) {
+  const nlohmann::json& quarter = quarter_r2();
+  const nlohmann::json& line = quarter["contact"]["line"];
+  // The quarter's centre of pressure, mirrored across its two symmetry planes, is the pole.
+  EXPECT_NEAR(line["point"][0].get<double>(), 0.0, 1e-12);
+  EXPECT_NEAR(line["point"][1].get<double>(), 0.0, 1e-12);
+  EXPECT_NEAR(line["direction"][0].get<double>(), 1.0, 1e-12);
+  const auto [lo, hi] = tiled_range(line);
+  EXPECT_NEAR(lo, 0.0, 1e-9);  // from the pole outwards, to the contact group's rim
+  const auto& p = line["pressure"];
+  EXPECT_GT(p.front().get<double>(), 0.8 * quarter["contact"]["max_pressure"].get<double>());
+  EXPECT_EQ(p.back().get<double>(), 0.0);
+  EXPECT_GT(hi, quarter["contact"]["zone"]["radius"].get<double>());
+}
+
+TEST(ContactZone3d, NoContactHasNoLine) {
+  nlohmann::json j = hertz_3d(0);
+  j["boundary"]["top"]["displacement"] = {0, 0, 0.01};  // pulled away
+  EXPECT_TRUE(run_3d(j)["contact"]["line"].is_null());
 }
 
 TEST(ContactZone3d, TheLocatedFrontLiesWithinTheLoadedFaces) {

@@ -209,7 +209,9 @@ FaceContact face_contact(const CaseSpec& spec, const Discretization<3>& disc,
   }
   const std::vector<MirrorPlane> planes = symmetry_planes(spec, mesh);
   s.front_area = area_within_front(mesh, contact_faces, p, planes);
-  s.symmetry_planes = planes_against(planes, mesh, loaded);
+  const std::vector<MirrorPlane> mirrors = planes_against(planes, mesh, loaded);
+  s.symmetry_planes = static_cast<int>(mirrors.size());
+  s.line = zone_line(mesh, contact_faces, p, s.force, mirrors);
   return s;
 }
 
@@ -219,7 +221,8 @@ json face_contact_json(const FaceContact& c) {
           {"area", c.area},
           {"faces", c.faces},
           {"faces_in_contact", c.faces_in_contact},
-          {"zone", zone_json(c)}};
+          {"zone", zone_json(c)},
+          {"line", zone_line_json(c.line)}};
 }
 
 std::vector<ResultWarning> face_contact_warnings(const CaseSpec& spec, const FoslsSpace<3>& space,

@@ -6,11 +6,13 @@
 
 #include <limits>
 #include <nlohmann/json.hpp>
+#include <optional>
 #include <vector>
 
 #include "assembly/discretization.hpp"
 #include "case/format/case_spec.hpp"
 #include "case/result/result_warnings.hpp"
+#include "case/result/zone_line.hpp"
 
 namespace fosls {
 
@@ -26,6 +28,7 @@ struct FaceContact {
   int faces = 0;  ///< of the contact groups
   int faces_in_contact = 0;
   Point3 peak_at = Point3::Zero();  ///< centroid of the face with the largest pressure
+  std::optional<ZoneLine> line;     ///< the pressure along a line through the zone
   /// The bounding box of the faces with p > 0 (empty: lo > hi).
   Point3 lo = Point3::Constant(std::numeric_limits<double>::infinity());
   Point3 hi = -Point3::Constant(std::numeric_limits<double>::infinity());

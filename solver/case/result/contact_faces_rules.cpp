@@ -36,6 +36,26 @@ ObjectRulePtr zone3d_rule() {
                     "centroid [x, y, z] of the face with the peak pressure; null without one")});
 }
 
+ObjectRulePtr line3d_rule() {
+  const ValueRule steps = numbers("one per face the line crosses, in order of from");
+  return object_rule(
+      "the pressure along a line through the 3D contact zone", "line3d",
+      {output_field("point", tuple_value(number_value(), 3, "[x, y, z]"), "L",
+                    "where s = 0: the zone's centre of pressure (of the whole zone across its "
+                    "symmetry planes)"),
+       output_field("direction", tuple_value(number_value(), 3, "[x, y, z]"), "1",
+                    "the line's unit direction: x's part normal to the contact force (y's where "
+                    "x is within 8° of it)"),
+       output_field("from", steps, "L",
+                    "where the line enters each contact face it crosses, s along direction from "
+                    "point (the section of the contact faces by the plane of the line and the "
+                    "force)"),
+       output_field("to", steps, "L", "where it leaves that face"),
+       output_field("pressure", steps, "S",
+                    "the face's pressure −σ_nn (constant on a face: the profile is a step "
+                    "function, exact)")});
+}
+
 }  // namespace
 
 ObjectRulePtr result_parts::contact_faces_rule() {
@@ -48,7 +68,10 @@ ObjectRulePtr result_parts::contact_faces_rule() {
       output_field("faces", count(), "1", "faces of the contact groups"),
       output_field("faces_in_contact", count(), "1", "of those, the faces with pressure > 0"),
       output_field("zone", object_value(zone3d_rule()), "",
-                   "where the body touches the obstacle: its extent and peak, as 2D's zone")};
+                   "where the body touches the obstacle: its extent and peak, as 2D's zone"),
+      output_field("line",
+                   one_of_value({object_value(line3d_rule()), null_value()}, "object or null"), "",
+                   "the pressure along a line through the zone; null without contact")};
   for (FieldRule& f : constraint_fields(3)) fields.push_back(std::move(f));
   return object_rule("the 3D contact output", "contact3d", std::move(fields));
 }

@@ -51,18 +51,18 @@ std::vector<MirrorPlane> symmetry_planes(const CaseSpec& spec, const TetMesh& me
   return planes;
 }
 
-int planes_against(const std::vector<MirrorPlane>& planes, const TetMesh& mesh,
-                   const std::vector<int>& zone_faces) {
+std::vector<MirrorPlane> planes_against(const std::vector<MirrorPlane>& planes, const TetMesh& mesh,
+                                        const std::vector<int>& zone_faces) {
   const double tolerance = 1e-9 * mesh.diameter();
-  int count = 0;
+  std::vector<MirrorPlane> against;
   for (const MirrorPlane& plane : planes) {
     bool touches = false;
     for (int f : zone_faces)
       for (int v : mesh.face(f))
         touches |= std::abs((mesh.vertex(v) - plane.point).dot(plane.normal)) <= tolerance;
-    count += touches;
+    if (touches) against.push_back(plane);
   }
-  return count;
+  return against;
 }
 
 }  // namespace fosls

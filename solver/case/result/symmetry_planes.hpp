@@ -16,8 +16,8 @@ namespace fosls {
 /// to that component's axis.
 std::vector<MirrorPlane> symmetry_planes(const CaseSpec& spec, const TetMesh& mesh);
 
-/// How many of `planes` hold a vertex of `zone_faces`.
-int planes_against(const std::vector<MirrorPlane>& planes, const TetMesh& mesh,
-                   const std::vector<int>& zone_faces);
+/// Those of `planes` that hold a vertex of `zone_faces`.
+std::vector<MirrorPlane> planes_against(const std::vector<MirrorPlane>& planes, const TetMesh& mesh,
+                                        const std::vector<int>& zone_faces);
 
 }  // namespace fosls
