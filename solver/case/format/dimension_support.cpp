@@ -31,9 +31,9 @@ std::vector<CaseError> dimension_support_problems(const nlohmann::json& j, const
     errors.push_back(
         {"/solver/tolerance",
          "\"discretisation\" is 2D only for now: in 3D its estimate of the algebraic error "
-         "stopped the Hertz ball 4 % (refinements 2) to 44 % (refinements 1) short of the "
-         "converged force, until the 3D functional is scaled like 2D's (its length scale); give "
-         "a number, e.g. 1e-8"});
+         "stopped the Hertz ball 44 % (refinements 1), 4 % (2) and 1 % (3) short of the "
+         "converged force, because it extrapolates the functional's decrease from iterations "
+         "whose active set still changes; give a number, e.g. 1e-8"});
   for (const auto& [name, bc] : spec.boundary)
     if (bc.type == BoundaryCondition::Type::kContact) check_contact(name, bc, errors);
   return errors;
