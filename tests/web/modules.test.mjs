@@ -14,7 +14,7 @@ import { parseVtu } from '../../web/app/vtu.js';
 import { autoMagnification, colourAt, colourScale, maxDisplacement } from '../../web/app/mesh_view.js';
 import { MESH_FIELDS, probeSummary } from '../../web/app/mesh_fields.js';
 import { contactCsv, sweepCsv } from '../../web/app/csv_export.js';
-import { adaptiveRows, STEP_COLUMNS } from '../../web/app/adaptive_steps.js';
+import { adaptiveRows, stepColumns } from '../../web/app/adaptive_steps.js';
 import { stepPrefix } from '../../web/app/format.js';
 import { accuracyNumber } from '../../web/app/accuracy.js';
 import {
@@ -291,10 +291,20 @@ test('adaptive steps: the force change is relative to the later step, none on th
   assert.equal(rows.length, 2);
   assert.equal(rows[0].forceChange, null);
   assert.ok(Math.abs(rows[1].forceChange - 0.5 / Math.hypot(0.3, 1.4)) < 1e-15);
-  const cells = STEP_COLUMNS.map(([, text]) => text(rows[1]));
+  const columns = stepColumns(2);
+  const cells = columns.map(([, text]) => text(rows[1]));
   assert.deepEqual(cells, ['1', '180', '70', '8', '0.015', '0.3', '1.4', '0.35', '2.0e-9', '0.20 s']);
-  assert.equal(STEP_COLUMNS[7][1](rows[0]), '—');
+  assert.equal(columns[7][1](rows[0]), '—');
   assert.deepEqual(adaptiveRows(undefined), []);
+  // 3D: tetrahedra and three force components, the change over all three.
+  const solid = adaptiveRows([
+    { step: 0, dofs: 2452, tetrahedra: 384, iterations: 12, estimator: 0.01, force: [0, 0, 1], time_s: 1 },
+    { step: 1, dofs: 2701, tetrahedra: 420, iterations: 9, estimator: 0.008, force: [0, 0.3, 1.4], time_s: 2 },
+  ]);
+  assert.ok(Math.abs(solid[1].forceChange - 0.5 / Math.hypot(0.3, 1.4)) < 1e-15);
+  const columns3 = stepColumns(3);
+  assert.deepEqual(columns3.map(([title]) => title).slice(2, 8), ['tetrahedra', 'iterations', 'J^½', 'F_x', 'F_y', 'F_z']);
+  assert.deepEqual(columns3.map(([, text]) => text(solid[1])).slice(0, 8), ['1', '2701', '420', '9', '0.008', '0', '0.3', '1.4']);
 });
 
 test('state runs tile the boundary: boundaries halfway between midpoints, ends half a spacing out', () => {

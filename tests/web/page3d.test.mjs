@@ -314,6 +314,31 @@ test('a 2D job after the 3D one shows the 2D view, and comes back the same after
   assert.deepEqual(await shown2d(), first);
 });
 
+test('a 3D adaptive run shows its steps: tetrahedra, three force components and the N^(−⅓) slope', async () => {
+  await page.locator('#example-select').selectOption('hertz_3d');
+  await page.getByRole('button', { name: 'Load example' }).click();
+  const adaptive = JSON.parse(await page.locator('#case-text').inputValue());
+  adaptive.name = 'hertz_3d_adaptive_page';
+  adaptive.mesh.refinements = 0;
+  adaptive.adaptivity = { steps: 2, theta: 0.5 };
+  await page.locator('#case-text').fill(JSON.stringify(adaptive, null, 2));
+  const row = await submitAndWaitForRow(page, 'hertz_3d_adaptive_page');
+  await row.locator('.state-succeeded').waitFor({ timeout: 90000 });
+  await page.locator(`#job-table [data-action="view"][data-job-id="${await row.getAttribute('data-job-id')}"]`).click();
+  await page.waitForFunction(() => document.querySelector('#job-result').dataset.dimension === '3' &&
+    document.querySelectorAll('#adaptivity-table tbody tr').length > 0);
+  const result = await getJson(`/v1/jobs/${await row.getAttribute('data-job-id')}/result`);
+  const steps = result.adaptivity.steps;
+  assert.equal(await page.locator('#adaptivity-section').isVisible(), true);
+  assert.equal(await page.locator('#adaptivity-table tbody tr').count(), steps.length);
+  const headings = await page.locator('#adaptivity-table thead th').allInnerTexts();
+  assert.deepEqual(headings.slice(2, 8), ['tetrahedra', 'iterations', 'J^½', 'F_x', 'F_y', 'F_z']);
+  const last = await page.locator('#adaptivity-table tbody tr').last().locator('td').allInnerTexts();
+  assert.equal(last[2], String(steps[steps.length - 1].tetrahedra));
+  assert.match(await page.locator('#adaptivity-plot').getAttribute('data-series'), /N\^\(−⅓\)/);
+  assert.match(await page.locator('#adaptivity-note').innerText(), /The surface below is the last step's/);
+});
+
 test('the 3D pages logged no console errors or warnings', () => {
   assert.deepEqual(session.consoleProblems, []);
 });

@@ -189,22 +189,23 @@ function drawSweep(view, plots) {
     (other ? ` Dashed: ${view.compare.label} (${other.points.length} points of ${other.pointer}).` : '');
 }
 
-// An adaptive run: estimator and force change against the unknowns, and the steps' table.
-function drawAdaptivity(view, plots) {
+/** An adaptive run (2D or 3D): estimator and force change against the unknowns, and the steps' table. */
+export function drawAdaptivity(view, plots) {
   const steps = view.result.adaptivity?.steps;
   $('adaptivity-section').hidden = !steps?.length;
   const box = $('adaptivity-plot');
   box.innerHTML = '';
   if (!steps?.length) return;
   const rows = adaptiveRows(steps);
-  view.charts.push(plots.adaptivityPlot(box, rows));
-  renderStepTable($('adaptivity-table'), rows);
+  const dimension = view.result.dimension === 3 ? 3 : 2;
+  view.charts.push(plots.adaptivityPlot(box, rows, dimension));
+  renderStepTable($('adaptivity-table'), rows, dimension);
   const last = rows[rows.length - 1];
   const first = rows[0];
   $('adaptivity-note').textContent =
     `${rows.length} solves from ${first.dofs} to ${last.dofs} unknowns; J^½ fell from ${fmt(first.estimator)} to ${fmt(last.estimator)}` +
     (rows.length > 1 ? ` and the force changed by ${fmt(100 * last.forceChange, 2)} % in the last step.` : '.') +
-    ' The mesh below is the last step\'s (colour by refinement generation or the error indicator).' +
+    (dimension === 3 ? ' The surface below is the last step\'s.' : ' The mesh below is the last step\'s (colour by refinement generation or the error indicator).') +
     // Why the loop stopped and what adaptivity.target means (a reduction of J^½, not an accuracy).
     (view.result.adaptivity.stop_message ? ` ${view.result.adaptivity.stop_message.replace(/^stopped/, 'It stopped')}.` : '');
 }

@@ -3,8 +3,9 @@
 // surface coloured by a field (surface_viewer.js) and the contact pressure along a line in the
 // contact plane with 3D Hertz for the builtin half ball. The 2D-only parts of the job view
 // are hidden by #job-result[data-dimension="3"] (style.css).
+import { accuracyNumber } from './accuracy.js';
 import {
-  addNumber, drawResiduals, figureMagnification, renderHeadline, renderWarnings, setCsvLink, setDownloads, unitText, writeColourBar,
+  addNumber, drawAdaptivity, drawResiduals, figureMagnification, renderHeadline, renderWarnings, setCsvLink, setDownloads, unitText, writeColourBar,
 } from './job_result.js';
 import { planeFrame, pressureCentre, sampleLine, sphereTangentPlane } from './contact_line.js';
 import { contactFaces, boundarySurface } from './tet_surface.js';
@@ -63,6 +64,8 @@ export function renderSummary3d(job, view) {
   addNumber(dl, 'Contact radius', `${fmt(zone.radius)}${mirrored}${h ? ` (Hertz a = ${fmt(h.a)})` : ''}`,
     "contact.zone.radius: the radius of the disc of the zone's area, its front located within the faces, mirrored across the symmetry planes it lies against");
   addNumber(dl, 'Contact faces in contact', `${c.faces_in_contact ?? '—'} of ${c.faces ?? '—'}`);
+  const accuracy = accuracyNumber(r.accuracy);
+  if (accuracy) addNumber(dl, 'Force accuracy', ...accuracy);
   addNumber(dl, 'Iterations', `${r.iterations}${r.converged ? '' : ' (not converged)'}`);
   addNumber(dl, 'Relative KKT residual', fmt(r.relative_kkt_residual, 3), `the final KKT residual over the initial one (tolerance ${fmt(r.tolerance, 3)})`);
   addNumber(dl, 'Levels', String(r.levels));
@@ -88,6 +91,7 @@ export function drawCharts3d(view, plots, viewer) {
     return;
   }
   drawResiduals(view, plots);
+  drawAdaptivity(view, plots);
   drawLine(view, plots, viewer);
 }
 

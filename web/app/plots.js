@@ -218,17 +218,17 @@ function logTicks(u, vals) {
 
 /**
  * An adaptive run, log–log against the unknowns, one point per step (`rows` of
- * adaptiveRows): the estimator J^½ with the reference slope N^(−1/2) through its first point
- * (the optimal rate of P1/RT0 in 2D), and on a second log axis the relative change of the
- * contact force since the previous step.
+ * adaptiveRows): the estimator J^½ with the reference slope N^(−1/d) through its first point
+ * (the optimal rate of P1/RT0 in d dimensions: h ∝ N^(−1/d)), and on a second log axis the
+ * relative change of the contact force since the previous step.
  */
-export function adaptivityPlot(container, rows) {
+export function adaptivityPlot(container, rows, dimension = 2) {
   const value = (u, v) => sci(v);
   const positive = (v) => (typeof v === 'number' && v > 0 ? v : null);
   const dofs = rows.map((r) => r.dofs);
   const estimator = rows.map((r) => positive(r.estimator));
   const first = rows.findIndex((r, k) => estimator[k] !== null);
-  const slope = dofs.map((n) => (first < 0 ? null : estimator[first] * Math.sqrt(dofs[first] / n)));
+  const slope = dofs.map((n) => (first < 0 ? null : estimator[first] * (dofs[first] / n) ** (1 / dimension)));
   const opts = {
     width: fitWidth(container),
     height: plotHeight,
@@ -237,7 +237,7 @@ export function adaptivityPlot(container, rows) {
     series: [
       { label: 'unknowns', value },
       { label: 'J^½ (estimator)', stroke: COLOURS.estimator, width: 2, value, points: { show: true, size: 6 } },
-      { label: 'N^(−½) (optimal rate)', stroke: COLOURS.slope, width: 1, dash: [5, 4], value, points: { show: false } },
+      { label: dimension === 3 ? 'N^(−⅓) (optimal rate)' : 'N^(−½) (optimal rate)', stroke: COLOURS.slope, width: 1, dash: [5, 4], value, points: { show: false } },
       { label: '|ΔF| / |F| (force change)', scale: 'change', stroke: COLOURS.forceChange, width: 2, dash: [8, 3], value, points: { show: true, size: 6 }, spanGaps: true },
     ],
     axes: [
