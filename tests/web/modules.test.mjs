@@ -280,6 +280,8 @@ test('CSV of the contact boundary and of a sweep', () => {
   assert.equal(contactCsv({ x: [] }), 'x,y,s,length,pressure,gap,active\n');
   const sweep = { pointer: '/a/b', points: [{ value: 1, force: [0, 2.5], peak_pressure: 3, contact_width: 0.35, contact_length: 0.4, converged: false, stop_reason: 'max_iterations', iterations: 200 }] };
   assert.equal(sweepCsv(sweep), '/a/b,force_x,force_y,peak_pressure,contact_width,contact_length,converged,stop_reason,iterations\n1,0,2.5,3,0.35,0.4,0,"max_iterations",200\n');
+  const solid = { pointer: '/b', points: [{ value: 2, force: [0, 1, 2.5], peak_pressure: 3, contact_radius: 0.1, converged: true, stop_reason: 'converged', iterations: 12 }] };
+  assert.equal(sweepCsv(solid, 3), '/b,force_x,force_y,force_z,peak_pressure,contact_radius,converged,stop_reason,iterations\n2,0,1,2.5,3,0.1,1,"converged",12\n');
 });
 
 test('adaptive steps: the force change is relative to the later step, none on the first', () => {

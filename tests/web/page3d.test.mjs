@@ -339,6 +339,28 @@ test('a 3D adaptive run shows its steps: tetrahedra, three force components and 
   assert.match(await page.locator('#adaptivity-note').innerText(), /The surface below is the last step's/);
 });
 
+test('a 3D sweep plots |F| against the swept value and offers its CSV', async () => {
+  await page.locator('#example-select').selectOption('hertz_3d');
+  await page.getByRole('button', { name: 'Load example' }).click();
+  const swept = JSON.parse(await page.locator('#case-text').inputValue());
+  swept.name = 'hertz_3d_sweep_page';
+  swept.mesh.refinements = 0;
+  swept.sweep = { pointer: '/boundary/top/displacement/2', values: [-0.005, -0.01] };
+  await page.locator('#case-text').fill(JSON.stringify(swept, null, 2));
+  const row = await submitAndWaitForRow(page, 'hertz_3d_sweep_page');
+  await row.locator('.state-succeeded').waitFor({ timeout: 90000 });
+  await page.locator(`#job-table [data-action="view"][data-job-id="${await row.getAttribute('data-job-id')}"]`).click();
+  await page.waitForFunction(() => document.querySelector('#job-result').dataset.dimension === '3' &&
+    Number(document.querySelector('#sweep-plot')?.dataset.points) > 0);
+  assert.equal(await page.locator('#sweep-figure').isVisible(), true);
+  assert.equal(await page.locator('#sweep-plot').getAttribute('data-points'), '2');
+  assert.equal(await page.locator('#adaptivity-section').isVisible(), false);
+  assert.equal(await page.locator('#download-sweep-csv').isVisible(), true);
+  const csv = await page.evaluate(async () => (await fetch(document.querySelector('#download-sweep-csv').href)).text());
+  assert.match(csv, /^\/boundary\/top\/displacement\/2,force_x,force_y,force_z,peak_pressure,contact_radius,/);
+  assert.equal(csv.trim().split('\n').length, 3);
+});
+
 test('the 3D pages logged no console errors or warnings', () => {
   assert.deepEqual(session.consoleProblems, []);
 });

@@ -17,12 +17,14 @@ export function contactCsv(contact) {
   return csv([...columns, 'active'], rows);
 }
 
-/** One row per sweep point, in the order solved. */
-export function sweepCsv(sweep) {
+/** One row per sweep point, in the order solved (3D: three force components and the zone's radius). */
+export function sweepCsv(sweep, dimension = 2) {
+  const zone = dimension === 3 ? ['contact_radius'] : ['contact_width', 'contact_length'];
+  const forces = ['force_x', 'force_y', 'force_z'].slice(0, dimension);
   const rows = (sweep?.points ?? []).map((p) => [
-    p.value, p.force?.[0], p.force?.[1], p.peak_pressure, p.contact_width, p.contact_length, p.converged ? 1 : 0, p.stop_reason, p.iterations,
+    p.value, ...forces.map((_, k) => p.force?.[k]), p.peak_pressure, ...zone.map((z) => p[z]), p.converged ? 1 : 0, p.stop_reason, p.iterations,
   ]);
-  return csv([sweep?.pointer ?? 'value', 'force_x', 'force_y', 'peak_pressure', 'contact_width', 'contact_length', 'converged', 'stop_reason', 'iterations'], rows);
+  return csv([sweep?.pointer ?? 'value', ...forces, 'peak_pressure', ...zone, 'converged', 'stop_reason', 'iterations'], rows);
 }
 
 /**

@@ -174,15 +174,16 @@ export function drawResiduals(view, plots) {
   }
 }
 
-// A case with a sweep: the force of every point against the swept value (docs/web.md).
-function drawSweep(view, plots) {
+/** A case with a sweep (2D or 3D): the force of every point against the swept value (docs/web.md). */
+export function drawSweep(view, plots) {
   const sweep = view.result.sweep;
   $('sweep-figure').hidden = !sweep;
   const box = $('sweep-plot');
   box.innerHTML = '';
   if (!sweep) return;
   const other = view.compare?.result.sweep;
-  view.charts.push(plots.sweepPlot(box, sweep, other ? { label: view.compare.label, sweep: other } : null));
+  const dimension = view.result.dimension === 3 ? 3 : 2;
+  view.charts.push(plots.sweepPlot(box, sweep, other ? { label: view.compare.label, sweep: other } : null, dimension));
   const bad = sweep.points.filter((p) => !p.converged).length;
   $('sweep-note').textContent = `${sweep.points.length} points of ${sweep.pointer}, each started from the previous solution` +
     (bad ? `; ${bad} did not converge (red).` : '; all converged.') +

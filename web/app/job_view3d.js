@@ -5,14 +5,14 @@
 // are hidden by #job-result[data-dimension="3"] (style.css).
 import { accuracyNumber } from './accuracy.js';
 import {
-  addNumber, drawAdaptivity, drawResiduals, figureMagnification, renderHeadline, renderWarnings, setCsvLink, setDownloads, unitText, writeColourBar,
+  addNumber, drawAdaptivity, drawResiduals, drawSweep, figureMagnification, renderHeadline, renderWarnings, setCsvLink, setDownloads, unitText, writeColourBar,
 } from './job_result.js';
 import { planeFrame, pressureCentre, sampleLine, sphereTangentPlane } from './contact_line.js';
 import { contactFaces, boundarySurface } from './tet_surface.js';
 import { contactPlanes, contactSpheres } from './hertz.js';
 import { SURFACE_FIELDS, shownRange } from './surface_fields.js';
 import { colourScale } from './mesh_view.js';
-import { lineCsv } from './csv_export.js';
+import { lineCsv, sweepCsv } from './csv_export.js';
 import { fmt, seconds } from './format.js';
 
 const $ = (id) => document.getElementById(id);
@@ -75,6 +75,8 @@ export function renderSummary3d(job, view) {
     `mesh ${seconds(r.timing?.mesh_s)}, assembly ${seconds(r.timing?.assembly_s)}`);
   renderWarnings(r);
   setDownloads(job);
+  $('sweep-csv-item').hidden = !r.sweep;
+  if (r.sweep) setCsvLink($('download-sweep-csv'), sweepCsv(r.sweep, 3), `job-${job.id}-sweep.csv`);
 }
 
 /** The residual history (in view.charts) and the pressure line (view.lineChart, redrawn alone when θ changes). */
@@ -92,6 +94,7 @@ export function drawCharts3d(view, plots, viewer) {
   }
   drawResiduals(view, plots);
   drawAdaptivity(view, plots);
+  drawSweep(view, plots);
   drawLine(view, plots, viewer);
 }
 

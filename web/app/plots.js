@@ -160,30 +160,33 @@ export function residualPlot(container, history, { correction: showCorrection = 
 }
 
 /** [values, F_y, F_y of the points that did not converge] of a sweep, by ascending value. */
-function sweepTable(sweep) {
+function sweepTable(sweep, dimension = 2) {
   const points = [...(sweep.points ?? [])].sort((a, b) => a.value - b.value);
-  const force = points.map((p) => p.force?.[1] ?? null);
+  const normal = (f) => (dimension === 3 ? (f ? Math.hypot(...f) : null) : f?.[1] ?? null);
+  const force = points.map((p) => normal(p.force));
   return [points.map((p) => p.value), force, points.map((p, i) => (p.converged ? null : force[i]))];
 }
 
 /**
- * A sweep's curve: the contact force F_y of each point against the swept value; points that
- * did not converge are marked in red on a series of their own. With `compare` ({label,
- * sweep}) a second job's sweep is drawn dashed over it.
+ * A sweep's curve: the contact force of each point against the swept value (F_y per unit
+ * thickness in 2D, |F| in 3D, where no axis is the normal one by default); points that did
+ * not converge are marked in red on a series of their own. With `compare` ({label, sweep}) a
+ * second job's sweep is drawn dashed over it.
  */
-export function sweepPlot(container, sweep, compare = null) {
-  const table = sweepTable(sweep);
+export function sweepPlot(container, sweep, compare = null, dimension = 2) {
+  const table = sweepTable(sweep, dimension);
+  const force = dimension === 3 ? '|F|' : 'F_y';
   const value = (u, v) => sci(v);
   const series = [
     { label: sweep.pointer },
-    { label: 'F_y (per unit thickness)', stroke: COLOURS.sweep, width: 2, value, points: { show: true, size: 6 } },
+    { label: dimension === 3 ? '|F|' : 'F_y (per unit thickness)', stroke: COLOURS.sweep, width: 2, value, points: { show: true, size: 6 } },
     { label: 'not converged', stroke: COLOURS.unconverged, width: 0, value, points: { show: true, size: 9, fill: COLOURS.unconverged } },
   ];
   let data = table;
   if (compare) {
-    const other = sweepTable(compare.sweep);
+    const other = sweepTable(compare.sweep, dimension);
     data = uPlot.join([table, other.slice(0, 2)]);
-    series.push({ label: `${compare.label} F_y`, stroke: COLOURS.comparePressure, width: 2, dash: [8, 4], value, points: { show: true, size: 5 } });
+    series.push({ label: `${compare.label} ${force}`, stroke: COLOURS.comparePressure, width: 2, dash: [8, 4], value, points: { show: true, size: 5 } });
   }
   const opts = {
     width: fitWidth(container),
@@ -193,7 +196,7 @@ export function sweepPlot(container, sweep, compare = null) {
     series: series.map((s, i) => (i === 0 ? s : { ...s, spanGaps: i !== 2 })),
     axes: [
       { label: sweep.pointer, size: 46, values: (u, vals) => vals.map(sci) },
-      { label: 'contact force F_y', size: 64, values: (u, vals) => vals.map(sci) },
+      { label: `contact force ${force}`, size: 64, values: (u, vals) => vals.map(sci) },
     ],
   };
   const chart = responsive(new uPlot(opts, data, container), container);
