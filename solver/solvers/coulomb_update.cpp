@@ -15,7 +15,33 @@ CoulombUpdate::CoulombUpdate(BoxQp& qp, const FrictionLayout& layout, Kinks& kin
       kinks_(kinks),
       sides_(sides),
       schedule_(schedule),
+      extrapolation_(schedule.extrapolation_depth),
       bounds_(layout.edges.size()) {}
+
+double CoulombUpdate::set_bounds(const Vector& x) {
+  const std::size_t n = layout_.edges.size();
+  Vector s(n), g(n);
+  bool first = false;
+  for (std::size_t e = 0; e < n; ++e) {
+    const FrictionEdge& f = layout_.edges[e];
+    g[e] = slip_bound(f, x);
+    s[e] = qp_.upper[f.st];
+    first |= !is_bounded_above(s[e]);
+  }
+  if (first) extrapolation_.reset();
+  const Vector next = first ? g : extrapolation_.next(s, g);
+  std::vector<double> bounds(n);
+  for (std::size_t e = 0; e < n; ++e) {
+    const int i = layout_.edges[e].st;
+    qp_.lower[i] = -next[e];
+    qp_.upper[i] = next[e];
+    bounds[e] = next[e];
+  }
+  set_kink_weights(layout_, bounds, kinks_);
+  if (first) return 1.0;
+  const double largest = g.maxCoeff();
+  return largest > 0.0 ? (g - s).cwiseAbs().maxCoeff() / largest : 0.0;
+}
 
 double CoulombUpdate::residual(const Vector& x, const Vector& r, double sided_kkt) const {
   // Only the S_t of the frictional edges and the kinked U_t see the bounds: their terms of the
@@ -49,7 +75,7 @@ double CoulombUpdate::apply(int k, Vector& x, Vector& r, double frozen) {
     // Its measure is the frozen problem's residual, which does not bound Coulomb's: the bounds'
     // change alone decides its convergence.
     moved_ = std::numeric_limits<double>::infinity();
-    const double change = set_friction_bounds(layout_, x, qp_, kinks_);
+    const double change = set_bounds(x);
     qp_.clip(x);
     symmetric_multiply(qp_.A, x, r);
     r = qp_.b - r;
@@ -63,7 +89,12 @@ double CoulombUpdate::apply(int k, Vector& x, Vector& r, double frozen) {
     if (qp_.upper[i] > 0.0 && x[i] >= qp_.upper[i]) slipping[e] = 1;
     if (qp_.upper[i] > 0.0 && x[i] <= qp_.lower[i]) slipping[e] = -1;
   }
-  const double change = set_friction_bounds(layout_, x, qp_, kinks_);
+  // The map from the bounds to 𝔣|S_n| is smooth only while the edges keep their states: the
+  // extrapolation combines updates between which no edge started or stopped slipping (with
+  // edges changing state it cost the L-bracket 6 iterations, docs/validation.md §13).
+  if (slipping != slipping_) extrapolation_.reset();
+  slipping_ = slipping;
+  const double change = set_bounds(x);
   double moved_squared = 0.0;
   for (std::size_t e = 0; e < layout_.edges.size(); ++e) {
     const int i = layout_.edges[e].st;
