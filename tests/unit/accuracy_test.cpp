@@ -225,15 +225,15 @@ TEST(AccuracySection, ReadWithDefaultsAndStopsEachLevelAtTheDiscretisationError)
   EXPECT_EQ(read_case(j).spec->solver.stopping, StoppingRule::kKktResidual);
 }
 
-TEST(AccuracySection, AdaptiveByDefaultUniformWithFrictionOrOrderTwo) {
+TEST(AccuracySection, UniformByDefaultIn2dAdaptiveWhenAskedNotWithOrderTwo) {
   json j = contact_case();
   j["accuracy"] = {{"force", 1e-3}};
   const CaseReadResult plain = read_case(j);
   ASSERT_TRUE(plain.spec);
-  EXPECT_TRUE(plain.spec->accuracy->adaptive);
+  EXPECT_FALSE(plain.spec->accuracy->adaptive);  // 3D's default is adaptive (Cli3d)
   EXPECT_EQ(plain.spec->accuracy->theta, AdaptivitySpec{}.theta);
-  j["accuracy"]["refinement"] = "uniform";
-  EXPECT_FALSE(read_case(j).spec->accuracy->adaptive);
+  j["accuracy"]["refinement"] = "adaptive";
+  EXPECT_TRUE(read_case(j).spec->accuracy->adaptive);
   json order2 = contact_case();
   order2["mesh"]["order"] = 2;
   order2["accuracy"] = {{"force", 1e-3}};

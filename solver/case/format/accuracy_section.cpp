@@ -23,11 +23,13 @@ ObjectRulePtr accuracy_rule(const CaseReadOptions& options) {
                      "in 3D; fixed ones "
                      "included) that a refinement may not exceed: a refinement that would give "
                      "more is not made and the run stops without the accuracy"),
-      optional_field("refinement", choice_value({"adaptive", "uniform"}), "adaptive",
+      optional_field("refinement", choice_value({"adaptive", "uniform"}), nullptr,
                      "how each level is made from the one before: adaptive bisects the cells "
-                     "Dörfler marking picks from the functional's indicators (theta); uniform "
-                     "refines every cell (the default with friction or mesh.order 2, which "
-                     "adaptive refinement does not take yet)"),
+                     "Dörfler marking picks from the functional's indicators (theta), uniform "
+                     "refines every cell. Default: adaptive in 3D; uniform in 2D, where its "
+                     "cheaper multilevel cycles make it as fast or faster (docs/performance.md, "
+                     "\"Accuracy on demand\"), and always with friction or mesh.order 2, which "
+                     "adaptive refinement does not take yet"),
       optional_field("theta", number_value({0.0, 1.0, true, false}), a.theta,
                      "Dörfler parameter of adaptive levels, as adaptivity.theta"),
   };
@@ -46,6 +48,8 @@ AccuracySpec read_accuracy_section(const nlohmann::json& j, const CaseLimits& li
 
 void settle_accuracy_refinement(CaseSpec& spec, std::vector<CaseError>& errors) {
   if (!spec.accuracy) return;
+  AccuracySpec& a = *spec.accuracy;
+  if (!a.refinement_given) a.adaptive = spec.dimension == 3;
   const bool frictional = std::any_of(spec.boundary.begin(), spec.boundary.end(), [](auto& b) {
     return b.second.type == BoundaryCondition::Type::kContact && b.second.frictional();
   });
@@ -53,7 +57,6 @@ void settle_accuracy_refinement(CaseSpec& spec, std::vector<CaseError>& errors) 
                     : spec.mesh.order == 2 ? "with mesh.order 2"
                                            : nullptr;
   if (!why) return;
-  AccuracySpec& a = *spec.accuracy;
   if (a.refinement_given && a.adaptive)
     errors.push_back({"/accuracy/refinement", std::string("adaptive refinement is not available ") +
                                                   why + " yet; use \"uniform\" or leave it out"});
