@@ -6,6 +6,8 @@
 // changes with ratio ρ leaves exactly that much to the limit. A force whose last two changes
 // have opposite signs is not on such a sequence: its estimate is the larger change. A force whose
 // change grew (monotonically) is not yet on one either: it has no estimate until it shrinks.
+// On adaptive levels the same reasoning runs against the unknowns instead of the level count
+// (estimate_adaptive_force_error).
 
 #include <limits>
 #include <nlohmann/json.hpp>
