@@ -1,6 +1,7 @@
-// The accuracy loop as a user runs it (`"accuracy": {"force": tol}`): it refines uniformly from
-// mesh.refinements until the estimated force error is within tol, and the true error (against
-// the reference of docs/validation.md §12) is within twice that; a max_dofs that stops it first
+// The accuracy loop as a user runs it (`"accuracy": {"force": tol}`): it refines (uniformly
+// when asked, adaptively by default) from mesh.refinements until the estimated force error is
+// within tol, and the true error (against the reference of docs/validation.md §12) is within
+// twice that (uniform) or within tol (adaptive); a max_dofs that stops it first
 // says so with a warning; a zero force on two levels stops it; an unconverged last level gives
 // no estimate of its own.
 #include <gtest/gtest.h>
@@ -18,10 +19,10 @@ using nlohmann::json;
 
 constexpr double kHertzReference = 0.0125226;  // λ = 1, body-normal (validation.md §12)
 
-json hertz_to(double tolerance, int refinements) {
+json hertz_to(double tolerance, int refinements, const char* refinement = "uniform") {
   json j = testing::load_shipped_example("hertz");
   j["mesh"]["refinements"] = refinements;
-  j["accuracy"] = {{"force", tolerance}};
+  j["accuracy"] = {{"force", tolerance}, {"refinement", refinement}};
   return j;
 }
 
@@ -52,6 +53,30 @@ TEST(AccuracyRun, HertzReachesTheRequestedForceAccuracyByUniformLevels) {
   EXPECT_EQ(force, steps.back()["force"][1].get<double>());
   EXPECT_LE(std::abs(force - kHertzReference) / kHertzReference, 2 * tolerance);
   EXPECT_FALSE(has_warning(r, "accuracy_not_reached"));
+}
+
+// The default: levels of Dörfler marking and bisection, and a claim that holds against the
+// reference (validation.md §14: reached at the sixth bisection step, efficiency 1.5).
+TEST(AccuracyRun, HertzReachesItAdaptivelyAndTheClaimHolds) {
+  const double tolerance = 1e-3;
+  const json r = testing::solved_case(hertz_to(tolerance, 2, "adaptive"));
+  const json& a = r["accuracy"];
+  ASSERT_TRUE(a["reached"].get<bool>()) << a["stop_message"];
+  const json& steps = a["steps"];
+  ASSERT_GE(steps.size(), 4u);
+  EXPECT_LE(steps.size(), 8u);
+  for (std::size_t k = 1; k < steps.size(); ++k) {
+    const double growth = steps[k]["dofs"].get<double>() / steps[k - 1]["dofs"].get<double>();
+    EXPECT_LT(growth, 2.5) << k;  // a bisection step, not a red refinement (about 4)
+    EXPECT_LE(steps[k]["iterations"].get<int>(), 20) << k;
+  }
+  const double estimate = a["estimate"].get<double>();
+  const double force = r["contact"]["force"][1].get<double>();
+  const double error = std::abs(force - kHertzReference) / kHertzReference;
+  EXPECT_LE(estimate, tolerance);
+  EXPECT_LE(error, tolerance);     // reached means it
+  EXPECT_GE(estimate, error);      // an upper bound here
+  EXPECT_LE(estimate, 3 * error);  // and not a wild one
 }
 
 TEST(AccuracyRun, MaxDofsStopsTheLoopWithAWarning) {

@@ -92,6 +92,75 @@ TEST(ForceErrorEstimate, UnchangedForcesAreExact) {
   EXPECT_EQ(e.estimate, 0.0);
 }
 
+/// Adaptive levels: N_k = 1000 · growth^k unknowns, F_k = 1 + C N_k^(−p).
+struct PowerLaw {
+  Forces forces;
+  std::vector<long long> dofs;
+  std::vector<double> errors;
+};
+PowerLaw power_law(double c, double p, double growth, int levels) {
+  PowerLaw s;
+  for (int k = 0; k < levels; ++k) {
+    s.dofs.push_back(std::llround(1000 * std::pow(growth, k)));
+    s.errors.push_back(c * std::pow(static_cast<double>(s.dofs.back()), -p));
+    s.forces.push_back({0.0, 1.0 + s.errors.back()});
+  }
+  return s;
+}
+
+TEST(AdaptiveForceErrorEstimate, NoneBeforeTheUnknownsDoubled) {
+  const PowerLaw s = power_law(1.0, 0.8, 1.5, 2);  // 1000, 1500
+  EXPECT_FALSE(estimate_adaptive_force_error(s.forces, s.dofs, 2).available());
+}
+
+TEST(AdaptiveForceErrorEstimate, OneSpanAssumesTheSlowestOrder) {
+  const PowerLaw s = power_law(1.0, 0.8, 1.5, 3);  // 1000, 1500, 2250: one span 1000 → 2250
+  const ForceErrorEstimate e = estimate_adaptive_force_error(s.forces, s.dofs, 2);
+  ASSERT_TRUE(e.available());
+  EXPECT_FALSE(e.ratio_observed);
+  EXPECT_DOUBLE_EQ(e.ratio, 2.0);  // order 1 in h: N^(−1/2) in 2D
+  const double change = (s.errors[0] - s.errors[2]) / (1.0 + s.errors[2]);
+  EXPECT_NEAR(e.estimate, change / (std::sqrt(2250.0 / 1000.0) - 1.0), 1e-12);
+  EXPECT_GT(e.estimate, s.errors[2]);  // the slowest order overestimates a faster sequence
+}
+
+TEST(AdaptiveForceErrorEstimate, ExactOnAPowerLawOfTheUnknowns) {
+  for (const auto& [dim, p] : {std::pair{2, 0.8}, std::pair{3, 0.5}}) {
+    const PowerLaw s = power_law(0.5, p, 1.6, 12);
+    const ForceErrorEstimate e = estimate_adaptive_force_error(s.forces, s.dofs, dim);
+    ASSERT_TRUE(e.available() && e.ratio_observed && e.monotone) << dim;
+    EXPECT_NEAR(e.ratio, std::pow(2.0, dim * p), 1e-6) << dim;
+    // Relative to |F_k| as the estimate is; rounding of the unknowns moves it by little.
+    EXPECT_NEAR(e.estimate, s.errors.back() / (1.0 + s.errors.back()), 1e-3 * s.errors.back());
+  }
+}
+
+TEST(AdaptiveForceErrorEstimate, TheOrderIsTheSlowerOfTheLastTwoAndLimited) {
+  // Slower than h-order 1 (N^(−0.3) in 2D): limited to N^(−1/2), which underestimates: the
+  // limit of an estimate from forces alone (docs/method.md §9).
+  const PowerLaw slow = power_law(0.5, 0.3, 1.6, 12);
+  const ForceErrorEstimate e = estimate_adaptive_force_error(slow.forces, slow.dofs, 2);
+  EXPECT_DOUBLE_EQ(e.ratio, 2.0);
+  // A last span twice as fast as the one before keeps the order of the one before.
+  PowerLaw s = power_law(0.5, 0.6, 1.6, 12);
+  const double faster = 0.5 * (s.forces[10][1] - s.forces[11][1]);
+  s.forces[11][1] += faster;
+  const ForceErrorEstimate kept = estimate_adaptive_force_error(s.forces, s.dofs, 2);
+  EXPECT_NEAR(kept.ratio, std::pow(2.0, 2 * 0.6), 1e-6);
+}
+
+TEST(AdaptiveForceErrorEstimate, AGrowingChangeGivesNoneAndOppositeSignsTheLarger) {
+  const std::vector<long long> dofs = {1000, 2000, 4000};
+  const ForceErrorEstimate growing =
+      estimate_adaptive_force_error({{0.0, 1.01}, {0.0, 1.009}, {0.0, 1.0}}, dofs, 2);
+  EXPECT_TRUE(growing.growing);
+  EXPECT_FALSE(growing.available());
+  const ForceErrorEstimate signs =
+      estimate_adaptive_force_error({{0.0, 1.01}, {0.0, 0.99}, {0.0, 1.0}}, dofs, 2);
+  EXPECT_FALSE(signs.monotone);
+  EXPECT_NEAR(signs.estimate, 0.02, 1e-12);
+}
+
 TEST(AccuracyStopReason, ReachedNoForceOrGoOn) {
   AccuracySpec spec;
   spec.force = 1e-3;
@@ -154,6 +223,28 @@ TEST(AccuracySection, ReadWithDefaultsAndStopsEachLevelAtTheDiscretisationError)
   EXPECT_EQ(read_case(j).spec->solver.discretisation_fraction, 0.2);
   j["solver"] = {{"tolerance", 1e-9}};
   EXPECT_EQ(read_case(j).spec->solver.stopping, StoppingRule::kKktResidual);
+}
+
+TEST(AccuracySection, UniformByDefaultIn2dAdaptiveWhenAskedNotWithOrderTwo) {
+  json j = contact_case();
+  j["accuracy"] = {{"force", 1e-3}};
+  const CaseReadResult plain = read_case(j);
+  ASSERT_TRUE(plain.spec);
+  EXPECT_FALSE(plain.spec->accuracy->adaptive);  // 3D's default is adaptive (Cli3d)
+  EXPECT_EQ(plain.spec->accuracy->theta, AdaptivitySpec{}.theta);
+  j["accuracy"]["refinement"] = "adaptive";
+  EXPECT_TRUE(read_case(j).spec->accuracy->adaptive);
+  json order2 = contact_case();
+  order2["mesh"]["order"] = 2;
+  order2["accuracy"] = {{"force", 1e-3}};
+  const CaseReadResult o2 = read_case(order2);
+  ASSERT_TRUE(o2.spec) << o2.errors[0].detail;
+  EXPECT_FALSE(o2.spec->accuracy->adaptive);
+  order2["accuracy"]["refinement"] = "adaptive";
+  EXPECT_TRUE(has_error(read_case(order2), "/accuracy/refinement", "mesh.order 2"));
+  json bad = contact_case();
+  bad["accuracy"] = {{"force", 1e-3}, {"refinement", "red"}};
+  EXPECT_TRUE(has_error(read_case(bad), "/accuracy/refinement", ""));
 }
 
 TEST(AccuracySection, BadValuesNameTheirField) {

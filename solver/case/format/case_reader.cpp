@@ -193,6 +193,7 @@ CaseReadResult read_case(const nlohmann::json& j, const CaseReadOptions& options
     spec.solver.discretisation_fraction = kAccuracyDiscretisationFraction;
   check_friction_support(spec, result.errors);
   check_accuracy_support(j, spec, result.errors);
+  settle_accuracy_refinement(spec, result.errors);
   check_order2_support(j, spec, result.errors);
   for (CaseError& e : dimension_support_problems(j, spec)) result.errors.push_back(std::move(e));
   if (!result.errors.empty()) return result;

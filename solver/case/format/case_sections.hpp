@@ -76,6 +76,10 @@ ObjectRulePtr adaptivity_rule(const CaseReadOptions& options);
 AdaptivitySpec read_adaptivity_section(const nlohmann::json& j, const CaseLimits& limits);
 ObjectRulePtr accuracy_rule(const CaseReadOptions& options);
 AccuracySpec read_accuracy_section(const nlohmann::json& j, const CaseLimits& limits);
+/// Settles accuracy.refinement's default (adaptive in 3D, uniform in 2D: docs/performance.md,
+/// "Accuracy on demand") and refuses "adaptive" with friction or mesh.order 2, which the
+/// adaptive loop does not take yet.
+void settle_accuracy_refinement(CaseSpec& spec, std::vector<CaseError>& errors);
 ObjectRulePtr sweep_rule(const CaseReadOptions& options);
 /// Reads the case at each value of its sweep into spec.sweep_points; a value that makes the
 /// case invalid is an error at /sweep/values/<i> naming the field and the reason.

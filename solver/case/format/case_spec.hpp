@@ -117,11 +117,17 @@ struct AdaptivitySpec {
 };
 
 /// The `accuracy` section: solve, estimate the contact force's error from the forces of the
-/// levels solved so far, refine uniformly and solve again from the prolongated solution, until
-/// the estimate is below `force` or the next level would exceed `max_dofs` (docs/method.md §9).
+/// levels solved so far, refine (adaptively by default in 3D, uniformly in 2D) and
+/// solve again from the prolongated solution, until the estimate is below `force` or the next
+/// level would exceed `max_dofs` (docs/method.md §9).
 struct AccuracySpec {
   double force = 1e-3;             ///< requested relative error of the contact force |F|
   long long max_dofs = 2'000'000;  ///< a refinement that would give more DOFs is not made
+  /// Dörfler marking and bisection between the levels; false: uniform (red) refinement. Set
+  /// when the case is read (settle_accuracy_refinement).
+  bool adaptive = true;
+  bool refinement_given = false;  ///< the case says `refinement` (it is not the default)
+  double theta = 0.7;             ///< the Dörfler parameter of adaptive levels (as adaptivity's)
 };
 
 /// A number of the case that takes several values (the case's `sweep`).

@@ -173,17 +173,21 @@ struct NextLevel {
   std::string stop_reason;  ///< empty: refine
 };
 
-/// The adaptive loop's next level: the marked cells bisected (with closure).
+/// The adaptive loop's next level: the marked cells bisected (with closure). No cell marked
+/// (J = 0) is the stop `if_none_marked`, or, without one, every cell bisected.
 template <int dim>
 NextLevel<dim> refine_marked(const CaseSolutionOf<dim>& solution,
                              const SimplexBisectionState<dim>& state,
-                             const std::vector<double>& indicators, const AdaptivitySpec& a) {
-  const std::vector<int> marked = dorfler_marking(indicators, a.theta);
+                             const std::vector<double>& indicators, double theta,
+                             long long max_dofs, const char* if_none_marked) {
+  std::vector<int> marked = dorfler_marking(indicators, theta);
+  if (marked.empty() && !if_none_marked)
+    for (int c = 0; c < static_cast<int>(indicators.size()); ++c) marked.push_back(c);
   NextLevel<dim> next{solution.disc->meshes(), state, static_cast<int>(marked.size()), ""};
   bisect_finest_level(next.meshes, next.state, marked);
   if (marked.empty())
-    next.stop_reason = "target";
-  else if (dofs_total(next.meshes.finest(), 1) > a.max_dofs)
+    next.stop_reason = if_none_marked;
+  else if (dofs_total(next.meshes.finest(), 1) > max_dofs)
     next.stop_reason = "max_dofs";
   return next;
 }
@@ -209,6 +213,32 @@ std::vector<ForceComponents> forces(const std::vector<AdaptiveStepRecord>& steps
   return f;
 }
 
+/// The accuracy loop's estimate after the last of `steps`: from uniform levels by their ratio
+/// of changes, from adaptive ones by their unknowns (force_accuracy.hpp).
+template <int dim>
+ForceErrorEstimate force_error_after(const std::vector<AdaptiveStepRecord>& steps,
+                                     const AccuracySpec& a) {
+  if (!a.adaptive) return estimate_force_error(forces(steps));
+  std::vector<long long> dofs;
+  for (const AdaptiveStepRecord& s : steps) dofs.push_back(s.dofs);
+  return estimate_adaptive_force_error(forces(steps), dofs, dim);
+}
+
+/// The next level of the adaptive or the accuracy loop, or why there is none.
+template <int dim>
+NextLevel<dim> next_level(const CaseSolutionOf<dim>& solution, const CaseSpec& spec,
+                          const SimplexBisectionState<dim>& state,
+                          const std::vector<double>& indicators) {
+  if (spec.adaptivity)
+    return refine_marked(solution, state, indicators, spec.adaptivity->theta,
+                         spec.adaptivity->max_dofs, "target");
+  const AccuracySpec& a = *spec.accuracy;
+  if (!a.adaptive) return refine_all(solution, a, spec.mesh.order);
+  // J = 0 marks nothing: the force is then exact, and the next level (all cells bisected) says
+  // so with a zero change.
+  return refine_marked(solution, state, indicators, a.theta, a.max_dofs, nullptr);
+}
+
 /// Why the loop stops after this step's solve (before refining), or empty to go on.
 template <int dim>
 std::string stop_after_solve(const CaseSolutionOf<dim>& solution, const CaseSpec& spec, int step,
@@ -232,7 +262,8 @@ CaseSolutionOf<dim> solve_case_levels(SimplexHierarchy<dim> meshes, const Proble
   // 3D marks its edges only when it will bisect: the marking of a large uniform mesh costs a
   // few per cent of its solve.
   SimplexBisectionState<dim> state;
-  if (dim == 2 || spec.adaptivity)
+  const bool bisects = spec.adaptivity || (spec.accuracy && spec.accuracy->adaptive);
+  if (dim == 2 || bisects)
     state = initial_bisection_state(meshes.finest(), kPerLevel * (meshes.num_levels() - 1));
   double first_estimator = 0.0;
   int previous_levels = 0;  // of the step before: where its solution is prolongated from
@@ -270,7 +301,7 @@ CaseSolutionOf<dim> solve_case_levels(SimplexHierarchy<dim> meshes, const Proble
     record.estimator = estimate.estimator();
     // An unconverged level's force is not the level's: no estimate from it (the loop stops).
     if (spec.accuracy && solution.report.converged)
-      record.force_error = estimate_force_error(forces(solution.steps));
+      record.force_error = force_error_after<dim>(solution.steps, *spec.accuracy);
     if (step == 0) first_estimator = record.estimator;
     auto finish_step = [&] { solution.steps.back().time_s = seconds(t0, Clock::now()); };
     if (!spec.adaptivity && !spec.accuracy) {
@@ -280,8 +311,7 @@ CaseSolutionOf<dim> solve_case_levels(SimplexHierarchy<dim> meshes, const Proble
     solution.stop_reason = stop_after_solve(solution, spec, step, first_estimator);
     NextLevel<dim> next;
     if (solution.stop_reason.empty()) {
-      next = spec.adaptivity ? refine_marked(solution, state, estimate.indicators, *spec.adaptivity)
-                             : refine_all(solution, *spec.accuracy, spec.mesh.order);
+      next = next_level(solution, spec, state, estimate.indicators);
       solution.stop_reason = next.stop_reason;
       if (solution.stop_reason.empty() && observer.deadline.passed())
         solution.stop_reason = "time_limit";
@@ -292,11 +322,11 @@ CaseSolutionOf<dim> solve_case_levels(SimplexHierarchy<dim> meshes, const Proble
     }
     record.marked = next.marked;
     meshes = std::move(next.meshes);
-    if (spec.adaptivity) state = std::move(next.state);
+    if (bisects) state = std::move(next.state);
     finish_step();
   }
-  // Levels added by the accuracy loop: kPerLevel more bisections per level for every cell.
-  if (spec.accuracy)
+  // Levels added by a uniform accuracy loop: kPerLevel more bisections per level for every cell.
+  if (spec.accuracy && !spec.accuracy->adaptive)
     state = initial_bisection_state(solution.disc->meshes().finest(),
                                     kPerLevel * (solution.disc->num_levels() - 1));
   solution.generation = std::move(state.generation);

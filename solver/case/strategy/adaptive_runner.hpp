@@ -5,7 +5,8 @@
 //   bisection of triangles or tetrahedra) → solve again from the prolongated solution
 // in which every bisection step is one more level of the nested hierarchy that the multilevel
 // solvers cycle on (coarse mesh, its uniform refinements, then the adapted meshes), or, with an
-// `accuracy` section, the same loop on uniform refinements. Written once for both dimensions;
+// `accuracy` section, the same loop on bisection steps (3D's default) or uniform refinements
+// until the force's estimated error is within its tolerance. Written once for both dimensions;
 // what stays 2D (order 2, friction inside the loop) is refused in 3D when the case is read
 // (dimension_support.cpp).
 

@@ -103,6 +103,94 @@ ForceErrorEstimate estimate_force_error(const std::vector<ForceComponents>& forc
   return e;
 }
 
+namespace {
+
+/// The last level before `k` with at most 1/kAdaptiveSpan of its unknowns, or −1.
+int span_start(const std::vector<long long>& dofs, int k) {
+  for (int j = k - 1; j >= 0; --j)
+    if (static_cast<double>(dofs[j]) * kAdaptiveSpan <= static_cast<double>(dofs[k])) return j;
+  return -1;
+}
+
+/// The order p in [lo, hi] at which C N^(−p) changes `ratio` times more over (ni, nj) than over
+/// (nj, nk), the limit nearer to it outside; the ratio grows with p.
+double observed_order(double ni, double nj, double nk, double ratio, double lo, double hi) {
+  const auto ratio_at = [&](double p) {
+    return (std::pow(ni, -p) - std::pow(nj, -p)) / (std::pow(nj, -p) - std::pow(nk, -p));
+  };
+  if (ratio <= ratio_at(lo)) return lo;
+  if (ratio >= ratio_at(hi)) return hi;
+  for (int halvings = 0; halvings < 50; ++halvings) {
+    const double mid = 0.5 * (lo + hi);
+    (ratio_at(mid) < ratio ? lo : hi) = mid;
+  }
+  return 0.5 * (lo + hi);
+}
+
+/// The spans ending at level k (span_start), and what the forces show over them.
+struct Spans {
+  int i = -1, j = -1;  ///< i → j → k; −1: none
+  double change = 0.0, previous = 0.0;
+  bool monotone = true, growing = false;
+  double order = 0.0;  ///< p observed over both spans, in [slowest, fastest]; 0: none
+};
+
+Spans spans_to(const std::vector<ForceComponents>& forces, const std::vector<long long>& dofs,
+               int k, double slowest, double fastest) {
+  Spans s;
+  s.j = k >= 1 ? span_start(dofs, k) : -1;
+  if (s.j < 0) return s;
+  s.change = distance(forces[k], forces[s.j]);
+  s.i = span_start(dofs, s.j);
+  if (s.i < 0 || !(s.change > 0)) return s;
+  s.previous = distance(forces[s.j], forces[s.i]);
+  const double ni = static_cast<double>(dofs[s.i]), nj = static_cast<double>(dofs[s.j]),
+               nk = static_cast<double>(dofs[k]);
+  const auto along = [&](int a, int b) {
+    return dot_of_difference(forces[a], forces[b], forces[k]);
+  };
+  if (along(k, s.j) * along(s.j, s.i) < 0)
+    s.monotone = false;
+  else if (s.previous < s.change * std::log(nj / ni) / std::log(nk / nj))
+    s.growing = true;  // the change per factor of unknowns grew (the ratio's limit as p → 0)
+  else
+    s.order = observed_order(ni, nj, nk, s.previous / s.change, slowest, fastest);
+  return s;
+}
+
+}  // namespace
+
+ForceErrorEstimate estimate_adaptive_force_error(const std::vector<ForceComponents>& forces,
+                                                 const std::vector<long long>& dofs, int dim) {
+  ForceErrorEstimate e;
+  const int k = static_cast<int>(forces.size()) - 1;
+  // h-orders 1 and 2 on N unknowns of dim dimensions; the slowest until one is observed.
+  const double slowest = 1.0 / dim, fastest = 2.0 / dim;
+  const Spans s = spans_to(forces, dofs, k, slowest, fastest);
+  if (s.j < 0) return e;
+  const double size = force_norm(forces[k]);
+  if (!(size > 0)) return e;
+  e.change = s.change / size;
+  e.ratio_observed = s.i >= 0 && s.change > 0;
+  e.monotone = s.monotone;
+  e.growing = s.growing;
+  if (s.growing) return e;
+  if (!s.monotone) {
+    e.ratio = 2.0;
+    e.estimate = std::max(s.change, s.previous) / size;
+    return e;
+  }
+  double p = slowest;
+  if (s.order > 0) {
+    // The slower of this order and the last level's: one lucky span does not make the rate.
+    const Spans last = spans_to(forces, dofs, k - 1, slowest, fastest);
+    p = std::min(s.order, last.order > 0 ? last.order : slowest);
+  }
+  e.ratio = std::pow(2.0, dim * p);
+  e.estimate = e.change / (std::pow(static_cast<double>(dofs[k]) / dofs[s.j], p) - 1.0);
+  return e;
+}
+
 std::string accuracy_stop_reason(const ForceErrorEstimate& e, const AccuracySpec& spec,
                                  const std::vector<ForceComponents>& forces) {
   // A zero force on the first level may be a contact the coarse mesh does not resolve.

@@ -6,6 +6,8 @@
 // changes with ratio ρ leaves exactly that much to the limit. A force whose last two changes
 // have opposite signs is not on such a sequence: its estimate is the larger change. A force whose
 // change grew (monotonically) is not yet on one either: it has no estimate until it shrinks.
+// On adaptive levels the same reasoning runs against the unknowns instead of the level count
+// (estimate_adaptive_force_error).
 
 #include <limits>
 #include <nlohmann/json.hpp>
@@ -32,6 +34,10 @@ constexpr double kMaxForceRatio = 4.0;
 /// discretisation's, and 0.1 (the default) leaves enough algebraic error in the force to spoil
 /// it (docs/validation.md §14).
 constexpr double kAccuracyDiscretisationFraction = 0.01;
+/// The growth of the unknowns across which an adaptive sequence's change is taken: a step of
+/// Dörfler marking adds 1.3–1.8 times the unknowns, and its change is as much the marking's
+/// wander as convergence (docs/validation.md §14).
+constexpr double kAdaptiveSpan = 2.0;
 
 struct ForceErrorEstimate {
   static constexpr double kNone = std::numeric_limits<double>::quiet_NaN();
@@ -54,6 +60,15 @@ struct ForceErrorEstimate {
 /// The estimate after the last of `forces`, one per level, coarsest first, each level a uniform
 /// refinement of the one before. None with one level or a zero last force.
 ForceErrorEstimate estimate_force_error(const std::vector<ForceComponents>& forces);
+
+/// The estimate after the last of `forces` on adaptively refined levels with `dofs` unknowns
+/// (docs/method.md §9): the model |F_k − F| = C N_k^(−p), applied across a span — from the
+/// last level with at most 1/kAdaptiveSpan of the last level's unknowns — instead of one step,
+/// with p from the span before (limited to [1/dim, 2/dim], the h-orders 1 and 2 of the uniform
+/// rule) or 1/dim before one is observed. `ratio` is the equivalent ρ of a uniform refinement,
+/// 2^(dim·p). None until a span exists.
+ForceErrorEstimate estimate_adaptive_force_error(const std::vector<ForceComponents>& forces,
+                                                 const std::vector<long long>& dofs, int dim);
 
 /// Why the run stops after the last of `forces` (`reached`; `no_force` when it and the level
 /// before are zero), or empty to refine on.
