@@ -79,18 +79,23 @@ namespace {
 ObjectRulePtr accuracy_step_rule(int dim) {
   return object_rule(
       "a level of the accuracy loop", anchor("accuracy_step", dim),
-      {output_field("refinements", count(), "1", "uniform refinements of the coarse mesh"),
+      {output_field("refinements", count(), "1",
+                    "the hierarchy's levels less one: uniform refinements of the coarse mesh, "
+                    "and with accuracy.refinement \"adaptive\" one more per bisection step (a "
+                    "3D step may add two)"),
        output_field("dofs", count(), "1", "unknowns solved for"),
        output_field("dofs_total", count(), "1", "all DOFs of the level (what max_dofs limits)"),
        output_field("force", force_value(dim), dim == 2 ? "S·L" : "S·L²",
                     "the contact force at this level's solution (as contact.force)"),
        output_field("change", number_or_null(), "1",
-                    "|F_k − F_(k−1)| / |F_k|: the force's change from the level before (null on "
-                    "the first level or for a zero force)"),
+                    "|F_k − F_j| / |F_k|: the force's change from the level before (uniform), or "
+                    "from the last level with at most half the unknowns (adaptive: a span); "
+                    "null before one exists or for a zero force"),
        output_field("ratio", number_or_null(), "1",
                     "ρ, the factor by which the change is taken to shrink per refinement: the "
                     "ratio of the last two changes limited to [2, 4], or 2 before two changes "
-                    "are known (docs/method.md §9)"),
+                    "are known; adaptive: 2^(dim·p) for the order p in the unknowns, "
+                    "N^(−p), p within [1/dim, 2/dim] (docs/method.md §9)"),
        output_field("ratio_observed", boolean_value(), "",
                     "ratio is the observed one (false: the assumed 2)"),
        output_field("monotone", boolean_value(), "",
