@@ -1,7 +1,7 @@
 #!/usr/bin/env python3
 """The figure of an adapted half ball (docs/figures/hertz_3d_adapted.svg, validation.md §16).
 
-Solves the shipped hertz_3d_accuracy (the quarter ball, 10 adaptive steps) with the given
+Solves the shipped hertz_3d_accuracy (the quarter ball, refined adaptively to 1 %) with the given
 fosls-contact, writes its VTU as ASCII, and draws two panels as SVG, in pure Python:
   left:  the contact side seen from below (the boundary faces facing down, projected onto the
          x-y plane, 0 <= x, y <= 0.15), coloured by the contact pressure, with Hertz's radius
@@ -85,8 +85,9 @@ def main():
     scale = size / 0.15
     arc = (f'<path d="M {20 + hertz_a * scale:.1f} {40 + size} A {hertz_a * scale:.1f} {hertz_a * scale:.1f} 0 0 0 '
            f'20 {40 + size - hertz_a * scale:.1f}" fill="none" stroke="black" stroke-width="1.5" stroke-dasharray="6 4"/>')
+    loop = result.get("accuracy") or result.get("adaptivity")
     title = (f"hertz_3d_accuracy: {result['dofs']} unknowns, {result['tetrahedra']} tetrahedra after "
-             f"{len(result['adaptivity']['steps']) - 1} bisection steps; contact radius {zone['radius']:.4f}")
+             f"{len(loop['steps']) - 1} steps; contact radius {zone['radius']:.4f}")
     svg = [f'<svg xmlns="http://www.w3.org/2000/svg" width="840" height="450" font-family="sans-serif" font-size="13">',
            '<rect width="100%" height="100%" fill="white"/>',
            f'<text x="20" y="22">{title}</text>', *left, arc, *right,
