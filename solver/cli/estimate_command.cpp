@@ -63,10 +63,12 @@ int run_estimate(const std::string& path, const std::string& max_memory) {
     std::cout << "          (the time of one solve; the run makes " << solves << ", one per "
               << (spec.load_step_points.empty() ? "sweep point" : "load step") << ")\n";
   const ProblemCount count = admission.estimate->count();
+  // An adaptive accuracy loop keeps the same bisection hierarchy as an adaptive run.
+  const bool bisection = adaptive || (spec.accuracy && spec.accuracy->adaptive);
   for (const MethodInfo& m : solver_methods()) {
     if (!runs_in(m.method, count.dimension)) continue;
-    const auto e = adaptive ? estimate_adaptive_resources(count.unknowns, count, m.method)
-                            : estimate_resources(count, m.method);
+    const auto e = bisection ? estimate_adaptive_resources(count.unknowns, count, m.method)
+                             : estimate_resources(count, m.method);
     const auto seconds = estimated_seconds(count, m.method);
     const std::string time = seconds ? describe_seconds(*seconds) : "time not estimated";
     std::printf("  %-6s %8.0f MiB  %s\n", m.name, e.memory_bytes / (1 << 20), time.c_str());

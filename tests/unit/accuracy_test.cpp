@@ -9,6 +9,7 @@
 #include <cmath>
 
 #include "../case_errors.hpp"
+#include "case/admission/case_admission.hpp"
 #include "case/format/case_reader.hpp"
 #include "case/strategy/adaptive_runner.hpp"
 #include "case/strategy/force_accuracy.hpp"
@@ -278,6 +279,49 @@ TEST(AccuracySection, RefusedWithAdaptivitySweepLoadStepsAndWithoutContact) {
   no_contact["accuracy"] = {{"force", 1e-3}};
   no_contact["boundary"]["bottom"] = {{"type", "neumann"}, {"traction", {0, 0}}};
   EXPECT_TRUE(has_error(read_case(no_contact), "/accuracy", "no contact"));
+}
+
+}  // namespace
+}  // namespace fosls
+
+namespace fosls {
+namespace {
+
+/// The admission of an accuracy case with max_dofs `times` the first level's unknowns.
+CaseAdmission admitted_accuracy(const char* refinement, double times, const char* method) {
+  json j = contact_case();
+  j["solver"] = {{"method", method}};
+  const CaseAdmission first = admit_case(j);
+  const long long unknowns = first.estimate->unknowns;
+  j["accuracy"] = {{"force", 1e-3},
+                   {"refinement", refinement},
+                   {"max_dofs", static_cast<long long>(times * unknowns)}};
+  return admit_case(j);
+}
+
+bool refused_at(const CaseAdmission& a, const std::string& pointer) {
+  return std::any_of(a.errors.begin(), a.errors.end(),
+                     [&](const CaseError& e) { return e.pointer == pointer; });
+}
+
+TEST(AccuracyAdmission, AnAdaptiveLoopNeedsTwiceTheUnknownsAUniformOneTwoAndAHalfTimes) {
+  EXPECT_TRUE(refused_at(admitted_accuracy("uniform", 2.2, "mmg"), "/accuracy/max_dofs"));
+  EXPECT_FALSE(refused_at(admitted_accuracy("adaptive", 2.2, "mmg"), "/accuracy/max_dofs"));
+  const CaseAdmission tight = admitted_accuracy("adaptive", 1.8, "mmg");
+  ASSERT_TRUE(refused_at(tight, "/accuracy/max_dofs"));
+  for (const CaseError& e : tight.errors)
+    if (e.pointer == "/accuracy/max_dofs")
+      EXPECT_NE(e.detail.find("twice as many"), std::string::npos) << e.detail;
+}
+
+TEST(AccuracyAdmission, AnAdaptiveLoopIsPricedWithTheBisectionHierarchy) {
+  // mmg keeps every bisection level (adaptivity's kAdaptiveHierarchyFactor); uniform levels
+  // hold about 4/3 of the finest.
+  const CaseAdmission adaptive = admitted_accuracy("adaptive", 40, "mmg");
+  const CaseAdmission uniform = admitted_accuracy("uniform", 40, "mmg");
+  ASSERT_TRUE(adaptive.estimate && uniform.estimate);
+  EXPECT_EQ(adaptive.estimate->limited_by, "/accuracy/max_dofs");
+  EXPECT_GT(adaptive.estimate->memory_bytes, uniform.estimate->memory_bytes);
 }
 
 }  // namespace

@@ -49,6 +49,18 @@ TEST(CliEstimate, AdaptiveRowsUseTheAdaptiveRuleOfTheMemoryLine) {
   EXPECT_NE(out.find("an adaptive run solves every one of its up to"), std::string::npos) << out;
 }
 
+TEST(CliEstimate, AnAdaptiveAccuracyLoopsRowsUseTheRuleOfTheMemoryLine) {
+  nlohmann::json j = fosls::testing::load_shipped_example("hertz_accuracy");
+  j["accuracy"]["refinement"] = "adaptive";
+  j["accuracy"]["max_dofs"] = 200000;
+  int status = -1;
+  const std::string out = estimate(j, "adaptive_accuracy", status);
+  ASSERT_EQ(status, 0) << out;
+  std::smatch m;
+  ASSERT_TRUE(std::regex_search(out, m, std::regex("memory: +about ([0-9.]+) MiB"))) << out;
+  EXPECT_NEAR(row_mib(out, "mmg"), std::stod(m[1]), 1.0) << out;
+}
+
 TEST(CliEstimate, LongTimesReadInMinutes) {
   nlohmann::json j = fosls::testing::load_shipped_example("signorini_square");
   j["mesh"]["refinements"] = 7;  // 2.1 M unknowns: pdas takes minutes

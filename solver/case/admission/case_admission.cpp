@@ -9,6 +9,7 @@
 #include "case/format/solver_methods.hpp"
 #include "case/run/mesh_factory.hpp"
 #include "case/run/volume_mesh_checks.hpp"
+#include "case/strategy/force_accuracy.hpp"
 #include "mesh/coarse_mesh_estimate.hpp"
 #include "mesh/geometry_checks.hpp"
 #include "mesh/group_name_index.hpp"
@@ -103,14 +104,20 @@ std::vector<CaseError> check_size(const CaseSpec& spec, const ProblemCount& coun
   const bool from_gmsh = spec.dimension == 3 ? spec.mesh.kind == MeshSpec::Kind::kGeoFile
                                              : gmsh_outline(spec.mesh).has_value();
   const std::string built = exact && from_gmsh ? "counted on the coarse mesh gmsh built: " : "";
-  if (spec.accuracy && spec.accuracy->max_dofs < kAccuracyLeastGrowth * unknowns)
+  // Uniform levels grow by 2.8–4; an adaptive estimate needs a level with kAdaptiveSpan times
+  // the first's unknowns (force_accuracy.hpp).
+  const bool adaptive = spec.accuracy && spec.accuracy->adaptive;
+  if (spec.accuracy &&
+      spec.accuracy->max_dofs < (adaptive ? kAdaptiveSpan : kAccuracyLeastGrowth) * unknowns)
     errors.push_back({"/accuracy/max_dofs",
                       std::to_string(spec.accuracy->max_dofs) +
                           " leaves no second level: the first (" +
                           std::to_string(spec.mesh.refinements) + " refinements) has " +
-                          (exact ? "" : "about ") + std::to_string(unknowns) +
-                          " DOFs and the next about 4 times as many, and the error estimate needs "
-                          "two levels; raise accuracy.max_dofs or lower mesh.refinements"});
+                          (exact ? "" : "about ") + std::to_string(unknowns) + " DOFs and " +
+                          (adaptive ? "the error estimate needs a level with twice as many"
+                                    : "the next about 4 times as many, and the error estimate "
+                                      "needs two levels") +
+                          "; raise accuracy.max_dofs or lower mesh.refinements"});
   if (unknowns > limits.max_dofs)
     errors.push_back(
         {"/mesh/refinements", built + std::to_string(spec.mesh.refinements) +
@@ -139,7 +146,13 @@ ResourceEstimate admission_estimate(const CaseSpec& spec, const ProblemCount& co
         estimate_adaptive_resources(spec.adaptivity->max_dofs, count, spec.solver.method);
     if (adaptive.memory_bytes > estimate.memory_bytes) estimate = adaptive;
   }
-  // The accuracy loop may refine up to its largest level below accuracy.max_dofs.
+  // An adaptive accuracy loop bisects up to accuracy.max_dofs, with adaptivity's hierarchy.
+  if (spec.accuracy && spec.accuracy->adaptive) {
+    estimate = estimate_adaptive_resources(spec.accuracy->max_dofs, count, spec.solver.method);
+    estimate.limited_by = "/accuracy/max_dofs";
+    return estimate;
+  }
+  // A uniform one may refine up to its largest level below accuracy.max_dofs.
   if (spec.accuracy) {
     const long long largest = accuracy_largest_unknowns(count.unknowns, spec.accuracy->max_dofs);
     if (largest > count.unknowns) {
