@@ -29,19 +29,27 @@ void set_kink_weights(const FrictionLayout& layout, const std::vector<double>& b
   }
 }
 
-double set_friction_bounds(const FrictionLayout& layout, const Vector& x, BoxQp& qp, Kinks& kinks) {
+double set_friction_bounds(const FrictionLayout& layout, const Vector& x, BoxQp& qp, Kinks& kinks,
+                           const BoundChoice& choose) {
+  const std::size_t n = layout.edges.size();
   double largest = 0.0, change = 0.0;
   bool first = false;
-  std::vector<double> bounds(layout.edges.size());
-  for (std::size_t e = 0; e < layout.edges.size(); ++e) {
+  Vector before(n), at_x(n);
+  for (std::size_t e = 0; e < n; ++e) {
     const FrictionEdge& f = layout.edges[e];
     const double s = slip_bound(f, x);
     first |= !is_bounded_above(qp.upper[f.st]);
     if (is_bounded_above(qp.upper[f.st])) change = std::max(change, std::abs(s - qp.upper[f.st]));
     largest = std::max(largest, s);
-    qp.lower[f.st] = -s;
-    qp.upper[f.st] = s;
-    bounds[e] = s;
+    before[e] = qp.upper[f.st];
+    at_x[e] = s;
+  }
+  const Vector set = choose ? choose(before, at_x, first) : at_x;
+  std::vector<double> bounds(n);
+  for (std::size_t e = 0; e < n; ++e) {
+    qp.lower[layout.edges[e].st] = -set[e];
+    qp.upper[layout.edges[e].st] = set[e];
+    bounds[e] = set[e];
   }
   set_kink_weights(layout, bounds, kinks);
   if (first) return 1.0;

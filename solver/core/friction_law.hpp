@@ -6,6 +6,7 @@
 // trapezoidal rule of C3 ∫_e s |Δu_t|/μ).
 
 #include <array>
+#include <functional>
 #include <vector>
 
 #include "core/box_qp.hpp"
@@ -40,9 +41,15 @@ double slip_bound(const FrictionEdge& f, const Vector& x);
 void set_kink_weights(const FrictionLayout& layout, const std::vector<double>& bounds,
                       Kinks& kinks);
 
-/// Sets ±s̄_e on S_t in `qp` and the kink weights for the slip bounds at x. Returns the largest
-/// change of an s̄_e relative to the largest s̄_e (1 the first time).
-double set_friction_bounds(const FrictionLayout& layout, const Vector& x, BoxQp& qp, Kinks& kinks);
+/// Which bounds to set, from those set before (`s`) and the slip bounds at x (`g`); `first`:
+/// none was set before. Without one, g.
+using BoundChoice = std::function<Vector(const Vector& s, const Vector& g, bool first)>;
+
+/// Sets ±s̄_e on S_t in `qp` and the kink weights for the slip bounds at x (or what `choose`
+/// makes of them). Returns the largest change of an s̄_e at x from the bound set before,
+/// relative to the largest s̄_e (1 the first time).
+double set_friction_bounds(const FrictionLayout& layout, const Vector& x, BoxQp& qp, Kinks& kinks,
+                           const BoundChoice& choose = {});
 
 /// The friction term C3 Σ_e S_t (ΔU_t,p + ΔU_t,q)/2 + the kinks at the free DOFs x.
 double friction_functional(const FrictionLayout& layout, const Kinks& kinks, const Vector& x);

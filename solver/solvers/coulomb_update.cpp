@@ -19,28 +19,12 @@ CoulombUpdate::CoulombUpdate(BoxQp& qp, const FrictionLayout& layout, Kinks& kin
       bounds_(layout.edges.size()) {}
 
 double CoulombUpdate::set_bounds(const Vector& x) {
-  const std::size_t n = layout_.edges.size();
-  Vector s(n), g(n);
-  bool first = false;
-  for (std::size_t e = 0; e < n; ++e) {
-    const FrictionEdge& f = layout_.edges[e];
-    g[e] = slip_bound(f, x);
-    s[e] = qp_.upper[f.st];
-    first |= !is_bounded_above(s[e]);
-  }
-  if (first) extrapolation_.reset();
-  const Vector next = first ? g : extrapolation_.next(s, g);
-  std::vector<double> bounds(n);
-  for (std::size_t e = 0; e < n; ++e) {
-    const int i = layout_.edges[e].st;
-    qp_.lower[i] = -next[e];
-    qp_.upper[i] = next[e];
-    bounds[e] = next[e];
-  }
-  set_kink_weights(layout_, bounds, kinks_);
-  if (first) return 1.0;
-  const double largest = g.maxCoeff();
-  return largest > 0.0 ? (g - s).cwiseAbs().maxCoeff() / largest : 0.0;
+  return set_friction_bounds(layout_, x, qp_, kinks_,
+                             [this](const Vector& s, const Vector& g, bool first) -> Vector {
+                               if (!first) return extrapolation_.next(s, g);
+                               extrapolation_.reset();
+                               return g;
+                             });
 }
 
 double CoulombUpdate::residual(const Vector& x, const Vector& r, double sided_kkt) const {
