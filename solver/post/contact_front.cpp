@@ -48,10 +48,10 @@ std::vector<Point3> seen_at(const Point3& x, const Point3& c, const std::vector<
 /// p² at vertex v from the plane fitted by least squares through the p² of the loaded faces
 /// that share a vertex with v's faces (and their mirror images), in v's tangent coordinates. A
 /// vertex whose own faces are all loaded lies inside the zone however its fit turns out;
-/// kOutside without three loaded faces to fit.
+/// kOutside without three loaded faces to fit. A vertex within `tolerance` of a mirror is on it.
 double squared_pressure_at(const TetMesh& mesh, const VertexFaces& at, int v,
                            const std::vector<double>& pressure,
-                           const std::vector<MirrorPlane>& mirrors) {
+                           const std::vector<MirrorPlane>& mirrors, double tolerance) {
   const std::vector<int>& own = at.at(v);
   std::set<int> near;
   Point3 normal = Point3::Zero();
@@ -65,7 +65,6 @@ double squared_pressure_at(const TetMesh& mesh, const VertexFaces& at, int v,
   const auto [t1, t2] = tangents(normal.normalized());
   Eigen::Matrix3d normal_matrix = Eigen::Matrix3d::Zero();
   Eigen::Vector3d rhs = Eigen::Vector3d::Zero();
-  const double tolerance = 1e-9 * mesh.diameter();
   for (int f : near)
     for (const Point3& c : seen_at(mesh.vertex(v), mesh.face_centroid(f), mirrors, tolerance)) {
       const Point3 d = c - mesh.vertex(v);
@@ -107,11 +106,13 @@ double area_within_front(const TetMesh& mesh, const std::vector<int>& faces,
                          const std::vector<double>& pressure,
                          const std::vector<MirrorPlane>& mirrors) {
   const VertexFaces at = faces_at_vertices(mesh, faces);
+  // Once, not per vertex: the diameter reads every vertex of the mesh.
+  const double tolerance = 1e-9 * mesh.diameter();
   std::map<int, double> q;
   for (int f : faces)
     if (pressure[f] > 0)
       for (int v : mesh.face(f))
-        if (!q.count(v)) q[v] = squared_pressure_at(mesh, at, v, pressure, mirrors);
+        if (!q.count(v)) q[v] = squared_pressure_at(mesh, at, v, pressure, mirrors, tolerance);
   double area = 0.0;
   for (int f : faces) {
     if (!(pressure[f] > 0)) continue;
