@@ -5,7 +5,7 @@
 #include <cmath>
 #include <limits>
 
-#include "case/strategy/adaptive_runner.hpp"
+#include "strategy/level_loop.hpp"
 
 namespace fosls::testing {
 
@@ -14,8 +14,8 @@ struct StepEnergyCounter {
   double last_energy = 0.0;
 
   /// Refers to this counter, which must outlive the solve.
-  CaseSolveObserver observer() {
-    CaseSolveObserver o;
+  LevelLoopObserver observer() {
+    LevelLoopObserver o;
     o.on_step = [this](int, long long) { last_energy = std::numeric_limits<double>::infinity(); };
     o.solver.on_sweep = [this](double energy) {
       if (energy > last_energy + 1e-13 * (std::abs(last_energy) + 1.0)) ++increases;

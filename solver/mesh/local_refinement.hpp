@@ -1,5 +1,5 @@
 #pragma once
-// The refinement steps of the adaptive and accuracy loops (case/strategy/adaptive_runner.hpp) under
+// The refinement steps of the adaptive and accuracy loops (strategy/level_loop.hpp) under
 // one set of names for both dimensions: newest-vertex bisection of triangles (bisection.hpp) and of
 // tetrahedra (tet_bisection.hpp), and the uniform refinement of either. The algorithms stay in
 // their own files because the geometry differs; the loop that calls them is written once.

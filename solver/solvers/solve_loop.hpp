@@ -26,6 +26,10 @@ enum class SolverMethod {
   kPgs,    ///< single-level projected Gauss–Seidel (pointwise or patch)
 };
 
+/// The method works on a level hierarchy: pdas solves the finest level directly and needs none
+/// (pgs's patches are the finest level's of the hierarchy).
+inline bool needs_level_hierarchy(SolverMethod method) { return method != SolverMethod::kPdas; }
+
 /// When a solve has converged (docs/method.md §5.1).
 enum class StoppingRule {
   kKktResidual,     ///< kkt_k ≤ tolerance · kkt_0

@@ -4,7 +4,7 @@
 Two tables, in one run on this machine (docs/validation.md §14, docs/performance.md
 "Accuracy on demand"):
 
-1. **Efficiency** of the force error estimate (solver/case/strategy/force_accuracy.hpp): per level of the
+1. **Efficiency** of the force error estimate (solver/strategy/force_accuracy.hpp): per level of the
    accuracy loop (`"accuracy": {"force": 1e-9}`, which is never reached, so every level up to
    --finest is solved), the estimate, the true error against the reference and their ratio, for
    Hertz λ = 1 and ∞, the Signorini square λ = 1 and ∞ and the L-shaped corner case.

@@ -1,4 +1,4 @@
-// The one adaptive loop of case/strategy/adaptive_runner.hpp in 3D (issues 47, 48): the Signorini
+// The one adaptive loop of strategy/level_loop.hpp in 3D (issues 47, 48): the Signorini
 // block of tests/tet_problems.hpp solved, estimated, marked (Dörfler) and bisected
 // (tet_bisection.hpp) three times. On every adapted level mmg keeps J non-increasing and every
 // iterate feasible after every smoother sweep and coarse correction, each step's solve converges in
@@ -13,7 +13,8 @@
 #include "../step_energy_counter.hpp"
 #include "../sweep_checks.hpp"
 #include "../tet_problems.hpp"
-#include "case/strategy/adaptive_runner.hpp"
+#include "case/run/level_loop_options.hpp"
+#include "strategy/level_loop.hpp"
 
 namespace fosls {
 namespace {
@@ -42,8 +43,9 @@ TEST(AdaptiveLoop3d, MonotoneFeasibleBoundedAndTheEstimatorDecreases) {
   const ProblemData<3> data = testing::signorini_block(1.0);
   // J after every fine-level sweep of every step's solve: non-increasing within a step.
   testing::StepEnergyCounter energy;
-  const CaseSolutionOf<3> s = solve_case_levels<3>(build_tet_hierarchy(make_box({2, 2, 2}), 1),
-                                                   data, adaptive_spec(3), energy.observer());
+  const LevelSolution<3> s =
+      solve_levels<3>(build_tet_hierarchy(make_box({2, 2, 2}), 1), data,
+                      level_loop_options(adaptive_spec(3)), energy.observer());
   EXPECT_EQ(s.stop_reason, "steps");
   ASSERT_EQ(s.steps.size(), 4u);
   EXPECT_GT(energy.sweeps, 0);
@@ -86,15 +88,15 @@ TEST(AccuracyLoop3d, TheForceErrorEstimateBoundsTheErrorAgainstAFinerLevel) {
   a.max_dofs = 100'000;
   a.adaptive = false;  // the uniform levels, whose refinement 3 is the reference
   spec.accuracy = a;
-  const CaseSolutionOf<3> s =
-      solve_case_levels<3>(build_tet_hierarchy(make_box({2, 2, 2}), 0), data, spec);
+  const LevelSolution<3> s =
+      solve_levels<3>(build_tet_hierarchy(make_box({2, 2, 2}), 0), data, level_loop_options(spec));
   EXPECT_EQ(s.stop_reason, "max_dofs");
   ASSERT_EQ(s.steps.size(), 3u);  // refinements 0 to 2
   // The reference: refinement 3 solved on its own.
   CaseSpec plain;
   plain.dimension = 3;
-  const CaseSolutionOf<3> fine =
-      solve_case_levels<3>(build_tet_hierarchy(make_box({2, 2, 2}), 3), data, plain);
+  const LevelSolution<3> fine =
+      solve_levels<3>(build_tet_hierarchy(make_box({2, 2, 2}), 3), data, level_loop_options(plain));
   const double reference = fine.force[2];
   for (std::size_t k = 1; k < s.steps.size(); ++k) {
     const AdaptiveStepRecord& r = s.steps[k];

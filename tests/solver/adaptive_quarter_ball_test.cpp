@@ -19,10 +19,11 @@
 #include "../step_energy_counter.hpp"
 #include "case/format/case_reader.hpp"
 #include "case/run/case_problem_data.hpp"
+#include "case/run/level_loop_options.hpp"
 #include "case/run/volume_mesh_checks.hpp"
-#include "case/strategy/adaptive_runner.hpp"
 #include "mesh/length_scale.hpp"
 #include "mesh/tet_refinement.hpp"
+#include "strategy/level_loop.hpp"
 
 namespace fosls {
 namespace {
@@ -48,8 +49,8 @@ TEST(AdaptiveQuarterBall, TheNinthBisectionStepSolvesMonotoneAndFeasible) {
   choose_contact_weight<3>(spec, meshes, data);
 
   testing::StepEnergyCounter energy;
-  const CaseSolutionOf<3> s =
-      solve_case_levels<3>(std::move(meshes), data, spec, energy.observer());
+  const LevelSolution<3> s =
+      solve_levels<3>(std::move(meshes), data, level_loop_options(spec), energy.observer());
   EXPECT_EQ(s.stop_reason, "steps");
   ASSERT_EQ(s.steps.size(), 10u);
   EXPECT_GT(energy.sweeps, 0);
@@ -68,7 +69,7 @@ TEST(AdaptiveQuarterBall, TheNinthBisectionStepSolvesMonotoneAndFeasible) {
 }
 
 /// The shipped case as read, its accuracy request replaced by `force`.
-CaseSolutionOf<3> solved_shipped_accuracy(double force) {
+LevelSolution<3> solved_shipped_accuracy(double force) {
   nlohmann::json j = testing::load_shipped_example("3d/hertz_3d_accuracy");
   j["accuracy"]["force"] = force;
   const auto read = read_case(j);
@@ -80,7 +81,7 @@ CaseSolutionOf<3> solved_shipped_accuracy(double force) {
   TetHierarchy meshes = build_tet_hierarchy(std::move(coarse), spec.mesh.refinements);
   ProblemData<3> data = problem_data<3>(spec, meshes.finest());
   choose_contact_weight<3>(spec, meshes, data);
-  return solve_case_levels<3>(std::move(meshes), data, spec);
+  return solve_levels<3>(std::move(meshes), data, level_loop_options(spec));
 }
 
 // The shipped accuracy loop (adaptive in 3D by default), asked for 3 % to keep the test short
@@ -89,7 +90,7 @@ CaseSolutionOf<3> solved_shipped_accuracy(double force) {
 // ball's own force.
 TEST(AdaptiveQuarterBall, TheAccuracyLoopReachesThreePerCentAndItHolds) {
   const double tolerance = 0.03;
-  const CaseSolutionOf<3> s = solved_shipped_accuracy(tolerance);
+  const LevelSolution<3> s = solved_shipped_accuracy(tolerance);
   ASSERT_EQ(s.stop_reason, "reached");
   EXPECT_EQ(s.steps.size(), 7u);
   for (std::size_t k = 1; k < s.steps.size(); ++k)

@@ -1,5 +1,5 @@
 // The `accuracy` section and the estimate of the contact force's error from successive uniform
-// refinements (solver/case/strategy/force_accuracy.hpp): the estimate is exact on a geometric
+// refinements (solver/strategy/force_accuracy.hpp): the estimate is exact on a geometric
 // sequence of forces, the ratio is observed once three levels exist and limited to [2, 4], and the
 // section is read with its defaults, refused with what it cannot be combined with, and checked
 // value by value.
@@ -11,8 +11,8 @@
 #include "../case_errors.hpp"
 #include "case/admission/case_admission.hpp"
 #include "case/format/case_reader.hpp"
-#include "case/strategy/adaptive_runner.hpp"
-#include "case/strategy/force_accuracy.hpp"
+#include "case/result/level_loop_json.hpp"
+#include "strategy/force_accuracy.hpp"
 
 namespace fosls {
 namespace {
@@ -64,8 +64,9 @@ TEST(ForceErrorEstimate, AGrowingChangeGivesNoEstimate) {
   EXPECT_FALSE(e.available());
   AccuracySpec spec;
   spec.force = 0.05;
-  EXPECT_EQ(accuracy_stop_reason(e, spec, {{0.0, 0.0039854}, {0.0, 0.0039704}, {0.0, 0.0038799}}),
-            "");
+  EXPECT_EQ(
+      accuracy_stop_reason(e, spec.force, {{0.0, 0.0039854}, {0.0, 0.0039704}, {0.0, 0.0038799}}),
+      "");
 }
 
 TEST(ForceErrorEstimate, TheObservedRatioIsLimitedToTwoAndFour) {
@@ -167,19 +168,19 @@ TEST(AccuracyStopReason, ReachedNoForceOrGoOn) {
   spec.force = 1e-3;
   ForceErrorEstimate e;
   const Forces touching = {{0.0, 1.0}, {0.0, 1.0}};
-  EXPECT_EQ(accuracy_stop_reason(e, spec, {{0.0, 1.0}}), "");  // no estimate yet
+  EXPECT_EQ(accuracy_stop_reason(e, spec.force, {{0.0, 1.0}}), "");  // no estimate yet
   // A zero force on the first level may be a contact the coarse mesh misses: one more level.
-  EXPECT_EQ(accuracy_stop_reason(e, spec, {{0.0, 0.0}}), "");
-  EXPECT_EQ(accuracy_stop_reason(e, spec, {{0.0, 0.0}, {0.0, 1.0}}), "");
-  EXPECT_EQ(accuracy_stop_reason(e, spec, {{0.0, 0.0}, {0.0, 0.0}}), "no_force");
+  EXPECT_EQ(accuracy_stop_reason(e, spec.force, {{0.0, 0.0}}), "");
+  EXPECT_EQ(accuracy_stop_reason(e, spec.force, {{0.0, 0.0}, {0.0, 1.0}}), "");
+  EXPECT_EQ(accuracy_stop_reason(e, spec.force, {{0.0, 0.0}, {0.0, 0.0}}), "no_force");
   e.estimate = 2e-3;
-  EXPECT_EQ(accuracy_stop_reason(e, spec, touching), "");
+  EXPECT_EQ(accuracy_stop_reason(e, spec.force, touching), "");
   e.estimate = 1e-3;
-  EXPECT_EQ(accuracy_stop_reason(e, spec, touching), "reached");
+  EXPECT_EQ(accuracy_stop_reason(e, spec.force, touching), "reached");
 }
 
 TEST(AccuracyJson, AnUnconvergedLastLevelReportsTheEstimateBeforeIt) {
-  CaseSolution solution;
+  LevelSolution<2> solution;
   solution.stop_reason = "not_converged";
   for (int k = 0; k < 3; ++k) {
     AdaptiveStepRecord s;

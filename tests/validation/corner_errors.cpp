@@ -3,7 +3,7 @@
 // (docs/validation.md §11).
 //
 // Uniform: the coarse mesh and its red refinements. Adaptive: from the same coarse mesh, a loop
-// of the parts the case runner's loop uses (solver/case/strategy/adaptive_runner.hpp) — η_T² = the
+// of the parts the case runner's loop uses (solver/strategy/level_loop.hpp) — η_T² = the
 // functional on T, Dörfler marking with θ, newest-vertex bisection with closure — with every
 // discrete problem solved exactly by CHOLMOD (no contact: the problem is linear), so that the
 // error measured is the discretisation error alone. Per mesh: unknowns, J^½, the true error

@@ -9,10 +9,10 @@
 #include "case/format/solver_methods.hpp"
 #include "case/run/mesh_factory.hpp"
 #include "case/run/volume_mesh_checks.hpp"
-#include "case/strategy/force_accuracy.hpp"
 #include "mesh/coarse_mesh_estimate.hpp"
 #include "mesh/geometry_checks.hpp"
 #include "mesh/group_name_index.hpp"
+#include "strategy/force_accuracy.hpp"
 
 namespace fosls {
 

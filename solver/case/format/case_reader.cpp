@@ -8,7 +8,7 @@
 #include "case/format/dimension_support.hpp"
 #include "case/format/rule_checker.hpp"
 #include "case/format/units.hpp"
-#include "case/strategy/force_accuracy.hpp"
+#include "strategy/force_accuracy.hpp"
 
 namespace fosls {
 

@@ -19,8 +19,6 @@ struct MethodInfo {
   SolverMethod method;
   const char* name;     ///< the case's `solver.method`
   const char* summary;  ///< one line for docs and help
-  /// Builds the level hierarchy (pdas solves the finest level directly and needs none).
-  bool needs_hierarchy;
   /// A smoothing step per level is needed: pre_smoothing + post_smoothing ≥ 1.
   bool needs_smoothing;
   std::vector<SolverOption> options;  ///< the options it uses, in the order of the case

@@ -56,7 +56,7 @@ int most_solves(const CaseSpec& spec) {
 }
 
 RunOutput run_case(const CaseSpec& spec, const RunControl& control, const CaseLimits& limits) {
-  // Every solve of every point starts with on_step (solve_case_levels), so counting its calls
+  // Every solve of every point starts with on_step (solve_levels), so counting its calls
   // numbers the solves of the whole run; the series runners need not know.
   RunControl counted = control;
   int solves = 0;

@@ -6,13 +6,14 @@
 #include <optional>
 
 #include "case/result/contact_faces.hpp"
+#include "case/result/level_loop_json.hpp"
 #include "case/result/result_annotations.hpp"
 #include "case/result/result_json.hpp"
 #include "case/run/case_mesh.hpp"
 #include "case/run/case_problem_data.hpp"
 #include "case/run/indefinite_weights.hpp"
+#include "case/run/level_loop_options.hpp"
 #include "case/run/solve_observer.hpp"
-#include "case/strategy/adaptive_runner.hpp"
 #include "core/indefinite_system.hpp"
 #include "core/peak_memory.hpp"
 #include "mesh/length_scale.hpp"
@@ -39,7 +40,7 @@ std::vector<Point> vertex_displacements(const FoslsSpace<2>& space, const Vector
 }
 
 template <int dim>
-ProblemSize problem_size(const CaseSolutionOf<dim>& solution) {
+ProblemSize problem_size(const LevelSolution<dim>& solution) {
   const SimplexMesh<dim>& finest = solution.disc->meshes().finest();
   ProblemSize size;
   size.levels = solution.disc->num_levels();
@@ -55,7 +56,7 @@ ProblemSize problem_size(const CaseSolutionOf<dim>& solution) {
 
 /// The VTU of the last solve.
 template <int dim>
-std::string vtu_text(const CaseSolutionOf<dim>& s, const RunControl& control) {
+std::string vtu_text(const LevelSolution<dim>& s, const RunControl& control) {
   const Discretization<dim>& disc = *s.disc;
   const VtuEncoding encoding = control.vtu_ascii ? VtuEncoding::kAscii : VtuEncoding::kBinary;
   if constexpr (dim == 2)
@@ -67,7 +68,7 @@ std::string vtu_text(const CaseSolutionOf<dim>& s, const RunControl& control) {
 
 /// Step 5: the result of the last solve, with the dimension's contact output and warnings.
 template <int dim>
-void write_result(RunOutput& out, const CaseSpec& used, const CaseSolutionOf<dim>& solution,
+void write_result(RunOutput& out, const CaseSpec& used, const LevelSolution<dim>& solution,
                   const RunTiming& timing, const RunMemory& memory) {
   const Discretization<dim>& disc = *solution.disc;
   const auto result = [&](nlohmann::json contact) {
@@ -116,10 +117,10 @@ RunOutput run_point(const CaseSpec& spec, const RunControl& control, const CaseL
   RunMemory memory;
   memory.mesh_mib = peak_rss_mib();
   choose_contact_weight<dim>(used, meshes, data);
-  CaseSolutionOf<dim> solution;
+  LevelSolution<dim> solution;
   try {
-    solution = solve_case_levels<dim>(std::move(meshes), data, spec,
-                                      solve_observer(control, deadline), control.start);
+    solution = solve_levels<dim>(std::move(meshes), data, level_loop_options(spec),
+                                 solve_observer(control, deadline), control.start);
   } catch (const IndefiniteSystemError& e) {
     // Positive definiteness failing inside a solver is the user's weights, not a crash.
     throw indefinite_weights<dim>(used, coarse_mesh, data, e.what());

@@ -2,8 +2,8 @@
 
 namespace fosls {
 
-CaseSolveObserver solve_observer(const RunControl& control, const Deadline& deadline) {
-  CaseSolveObserver observer;
+LevelLoopObserver solve_observer(const RunControl& control, const Deadline& deadline) {
+  LevelLoopObserver observer;
   if (control.on_iteration) observer.solver.on_iteration = control.on_iteration;
   if (control.cancel)
     observer.solver.cancelled = [&control] {

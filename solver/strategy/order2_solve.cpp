@@ -1,10 +1,9 @@
-#include "case/strategy/order2_solve.hpp"
+#include "strategy/order2_solve.hpp"
 
 #include <chrono>
 
 #include "assembly/p2_rt1_assembler.hpp"
 #include "assembly/p2_rt1_level.hpp"
-#include "case/format/solver_methods.hpp"
 #include "core/peak_memory.hpp"
 
 namespace fosls {
@@ -18,7 +17,7 @@ Order2Solution solve_order2(const Discretization<2>& lowest, const P2Rt1Space& s
   const AssembledProblem problem = assembler.assemble_system();
   out.assembly_mib = peak_rss_mib();
   LevelHierarchy hierarchy;
-  if (method_info(options.method).needs_hierarchy) {
+  if (needs_level_hierarchy(options.method)) {
     hierarchy = lowest.build_level_hierarchy();
     hierarchy.levels.push_back(order2_level(lowest.finest_space(), space));
   }

@@ -1,11 +1,13 @@
-// What an adaptive run's result says about how it ended (adaptive_runner.hpp): the estimator's
-// reduction, the last step's change of the force, and a sentence saying why the loop stopped
-// and what adaptivity.target means (a reduction of the estimator, not an accuracy).
+// The result's `adaptivity` object (level_loop_json.hpp): the steps, and what the result says
+// about how the loop ended: the estimator's reduction, the last step's change of the force, and
+// a sentence saying why the loop stopped and what adaptivity.target means (a reduction of the
+// estimator, not an accuracy).
 
 #include <cmath>
 
+#include "case/result/level_loop_json.hpp"
 #include "case/result/result_warnings.hpp"
-#include "case/strategy/adaptive_runner.hpp"
+#include "solvers/solve_loop.hpp"
 
 namespace fosls {
 
@@ -45,8 +47,7 @@ std::string why(const std::string& reason, const AdaptivitySpec& a) {
   return reason;
 }
 
-}  // namespace
-
+/// Adds estimator_reduction, last_force_change and stop_message to an adaptivity object.
 void add_adaptive_summary(nlohmann::json& adaptivity, const std::vector<AdaptiveStepRecord>& steps,
                           const std::string& stop_reason, const AdaptivitySpec& spec) {
   if (steps.empty()) return;
@@ -61,6 +62,37 @@ void add_adaptive_summary(nlohmann::json& adaptivity, const std::vector<Adaptive
   m += ". adaptivity.target is such a reduction of the estimator (an energy-type error of the "
        "whole solution), not the relative accuracy of the force or the pressure";
   adaptivity["stop_message"] = m;
+}
+
+}  // namespace
+
+nlohmann::json adaptivity_json(const std::vector<AdaptiveStepRecord>& records,
+                               const std::string& stop_reason, const AdaptivitySpec& spec,
+                               int dim) {
+  nlohmann::json steps = nlohmann::json::array();
+  for (const AdaptiveStepRecord& s : records)
+    steps.push_back(
+        {{"step", s.step},
+         {"levels", s.levels},
+         {"dofs", s.dofs},
+         {"dofs_total", s.dofs_total},
+         {dim == 2 ? "triangles" : "tetrahedra", s.cells},
+         {"estimator", s.estimator},
+         {"force", s.force},
+         {"iterations", s.iterations},
+         {"converged", s.converged},
+         {"converged_by", converged_by_name(s.converged_by)},
+         {"algebraic_error",
+          std::isfinite(s.algebraic_error) ? nlohmann::json(s.algebraic_error) : nlohmann::json()},
+         {"marked", s.marked},
+         {"time_s", s.time_s}});
+  nlohmann::json a = {{"theta", spec.theta},
+                      {"max_dofs", spec.max_dofs},
+                      {"target", spec.target},
+                      {"stop_reason", stop_reason},
+                      {"steps", steps}};
+  add_adaptive_summary(a, records, stop_reason, spec);
+  return a;
 }
 
 }  // namespace fosls

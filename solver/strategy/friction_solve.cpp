@@ -1,4 +1,4 @@
-#include "case/strategy/friction_solve.hpp"
+#include "strategy/friction_solve.hpp"
 
 namespace fosls {
 

@@ -10,14 +10,10 @@
 // (estimate_adaptive_force_error).
 
 #include <limits>
-#include <nlohmann/json.hpp>
 #include <string>
 #include <vector>
 
 namespace fosls {
-
-struct AdaptiveStepRecord;
-struct AccuracySpec;
 
 /// A force's components: 2 in 2D, 3 in 3D.
 using ForceComponents = std::vector<double>;
@@ -70,15 +66,10 @@ ForceErrorEstimate estimate_force_error(const std::vector<ForceComponents>& forc
 ForceErrorEstimate estimate_adaptive_force_error(const std::vector<ForceComponents>& forces,
                                                  const std::vector<long long>& dofs, int dim);
 
-/// Why the run stops after the last of `forces` (`reached`; `no_force` when it and the level
-/// before are zero), or empty to refine on.
-std::string accuracy_stop_reason(const ForceErrorEstimate& e, const AccuracySpec& spec,
+/// Why the run stops after the last of `forces` (`reached` with an estimate within `tolerance`;
+/// `no_force` when it and the level before are zero), or empty to refine on.
+std::string accuracy_stop_reason(const ForceErrorEstimate& e, double tolerance,
                                  const std::vector<ForceComponents>& forces);
-
-/// The result's `accuracy` object (docs/result-format.md) from the loop's levels and why it
-/// stopped (the template of adaptive_runner.hpp takes them from a solution).
-nlohmann::json accuracy_json(const std::vector<AdaptiveStepRecord>& steps,
-                             const std::string& stop_reason, const AccuracySpec& spec);
 
 /// |F|: std::hypot of the 2 or 3 components (2D's hypot(x, y) exactly).
 double force_norm(const ForceComponents& f);

@@ -1,32 +1,32 @@
 #pragma once
-// The solve of a case on its levels, in 2D and 3D: once on the uniformly refined hierarchy, or,
-// with an `adaptivity` section, the adaptive loop
+// The solve of a problem on its levels, in 2D and 3D: once on the uniformly refined hierarchy,
+// or, with adaptivity options, the adaptive loop
 //   solve → estimate (η_T² = the functional on T) → mark (Dörfler) → refine (newest-vertex
 //   bisection of triangles or tetrahedra) → solve again from the prolongated solution
 // in which every bisection step is one more level of the nested hierarchy that the multilevel
 // solvers cycle on (coarse mesh, its uniform refinements, then the adapted meshes), or, with an
-// `accuracy` section, the same loop on bisection steps (3D's default) or uniform refinements
-// until the force's estimated error is within its tolerance. Written once for both dimensions;
-// what stays 2D (order 2, friction inside the loop) is refused in 3D when the case is read
-// (dimension_support.cpp).
+// accuracy options, the same loop on bisection steps or uniform refinements until the force's
+// estimated error is within its tolerance. Written once for both dimensions; what stays 2D
+// (order 2, friction inside the loop) is refused in 3D when a case is read
+// (case/format/dimension_support.cpp). This layer knows no case: the case layer turns its
+// sections into LevelLoopOptions and the records below into the result's JSON.
 
 #include <functional>
 #include <memory>
-#include <nlohmann/json.hpp>
 #include <string>
 #include <vector>
 
 #include "assembly/discretization.hpp"
-#include "case/format/case_spec.hpp"
-#include "case/strategy/force_accuracy.hpp"
 #include "core/deadline.hpp"
 #include "fem/p2_rt1_space.hpp"
 #include "mesh/simplex_mesh.hpp"
 #include "post/contact_output.hpp"
+#include "strategy/force_accuracy.hpp"
+#include "strategy/level_loop_options.hpp"
 
 namespace fosls {
 
-/// One solve of the adaptive loop (docs/result-format.md, `adaptivity.steps`).
+/// One solve of the loop (docs/result-format.md: a step of `adaptivity.steps` or `accuracy.steps`).
 struct AdaptiveStepRecord {
   int step = 0;
   int levels = 0;
@@ -47,7 +47,7 @@ struct AdaptiveStepRecord {
 
 /// The solution on the finest level, and how it was reached.
 template <int dim>
-struct CaseSolutionOf {
+struct LevelSolution {
   std::unique_ptr<Discretization<dim>> disc;
   /// mesh.order 2 (2D only): the order-2 space on disc's finest mesh (docs/method.md §10);
   /// then x is its free DOFs, and full the lowest-order interpolant that the output is written
@@ -72,10 +72,8 @@ struct CaseSolutionOf {
   double assembly_mib = 0.0, hierarchy_mib = 0.0;
 };
 
-using CaseSolution = CaseSolutionOf<2>;
-
 /// Observers of the loop; every member is optional.
-struct CaseSolveObserver {
+struct LevelLoopObserver {
   SolverObserver solver;
   /// Before each solve: the step (0 for the first) and the unknowns of its level.
   std::function<void(int step, long long dofs)> on_step;
@@ -85,32 +83,14 @@ struct CaseSolveObserver {
   Deadline deadline;
 };
 
-/// Solves on `meshes` and, when the case asks for it, adapts. `start`, when given and of the
-/// finest level's size, is the first solve's initial iterate (continuation; no nested
-/// iteration then). Throws IndefiniteSystemError when the weights make the matrix indefinite.
+/// Solves on `meshes` and, when `options` ask for it, adapts or refines to an accuracy. `start`,
+/// when given and of the finest level's size, is the first solve's initial iterate
+/// (continuation; no nested iteration then). Throws IndefiniteSystemError when the weights make
+/// the matrix indefinite.
 template <int dim>
-CaseSolutionOf<dim> solve_case_levels(SimplexHierarchy<dim> meshes, const ProblemData<dim>& data,
-                                      const CaseSpec& spec, const CaseSolveObserver& observer = {},
-                                      const Vector* start = nullptr);
-
-/// The result's `adaptivity` object (docs/result-format.md): its steps count `triangles` in 2D
-/// and `tetrahedra` in 3D.
-nlohmann::json adaptivity_json(const std::vector<AdaptiveStepRecord>& steps,
-                               const std::string& stop_reason, const AdaptivitySpec& spec, int dim);
-template <int dim>
-nlohmann::json adaptivity_json(const CaseSolutionOf<dim>& solution, const AdaptivitySpec& spec) {
-  return adaptivity_json(solution.steps, solution.stop_reason, spec, dim);
-}
-
-/// The result's `accuracy` object (force_accuracy.hpp).
-template <int dim>
-nlohmann::json accuracy_json(const CaseSolutionOf<dim>& solution, const AccuracySpec& spec) {
-  return accuracy_json(solution.steps, solution.stop_reason, spec);
-}
-
-/// Adds estimator_reduction, last_force_change and stop_message to an adaptivity object
-/// (adaptive_summary.cpp).
-void add_adaptive_summary(nlohmann::json& adaptivity, const std::vector<AdaptiveStepRecord>& steps,
-                          const std::string& stop_reason, const AdaptivitySpec& spec);
+LevelSolution<dim> solve_levels(SimplexHierarchy<dim> meshes, const ProblemData<dim>& data,
+                                const LevelLoopOptions& options,
+                                const LevelLoopObserver& observer = {},
+                                const Vector* start = nullptr);
 
 }  // namespace fosls

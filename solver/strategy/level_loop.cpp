@@ -1,4 +1,4 @@
-#include "case/strategy/adaptive_runner.hpp"
+#include "strategy/level_loop.hpp"
 
 #include <algorithm>
 #include <chrono>
@@ -7,14 +7,13 @@
 #include "assembly/definiteness.hpp"
 #include "assembly/error_indicators.hpp"
 #include "assembly/solution_prolongation.hpp"
-#include "case/format/solver_methods.hpp"
-#include "case/strategy/friction_solve.hpp"
-#include "case/strategy/order2_solve.hpp"
 #include "core/indefinite_system.hpp"
 #include "core/peak_memory.hpp"
 #include "mesh/local_refinement.hpp"
 #include "post/contact_force.hpp"
 #include "solvers/solve_loop.hpp"
+#include "strategy/friction_solve.hpp"
+#include "strategy/order2_solve.hpp"
 
 namespace fosls {
 
@@ -45,8 +44,8 @@ long long dofs_total(const SimplexMeshType& mesh, int order) {
 
 /// The order-2 branch of solve_finest: the solve, and the solution's output from its
 /// lowest-order interpolant.
-void solve_finest_order2(CaseSolutionOf<2>& solution, const SolverOptions& options,
-                         const CaseSolveObserver& observer) {
+void solve_finest_order2(LevelSolution<2>& solution, const SolverOptions& options,
+                         const LevelLoopObserver& observer) {
   const auto t0 = Clock::now();
   const Discretization<2>& disc = *solution.disc;
   Order2Solution s = solve_order2(disc, *solution.order2, options, observer.solver);
@@ -65,7 +64,7 @@ void solve_finest_order2(CaseSolutionOf<2>& solution, const SolverOptions& optio
 /// The contact output of the solution in `solution.full`: 2D's ContactResult (whose force the
 /// loop records), 3D's force (the rest of its output is contact_faces.hpp's).
 template <int dim>
-void evaluate_contact(CaseSolutionOf<dim>& solution) {
+void evaluate_contact(LevelSolution<dim>& solution) {
   const Discretization<dim>& disc = *solution.disc;
   if constexpr (dim == 2) {
     solution.contact = contact_output(disc.assembler(), disc.problem(), solution.full);
@@ -78,10 +77,10 @@ void evaluate_contact(CaseSolutionOf<dim>& solution) {
 }
 
 /// The level's box QP solved: 2D's frictional contact by its own loop
-/// (case/strategy/friction_solve.hpp), everything else by solve_box_qp.
+/// (friction_solve.hpp), everything else by solve_box_qp.
 template <int dim>
-SolverReport solve_level(CaseSolutionOf<dim>& solution, const LevelHierarchy& hierarchy,
-                         const SolverOptions& options, const CaseSolveObserver& observer) {
+SolverReport solve_level(LevelSolution<dim>& solution, const LevelHierarchy& hierarchy,
+                         const SolverOptions& options, const LevelLoopObserver& observer) {
   const AssembledProblem& problem = solution.disc->problem();
   if constexpr (dim == 2)
     if (!problem.friction.empty())
@@ -92,8 +91,8 @@ SolverReport solve_level(CaseSolutionOf<dim>& solution, const LevelHierarchy& hi
 /// Solves the finest level of `solution.disc` from `solution.x` (empty: from the nested
 /// iteration or zero) and evaluates the solution.
 template <int dim>
-void solve_finest(CaseSolutionOf<dim>& solution, const CaseSpec& spec, bool from_start,
-                  bool first_step, const CaseSolveObserver& observer) {
+void solve_finest(LevelSolution<dim>& solution, const LevelLoopOptions& loop, bool from_start,
+                  bool first_step, const LevelLoopObserver& observer) {
   const auto t0 = Clock::now();
   const Discretization<dim>& disc = *solution.disc;
   const AssembledProblem& problem = disc.problem();
@@ -101,7 +100,7 @@ void solve_finest(CaseSolutionOf<dim>& solution, const CaseSpec& spec, bool from
   if constexpr (dim == 2)
     if (has_contact(disc.data()) && !contact_layer_is_definite(disc.finest_space(), problem.qp))
       throw IndefiniteSystemError("the contact layer of the FOSLS matrix is not definite");
-  SolverOptions options = spec.solver;
+  SolverOptions options = loop.solver;
   // A prolongated (or continued) solution is a better start than the nested iteration would compute
   // again on all the coarser levels.
   if (from_start) options.nested = false;
@@ -112,7 +111,7 @@ void solve_finest(CaseSolutionOf<dim>& solution, const CaseSpec& spec, bool from
       return;
     }
   const LevelHierarchy hierarchy =
-      method_info(options.method).needs_hierarchy ? disc.build_level_hierarchy() : LevelHierarchy{};
+      needs_level_hierarchy(options.method) ? disc.build_level_hierarchy() : LevelHierarchy{};
   // Without an iterate to return, a limit that passed while the hierarchy was built is still a
   // limit of the set-up (as in the assembly), not a solve stopped at its initial projection.
   if (!from_start) observer.deadline.check("building the level hierarchy");
@@ -139,8 +138,8 @@ std::string stop_for_the_solve(const SolverReport& report) {
 
 /// Why the adaptive loop stops after this step's solve, or empty to go on.
 template <int dim>
-std::string stop_before_refining(const CaseSolutionOf<dim>& s, const AdaptivitySpec& a, int step,
-                                 double first_estimator) {
+std::string stop_before_refining(const LevelSolution<dim>& s, const AdaptiveLoopOptions& a,
+                                 int step, double first_estimator) {
   if (std::string reason = stop_for_the_solve(s.report); !reason.empty()) return reason;
   if (step >= a.steps) return "steps";
   if (a.target > 0 && s.steps.back().estimator <= a.target * first_estimator) return "target";
@@ -148,7 +147,7 @@ std::string stop_before_refining(const CaseSolutionOf<dim>& s, const AdaptivityS
 }
 
 template <int dim>
-AdaptiveStepRecord step_record(const CaseSolutionOf<dim>& solution, int step) {
+AdaptiveStepRecord step_record(const LevelSolution<dim>& solution, int step) {
   const Discretization<dim>& disc = *solution.disc;
   AdaptiveStepRecord record;
   record.step = step;
@@ -176,7 +175,7 @@ struct NextLevel {
 /// The adaptive loop's next level: the marked cells bisected (with closure). No cell marked
 /// (J = 0) is the stop `if_none_marked`, or, without one, every cell bisected.
 template <int dim>
-NextLevel<dim> refine_marked(const CaseSolutionOf<dim>& solution,
+NextLevel<dim> refine_marked(const LevelSolution<dim>& solution,
                              const SimplexBisectionState<dim>& state,
                              const std::vector<double>& indicators, double theta,
                              long long max_dofs, const char* if_none_marked) {
@@ -194,7 +193,8 @@ NextLevel<dim> refine_marked(const CaseSolutionOf<dim>& solution,
 
 /// The accuracy loop's next level: a uniform (red) refinement of the finest mesh.
 template <int dim>
-NextLevel<dim> refine_all(const CaseSolutionOf<dim>& solution, const AccuracySpec& a, int order) {
+NextLevel<dim> refine_all(const LevelSolution<dim>& solution, const AccuracyLoopOptions& a,
+                          int order) {
   NextLevel<dim> next{solution.disc->meshes(), {}, 0, ""};
   auto r = refine_all_cells(next.meshes.finest());
   if (dofs_total(r.fine, order) > a.max_dofs) {
@@ -217,7 +217,7 @@ std::vector<ForceComponents> forces(const std::vector<AdaptiveStepRecord>& steps
 /// of changes, from adaptive ones by their unknowns (force_accuracy.hpp).
 template <int dim>
 ForceErrorEstimate force_error_after(const std::vector<AdaptiveStepRecord>& steps,
-                                     const AccuracySpec& a) {
+                                     const AccuracyLoopOptions& a) {
   if (!a.adaptive) return estimate_force_error(forces(steps));
   std::vector<long long> dofs;
   for (const AdaptiveStepRecord& s : steps) dofs.push_back(s.dofs);
@@ -226,14 +226,14 @@ ForceErrorEstimate force_error_after(const std::vector<AdaptiveStepRecord>& step
 
 /// The next level of the adaptive or the accuracy loop, or why there is none.
 template <int dim>
-NextLevel<dim> next_level(const CaseSolutionOf<dim>& solution, const CaseSpec& spec,
+NextLevel<dim> next_level(const LevelSolution<dim>& solution, const LevelLoopOptions& loop,
                           const SimplexBisectionState<dim>& state,
                           const std::vector<double>& indicators) {
-  if (spec.adaptivity)
-    return refine_marked(solution, state, indicators, spec.adaptivity->theta,
-                         spec.adaptivity->max_dofs, "target");
-  const AccuracySpec& a = *spec.accuracy;
-  if (!a.adaptive) return refine_all(solution, a, spec.mesh.order);
+  if (loop.adaptivity)
+    return refine_marked(solution, state, indicators, loop.adaptivity->theta,
+                         loop.adaptivity->max_dofs, "target");
+  const AccuracyLoopOptions& a = *loop.accuracy;
+  if (!a.adaptive) return refine_all(solution, a, loop.order);
   // J = 0 marks nothing: the force is then exact, and the next level (all cells bisected) says
   // so with a zero change.
   return refine_marked(solution, state, indicators, a.theta, a.max_dofs, nullptr);
@@ -241,28 +241,28 @@ NextLevel<dim> next_level(const CaseSolutionOf<dim>& solution, const CaseSpec& s
 
 /// Why the loop stops after this step's solve (before refining), or empty to go on.
 template <int dim>
-std::string stop_after_solve(const CaseSolutionOf<dim>& solution, const CaseSpec& spec, int step,
-                             double first_estimator) {
-  if (spec.adaptivity)
-    return stop_before_refining(solution, *spec.adaptivity, step, first_estimator);
+std::string stop_after_solve(const LevelSolution<dim>& solution, const LevelLoopOptions& loop,
+                             int step, double first_estimator) {
+  if (loop.adaptivity)
+    return stop_before_refining(solution, *loop.adaptivity, step, first_estimator);
   if (std::string reason = stop_for_the_solve(solution.report); !reason.empty()) return reason;
-  return accuracy_stop_reason(solution.steps.back().force_error, *spec.accuracy,
+  return accuracy_stop_reason(solution.steps.back().force_error, loop.accuracy->force,
                               forces(solution.steps));
 }
 
 }  // namespace
 
 template <int dim>
-CaseSolutionOf<dim> solve_case_levels(SimplexHierarchy<dim> meshes, const ProblemData<dim>& data,
-                                      const CaseSpec& spec, const CaseSolveObserver& observer,
-                                      const Vector* start) {
+LevelSolution<dim> solve_levels(SimplexHierarchy<dim> meshes, const ProblemData<dim>& data,
+                                const LevelLoopOptions& loop, const LevelLoopObserver& observer,
+                                const Vector* start) {
   constexpr int kPerLevel = kBisectionsPerUniformRefinement<dim>;
-  CaseSolutionOf<dim> solution;
+  LevelSolution<dim> solution;
   // The generation counts bisections from the coarse mesh (a red refinement is dim of them).
   // 3D marks its edges only when it will bisect: the marking of a large uniform mesh costs a
   // few per cent of its solve.
   SimplexBisectionState<dim> state;
-  const bool bisects = spec.adaptivity || (spec.accuracy && spec.accuracy->adaptive);
+  const bool bisects = loop.adaptivity || (loop.accuracy && loop.accuracy->adaptive);
   if (dim == 2 || bisects)
     state = initial_bisection_state(meshes.finest(), kPerLevel * (meshes.num_levels() - 1));
   double first_estimator = 0.0;
@@ -278,7 +278,7 @@ CaseSolutionOf<dim> solve_case_levels(SimplexHierarchy<dim> meshes, const Proble
     const Discretization<dim>& disc = *solution.disc;
     solution.order2.reset();
     if constexpr (dim == 2)
-      if (spec.mesh.order == 2)
+      if (loop.order == 2)
         solution.order2 =
             std::make_unique<P2Rt1Space>(disc.meshes().finest(), data.boundary_roles());
     solution.dofs = solution.order2 ? solution.order2->num_free() : disc.problem().qp.size();
@@ -293,25 +293,25 @@ CaseSolutionOf<dim> solve_case_levels(SimplexHierarchy<dim> meshes, const Proble
       solution.x = prolongate_to_finest(disc, solution.full, previous_levels - 1);
     previous_levels = disc.num_levels();
     if (observer.on_step) observer.on_step(step, solution.dofs);
-    solve_finest(solution, spec, (step > 0 && !solution.order2) || started, step == 0, observer);
+    solve_finest(solution, loop, (step > 0 && !solution.order2) || started, step == 0, observer);
 
     const ErrorEstimate estimate = error_estimate(solution.parts);
     solution.steps.push_back(step_record(solution, step));
     AdaptiveStepRecord& record = solution.steps.back();
     record.estimator = estimate.estimator();
     // An unconverged level's force is not the level's: no estimate from it (the loop stops).
-    if (spec.accuracy && solution.report.converged)
-      record.force_error = force_error_after<dim>(solution.steps, *spec.accuracy);
+    if (loop.accuracy && solution.report.converged)
+      record.force_error = force_error_after<dim>(solution.steps, *loop.accuracy);
     if (step == 0) first_estimator = record.estimator;
     auto finish_step = [&] { solution.steps.back().time_s = seconds(t0, Clock::now()); };
-    if (!spec.adaptivity && !spec.accuracy) {
+    if (!loop.adaptivity && !loop.accuracy) {
       finish_step();
       break;
     }
-    solution.stop_reason = stop_after_solve(solution, spec, step, first_estimator);
+    solution.stop_reason = stop_after_solve(solution, loop, step, first_estimator);
     NextLevel<dim> next;
     if (solution.stop_reason.empty()) {
-      next = next_level(solution, spec, state, estimate.indicators);
+      next = next_level(solution, loop, state, estimate.indicators);
       solution.stop_reason = next.stop_reason;
       if (solution.stop_reason.empty() && observer.deadline.passed())
         solution.stop_reason = "time_limit";
@@ -326,47 +326,18 @@ CaseSolutionOf<dim> solve_case_levels(SimplexHierarchy<dim> meshes, const Proble
     finish_step();
   }
   // Levels added by a uniform accuracy loop: kPerLevel more bisections per level for every cell.
-  if (spec.accuracy && !spec.accuracy->adaptive)
+  if (loop.accuracy && !loop.accuracy->adaptive)
     state = initial_bisection_state(solution.disc->meshes().finest(),
                                     kPerLevel * (solution.disc->num_levels() - 1));
   solution.generation = std::move(state.generation);
   return solution;
 }
 
-template CaseSolutionOf<2> solve_case_levels<2>(MeshHierarchy, const ProblemData<2>&,
-                                                const CaseSpec&, const CaseSolveObserver&,
-                                                const Vector*);
-template CaseSolutionOf<3> solve_case_levels<3>(TetHierarchy, const ProblemData<3>&,
-                                                const CaseSpec&, const CaseSolveObserver&,
-                                                const Vector*);
-
-nlohmann::json adaptivity_json(const std::vector<AdaptiveStepRecord>& records,
-                               const std::string& stop_reason, const AdaptivitySpec& spec,
-                               int dim) {
-  nlohmann::json steps = nlohmann::json::array();
-  for (const AdaptiveStepRecord& s : records)
-    steps.push_back(
-        {{"step", s.step},
-         {"levels", s.levels},
-         {"dofs", s.dofs},
-         {"dofs_total", s.dofs_total},
-         {dim == 2 ? "triangles" : "tetrahedra", s.cells},
-         {"estimator", s.estimator},
-         {"force", s.force},
-         {"iterations", s.iterations},
-         {"converged", s.converged},
-         {"converged_by", converged_by_name(s.converged_by)},
-         {"algebraic_error",
-          std::isfinite(s.algebraic_error) ? nlohmann::json(s.algebraic_error) : nlohmann::json()},
-         {"marked", s.marked},
-         {"time_s", s.time_s}});
-  nlohmann::json a = {{"theta", spec.theta},
-                      {"max_dofs", spec.max_dofs},
-                      {"target", spec.target},
-                      {"stop_reason", stop_reason},
-                      {"steps", steps}};
-  add_adaptive_summary(a, records, stop_reason, spec);
-  return a;
-}
+template LevelSolution<2> solve_levels<2>(MeshHierarchy, const ProblemData<2>&,
+                                          const LevelLoopOptions&, const LevelLoopObserver&,
+                                          const Vector*);
+template LevelSolution<3> solve_levels<3>(TetHierarchy, const ProblemData<3>&,
+                                          const LevelLoopOptions&, const LevelLoopObserver&,
+                                          const Vector*);
 
 }  // namespace fosls
