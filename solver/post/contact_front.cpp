@@ -8,6 +8,8 @@
 #include <map>
 #include <set>
 
+#include "fem/contact_frame.hpp"
+
 namespace fosls {
 
 namespace {
@@ -23,13 +25,6 @@ VertexFaces faces_at_vertices(const TetMesh& mesh, const std::vector<int>& faces
   for (int f : faces)
     for (int v : mesh.face(f)) at[v].push_back(f);
   return at;
-}
-
-/// Two unit vectors spanning the plane normal to n.
-std::array<Point3, 2> tangents(const Point3& n) {
-  const Point3 seed = std::abs(n.x()) < 0.9 ? Point3::UnitX() : Point3::UnitY();
-  const Point3 t1 = (seed - seed.dot(n) * n).normalized();
-  return {t1, n.cross(t1)};
 }
 
 /// The points where the fit at x sees a loaded face with centroid c: c, and its mirror images
@@ -62,7 +57,8 @@ double squared_pressure_at(const TetMesh& mesh, const VertexFaces& at, int v,
         if (pressure[g] > 0) near.insert(g);
   }
   if (near.size() < 3) return kOutside;
-  const auto [t1, t2] = tangents(normal.normalized());
+  const Mat<3> frame = normal_frame<3>(normal.normalized());
+  const Point3 t1 = frame.col(1), t2 = frame.col(2);
   Eigen::Matrix3d normal_matrix = Eigen::Matrix3d::Zero();
   Eigen::Vector3d rhs = Eigen::Vector3d::Zero();
   for (int f : near)
