@@ -30,10 +30,9 @@ std::vector<CaseError> dimension_support_problems(const nlohmann::json& j, const
   if (spec.solver.stopping == StoppingRule::kDiscretisation)
     errors.push_back(
         {"/solver/tolerance",
-         "\"discretisation\" is 2D only for now: in 3D its estimate of the algebraic error "
-         "stopped the Hertz ball 44 % (refinements 1), 4 % (2) and 1 % (3) short of the "
-         "converged force, because it extrapolates the functional's decrease from iterations "
-         "whose active set still changes; give a number, e.g. 1e-8"});
+         "\"discretisation\" is 2D only for now: its estimate bounds the algebraic error in the "
+         "functional's norm, and in 3D that left the Hertz ball's force up to 5 % short of the "
+         "converged one at λ = \"inf\" (docs/case-format.md); give a number, e.g. 1e-8"});
   for (const auto& [name, bc] : spec.boundary)
     if (bc.type == BoundaryCondition::Type::kContact) check_contact(name, bc, errors);
   return errors;
