@@ -5,6 +5,7 @@
 #include <set>
 
 #include "fem/transfer.hpp"
+#include "mesh/composed_refinement.hpp"
 
 namespace fosls {
 
@@ -133,6 +134,8 @@ std::map<std::pair<int, int>, int> contact_midpoints(const FoslsSpace<dim>& coar
       for (int v : cm.facet(f)) on_contact[v] = 1;
   std::map<std::pair<int, int>, int> midpoint;
   for (int k = 0; k < maps.num_midpoints(); ++k) {
+    // Composed maps (solver_levels.hpp) leave vertices off the contact boundary without parents.
+    if (!halves_coarse_edge(maps, k)) continue;
     const auto& ab = maps.midpoint_parents(cm, k);
     if (on_contact[ab[0]] && on_contact[ab[1]])
       midpoint[std::minmax(ab[0], ab[1])] = maps.num_coarse_vertices + k;

@@ -51,30 +51,49 @@ int Discretization<dim>::coarsest_solver_level(double max_turn) const {
 }
 
 template <int dim>
-LevelHierarchy Discretization<dim>::build_level_hierarchy() const {
+SparseMatrix Discretization<dim>::free_transfer(int coarse, int fine) const {
+  SparseMatrix p;
+  for (int j = coarse + 1; j <= fine; ++j) {
+    const FoslsSpace<dim>& below = *spaces_[j - 1];
+    const FoslsSpace<dim>& above = *spaces_[j];
+    SparseMatrix step = free_prolongation<dim>(
+        below, above, meshes_.maps[j],
+        cartesian_prolongation<dim>(below.mesh(), above.mesh(), meshes_.maps[j]));
+    if (j == coarse + 1)
+      p = std::move(step);
+    else
+      p = SparseMatrix(step * p);
+  }
+  return p;
+}
+
+template <int dim>
+LevelHierarchy Discretization<dim>::build_level_hierarchy(double max_share) const {
+  std::vector<long long> unknowns;
+  for (const auto& space : spaces_) unknowns.push_back(space->num_free());
+  const auto on_contact = [&](int j, int v) { return spaces_[j]->is_contact_vertex(v); };
+  const SolverLevels<dim> kept =
+      skip_close_levels<dim>(meshes_, unknowns, on_contact, coarsest_solver_level(), max_share);
   LevelHierarchy h;
-  const int coarsest = coarsest_solver_level();
-  h.levels.resize(num_levels() - coarsest);
-  for (int j = coarsest; j < num_levels(); ++j) {
-    const FoslsSpace<dim>& fine = *spaces_[j];
-    Level& level = h.levels[j - coarsest];
+  h.levels.resize(kept.mesh_levels.size());
+  for (std::size_t k = 0; k < kept.mesh_levels.size(); ++k) {
+    const FoslsSpace<dim>& fine = *spaces_[kept.mesh_levels[k]];
+    const SimplexRefinementMaps<dim>& maps = kept.maps[k];
+    Level& level = h.levels[k];
     level.num_dofs = fine.num_free();
     // Local smoothing (Chen, Nochetto and Xu's multilevel methods on graded bisection grids):
     // an intermediate level smooths where it differs from the level below, so that one cycle
     // costs O(N) of the finest level however many bisection levels there are. A uniform
     // level is smoothed everywhere, the finest level always.
-    const bool everywhere = j == coarsest || j + 1 == num_levels();
-    level.patches =
-        vertex_patches(fine, &level.patch_split,
-                       everywhere ? std::vector<char>{}
-                                  : new_vertices_and_neighbours<dim>(fine.mesh(), meshes_.maps[j]));
+    const bool everywhere = k == 0 || k + 1 == kept.mesh_levels.size();
+    level.patches = vertex_patches(
+        fine, &level.patch_split,
+        everywhere ? std::vector<char>{} : new_vertices_and_neighbours<dim>(fine.mesh(), maps));
     level.contact_strip = contact_strip(fine, kStripLayers);
     level.block_factorization = kBlockFactorization;
-    if (j == coarsest) continue;
-    const FoslsSpace<dim>& coarse = *spaces_[j - 1];
-    const SimplexRefinementMaps<dim>& maps = meshes_.maps[j];
-    level.prolongation = free_prolongation<dim>(
-        coarse, fine, maps, cartesian_prolongation<dim>(coarse.mesh(), fine.mesh(), maps));
+    if (k == 0) continue;
+    const FoslsSpace<dim>& coarse = *spaces_[kept.mesh_levels[k - 1]];
+    level.prolongation = free_transfer(kept.mesh_levels[k - 1], kept.mesh_levels[k]);
     level.links = contact_links<dim>(coarse, fine, maps, level.prolongation);
   }
   return h;

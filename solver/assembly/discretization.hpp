@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "assembly/fosls_assembler.hpp"
+#include "assembly/solver_levels.hpp"
 #include "core/level_hierarchy.hpp"
 
 namespace fosls {
@@ -41,8 +42,9 @@ class Discretization {
   AssembledProblem& mutable_problem() { return problem_; }
   const ProblemData<dim>& data() const { return *data_; }
   /// Builds the transfers, patches, contact strips and contact links of the levels from
-  /// coarsest_solver_level() up (not needed by pdas).
-  LevelHierarchy build_level_hierarchy() const;
+  /// coarsest_solver_level() up (not needed by pdas): of the levels that skip_close_levels keeps
+  /// with `max_share` (assembly/solver_levels.hpp; every level of a uniform hierarchy).
+  LevelHierarchy build_level_hierarchy(double max_share = kMaxSolverLevelShare) const;
 
   /// The coarsest mesh level that the multilevel solvers use: in 2D the first whose contact
   /// edges on arcs turn the boundary normal by at most `max_turn` radians. Where a coarse edge
@@ -52,6 +54,10 @@ class Discretization {
   /// level (its curved contact faces' turn is not limited: docs/method.md §11).
   int coarsest_solver_level(double max_turn = kMaxCoarseTurn) const;
   static constexpr double kMaxCoarseTurn = 0.3;
+
+  /// The transfer between the free DOFs of mesh levels coarse < fine: the product of the
+  /// levels' transfers between them (fem/transfer.hpp, free_prolongation).
+  SparseMatrix free_transfer(int coarse, int fine) const;
 
  private:
   SimplexHierarchy<dim> meshes_;

@@ -61,9 +61,14 @@ TEST(AdaptiveQuarterBall, TheNinthBisectionStepSolvesMonotoneAndFeasible) {
                 r.levels, r.dofs, 4 * r.force[2], 100 * (4 * r.force[2] / kBallForce - 1),
                 r.iterations);
     EXPECT_TRUE(r.converged) << r.step;
-    EXPECT_LE(r.iterations, 40) << r.step;  // measured 7–22
+    EXPECT_LE(r.iterations, 40) << r.step;  // measured 9–22 (7–22 on every level)
   }
   EXPECT_GE(s.steps.back().levels, 12);
+  // The solvers' levels are a factor apart (assembly/solver_levels.hpp).
+  const int solver_levels = s.disc->build_level_hierarchy().num_levels();
+  std::printf("last step: %d mesh levels, %d for the solvers\n", s.disc->num_levels(),
+              solver_levels);
+  EXPECT_LT(solver_levels, s.disc->num_levels() - 2);
   // Measured +1.12 %; the steps before range from +1.08 % to +2.31 %.
   EXPECT_NEAR(4 * s.steps.back().force[2] / kBallForce, 1.0, 0.02);
 }

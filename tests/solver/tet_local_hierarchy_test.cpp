@@ -84,19 +84,30 @@ TEST_P(TetLocalHierarchy, MonotoneFeasibleAndForceOfTheUniformRefinement) {
   EXPECT_LT(meshes.finest().num_tets(), uniform_tets);  // local: fewer than the uniform level
   const Discretization<3> disc(meshes, testing::signorini_block(lambda));
   const BoxQp& qp = disc.problem().qp;
+  // Every level (max_share 1), and the solvers' default, levels a factor apart
+  // (assembly/solver_levels.hpp): here the two bisection levels below the finest are skipped.
+  const LevelHierarchy every_level = disc.build_level_hierarchy(1.0);
   const LevelHierarchy h = disc.build_level_hierarchy();
+  ASSERT_EQ(every_level.num_levels(), meshes.num_levels());
+  EXPECT_EQ(h.num_levels(), 3);
+  EXPECT_EQ(hierarchy_inconsistency(every_level, qp.size()), "");
   EXPECT_EQ(hierarchy_inconsistency(h, qp.size()), "");
   // The bisection levels exercise every kind of link, and local smoothing skips the vertices
   // away from the refined region on the intermediate levels.
-  const LinkKinds kinds = link_kinds(h);
+  const LinkKinds kinds = link_kinds(every_level);
   EXPECT_GT(kinds.kept + kinds.pair, 0);
   int skipped = 0;
-  for (std::size_t j = 2; j + 1 < h.levels.size(); ++j)
-    skipped +=
-        disc.meshes().meshes[j].num_vertices() - static_cast<int>(h.levels[j].patches.size());
+  for (std::size_t j = 2; j + 1 < every_level.levels.size(); ++j)
+    skipped += disc.meshes().meshes[j].num_vertices() -
+               static_cast<int>(every_level.levels[j].patches.size());
   EXPECT_GT(skipped, 0);
   // Every smoother sweep and coarse correction of the first cycles from zero.
+  EXPECT_GE(testing::checked_cycles_from_zero(qp, every_level, 10), 30);
   EXPECT_GE(testing::checked_cycles_from_zero(qp, h, 10), 30);
+  const testing::MmgAndPdas every = testing::solve_with_mmg_and_pdas(disc, every_level);
+  EXPECT_TRUE(every.mmg.converged);
+  EXPECT_NEAR(every.force.z(), every.pdas_force.z(), 1e-6 * every.pdas_force.z());
+  EXPECT_LE(every.mmg.iterations, 25);  // 12 and 11 measured
   const testing::MmgAndPdas s = testing::solve_with_mmg_and_pdas(disc, h);
   EXPECT_TRUE(s.mmg.converged);
   EXPECT_TRUE(s.pdas.converged);
@@ -107,12 +118,16 @@ TEST_P(TetLocalHierarchy, MonotoneFeasibleAndForceOfTheUniformRefinement) {
   const Point3 f2 = pdas_force(Discretization<3>(build_tet_hierarchy(make_box({2, 2, 2}), 2),
                                                  testing::signorini_block(lambda)));
   std::printf(
-      "λ = %g: %d levels, %d unknowns (uniform r = 2: %d tetrahedra, local %d), links kept %d, "
-      "pairs %d, partnered %d, %d vertices not smoothed; mmg %d iterations; F_z local %.8f, "
+      "λ = %g: %d levels (%d for the solvers), %d unknowns (uniform r = 2: %d tetrahedra, local "
+      "%d), links kept %d, "
+      "pairs %d, partnered %d, %d vertices not smoothed; mmg %d iterations (%d on every level); "
+      "F_z local %.8f, "
       "uniform r = 1 %.8f, r = 2 %.8f\n",
-      lambda, meshes.num_levels(), qp.size(), uniform_tets, meshes.finest().num_tets(), kinds.kept,
-      kinds.pair, kinds.partnered, skipped, s.mmg.iterations, s.force.z(), f1.z(), f2.z());
-  // 12 and 11 measured; 57 and 61 with a quarter for every face's share (the red rule).
+      lambda, meshes.num_levels(), h.num_levels(), qp.size(), uniform_tets,
+      meshes.finest().num_tets(), kinds.kept, kinds.pair, kinds.partnered, skipped,
+      s.mmg.iterations, every.mmg.iterations, s.force.z(), f1.z(), f2.z());
+  // 13 and 13 measured on the solvers' three levels; 57 and 61 on every level with a quarter
+  // for every face's share (the red rule).
   EXPECT_LE(s.mmg.iterations, 25);
   EXPECT_LT(std::abs(s.force.z() - f2.z()), 0.5 * std::abs(f1.z() - f2.z()));
 }
