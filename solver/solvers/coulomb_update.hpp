@@ -13,6 +13,7 @@
 #include "core/friction_law.hpp"
 #include "core/kinks.hpp"
 #include "solvers/bound_extrapolation.hpp"
+#include "solvers/coulomb_fallback.hpp"
 #include "solvers/kink_sides.hpp"
 
 namespace fosls {
@@ -35,6 +36,8 @@ struct CoulombSchedule {
   /// How many earlier updates Anderson's extrapolation of the bounds may combine
   /// (solvers/bound_extrapolation.hpp; 0: the bounds are 𝔣 max(0, −S_n) of the iterate).
   int extrapolation_depth = 2;
+  /// When the iteration has stalled and a fallback should take over (never by default).
+  StallTest stall = StallTest::never();
   static CoulombSchedule newton_schedule() { return {1 << 30, 0.0, 0.3, true, 2}; }
 };
 
@@ -55,6 +58,10 @@ class CoulombUpdate {
   void started(double frozen) { frozen_at_update_ = frozen; }
   /// pdas's schedule (CoulombSchedule::newton_schedule).
   bool newton() const { return schedule_.newton; }
+  /// Whether the iteration of `history` has stalled (the schedule's StallTest).
+  bool stalled(const std::vector<IterationRecord>& history) const {
+    return schedule_.stall.stalled(history);
+  }
 
   /// Whether iteration k, after which the frozen problem's residual is `frozen` and Coulomb's
   /// `coulomb`, is followed by an update.

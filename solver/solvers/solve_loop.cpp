@@ -63,9 +63,12 @@ std::unique_ptr<IterationStep> make_step(const BoxQp& qp, const LevelHierarchy& 
 /// estimate from J's history does not allow for: the KKT test decides.
 std::vector<std::unique_ptr<StoppingCriterion>> stopping_criteria(const BoxQp& qp,
                                                                   const SolverOptions& options,
-                                                                  const Vector& x, bool updates) {
+                                                                  const Vector& x, bool updates,
+                                                                  double initial_kkt) {
   std::vector<std::unique_ptr<StoppingCriterion>> criteria;
-  criteria.push_back(std::make_unique<KktResidualStop>(options.tolerance));
+  const double reference =
+      options.reference_kkt > 0.0 && initial_kkt > 0.0 ? options.reference_kkt / initial_kkt : 1.0;
+  criteria.push_back(std::make_unique<KktResidualStop>(options.tolerance * reference));
   if (options.stopping == StoppingRule::kDiscretisation && options.method != SolverMethod::kPdas &&
       !updates)
     criteria.push_back(std::make_unique<AlgebraicErrorStop>(options.discretisation_fraction));
@@ -113,7 +116,8 @@ class IterationLoop {
     if (coulomb_) coulomb_->started(frozen_kkt_);
     report_.final_kkt = report_.initial_kkt;
     report_.converged = report_.initial_kkt == 0.0;
-    const auto criteria = stopping_criteria(qp_, options_, x_, coulomb_ != nullptr);
+    const auto criteria =
+        stopping_criteria(qp_, options_, x_, coulomb_ != nullptr, report_.initial_kkt);
     for (int k = 1; k <= options_.max_iterations && !report_.converged; ++k) {
       if (stopped_by_observer()) break;
       const IterationRecord rec = iterate(k);
@@ -132,6 +136,10 @@ class IterationLoop {
           update_problem(k) > options_.friction_tolerance && coulomb_->moved() > rec.kkt_residual)
         report_.converged_by = ConvergedBy::kNone;
       report_.converged = report_.converged_by != ConvergedBy::kNone;
+      if (!report_.converged && coulomb_ && coulomb_->stalled(report_.history)) {
+        report_.stalled = true;  // the caller's fallback takes over (coulomb_fallback.hpp)
+        break;
+      }
     }
     if (report_.converged && report_.converged_by == ConvergedBy::kNone)
       report_.converged_by = ConvergedBy::kKktResidual;  // the initial iterate solved it
@@ -336,6 +344,24 @@ SolverReport solve_with_chain(const BoxQp& qp, const LevelHierarchy& hierarchy,
   return solve_from_start(qp, hierarchy, options, observer, x, std::move(chain), nullptr, nullptr);
 }
 
+namespace {
+
+/// One frictional solve by options.method with the schedule given (or pdas's own).
+SolverReport solve_sided(BoxQp& qp, const KinkedProblem& kinked, const CoulombSchedule& schedule,
+                         const LevelHierarchy& hierarchy, const SolverOptions& options,
+                         const SolverObserver& observer, Vector& x) {
+  const bool pdas = options.method == SolverMethod::kPdas;
+  KinkSides sides(qp, *kinked.kinks, pdas);
+  std::optional<CoulombUpdate> coulomb;
+  if (kinked.coulomb)
+    coulomb.emplace(qp, *kinked.coulomb, *kinked.kinks, sides,
+                    pdas ? CoulombSchedule::newton_schedule() : schedule);
+  return solve_with_new_chain(qp, hierarchy, options, observer, x, &sides,
+                              coulomb ? &*coulomb : nullptr);
+}
+
+}  // namespace
+
 SolverReport solve_kinked_qp(BoxQp& qp, const KinkedProblem& kinked,
                              const LevelHierarchy& hierarchy, const SolverOptions& options,
                              const SolverObserver& observer, Vector& x) {
@@ -343,14 +369,32 @@ SolverReport solve_kinked_qp(BoxQp& qp, const KinkedProblem& kinked,
   // cross in one Newton step; it is not extended to them.
   if (options.method == SolverMethod::kTnnmg)
     throw std::invalid_argument("solver.method tnnmg does not handle friction");
-  KinkSides sides(qp, *kinked.kinks, options.method == SolverMethod::kPdas);
-  std::optional<CoulombUpdate> coulomb;
-  if (kinked.coulomb)
-    coulomb.emplace(qp, *kinked.coulomb, *kinked.kinks, sides,
-                    options.method == SolverMethod::kPdas ? CoulombSchedule::newton_schedule()
-                                                          : kinked.schedule);
-  return solve_with_new_chain(qp, hierarchy, options, observer, x, &sides,
-                              coulomb ? &*coulomb : nullptr);
+  // Coulomb with mmg: where it stalls, pdas finishes from its iterate, with the bounds of its
+  // last update (they stay in qp) and the tolerance relative to mmg's initial residual.
+  const bool fallback = kinked.coulomb && options.method == SolverMethod::kMmg &&
+                        options.coulomb_fallback && qp.size() <= kFallbackMaxUnknowns;
+  CoulombSchedule schedule = kinked.schedule;
+  if (!fallback)
+    schedule.stall = StallTest::never();
+  else if (schedule.stall.window == 0)
+    schedule.stall = StallTest{};  // the measured default unless the caller gives one
+  SolverReport report = solve_sided(qp, kinked, schedule, hierarchy, options, observer, x);
+  if (!report.stalled) return report;
+  SolverOptions newton = options;
+  newton.method = SolverMethod::kPdas;
+  newton.max_iterations = options.max_iterations - report.iterations;
+  newton.reference_kkt = report.initial_kkt;
+  // The observer sees one solve: pdas's iterations numbered on from mmg's, its start not again.
+  SolverObserver continued = observer;
+  if (observer.on_iteration)
+    continued.on_iteration = [&observer, &report](IterationRecord rec) {
+      if (rec.iteration == 0) return;
+      rec.iteration += report.iterations;
+      rec.time_s += report.solve_s;
+      observer.on_iteration(rec);
+    };
+  append_fallback(report, solve_sided(qp, kinked, schedule, hierarchy, newton, continued, x));
+  return report;
 }
 
 }  // namespace fosls

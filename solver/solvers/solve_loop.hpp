@@ -69,6 +69,12 @@ struct SolverOptions {
   /// solve to count as converged, unless that update moved the iterate by no more than the
   /// Coulomb residual that met the stopping criterion (docs/method.md §8.4).
   double friction_tolerance = 1e-6;
+  /// Coulomb friction with mmg: where mmg stalls (solvers/coulomb_fallback.hpp), pdas finishes
+  /// the solve from mmg's iterate, up to kFallbackMaxUnknowns unknowns (docs/method.md §8.4).
+  bool coulomb_fallback = true;
+  /// The KKT residual `tolerance` is relative to (0: the initial iterate's): a solve that
+  /// continues another (Coulomb's fallback) keeps its predecessor's.
+  double reference_kkt = 0.0;
 };
 
 struct SolverReport {
@@ -105,6 +111,10 @@ struct SolverReport {
   /// solve_kinked_qp with an update (Coulomb): the largest relative change of the slip bounds
   /// at each update, in order; the solve has converged only if the last is within tolerance.
   std::vector<double> update_changes;
+  /// Coulomb with mmg: the loop stopped because mmg stalled (solvers/coulomb_fallback.hpp).
+  bool stalled = false;
+  /// The iteration after which pdas took over from a stalled mmg (0: it did not).
+  int switched_at = 0;
 };
 
 /// The non-smooth parts of a frictional solve.

@@ -50,7 +50,8 @@ json friction_json(const CaseSpec& spec, const SolverReport& report) {
           {"updates", c.size()},
           {"update_changes", c},
           {"contraction", contraction},
-          {"last_change", c.empty() ? json(nullptr) : json(c.back())}};
+          {"last_change", c.empty() ? json(nullptr) : json(c.back())},
+          {"fallback_after", report.switched_at > 0 ? json(report.switched_at) : json(nullptr)}};
 }
 
 json mesh_json(const MeshSpec& mesh) {
@@ -197,6 +198,12 @@ std::vector<ResultWarning> result_warnings(const SolverReport& report,
              "Either the start was already close to the solution (an adaptive step's or a sweep "
              "point's), or the tolerance is probably below what double precision can show for this "
              "problem"});
+  if (report.switched_at > 0)
+    warnings.push_back({"coulomb_fallback",
+                        "mmg's Coulomb iteration stalled after " +
+                            std::to_string(report.switched_at) +
+                            " iterations; pdas (a direct factorisation) finished the solve from "
+                            "there (friction.fallback_after; docs/method.md §8.4)"});
   if (report.cycle.safeguard_reductions > 0)
     warnings.push_back(
         {"coarse_corrections_shortened",

@@ -195,7 +195,11 @@ ObjectRulePtr friction_result_rule() {
                     "the last update's change: within solver.friction_tolerance when the "
                     "solve converged by the bounds' change; mmg may also converge with a larger "
                     "one, when the last update moved the iterate by no more than the Coulomb "
-                    "residual (docs/method.md §8.4)")});
+                    "residual (docs/method.md §8.4)"),
+       output_field("fallback_after", number_or_null(), "1",
+                    "Coulomb with mmg: the iteration after which mmg had stalled and pdas "
+                    "finished the solve from its iterate (iterations counts both); null when "
+                    "mmg finished (docs/method.md §8.4)")});
 }
 
 ObjectRulePtr stick_zone_rule() {

@@ -179,6 +179,7 @@ std::vector<std::string> warning_codes() {
           "time_limit",
           "rounding_level",
           "coarse_corrections_shortened",
+          "coulomb_fallback",
           "roller_overrides_contact",
           "sweep_point_not_converged",
           "load_step_not_converged",

@@ -1,0 +1,84 @@
+#!/usr/bin/env python3
+"""Benchmark (not a test): time and memory per load step of Coulomb against frictionless at a
+given size (issue 49; docs/performance.md, "Friction").
+
+The shipped cattaneo_mindlin (pressed by 0.01, then shifted by 0.001 and 0.002, each step from
+the previous one) at each refinement: without friction, with Coulomb 𝔣 = 0.3 by mmg (which may
+hand a stalled step to pdas, docs/method.md §8.4), and with `--pdas` by pdas, whose force per
+step is compared with mmg's. One `fosls-contact solve` after the other, never two at once, so
+the three columns of a row are measured side by side; the times are only comparable within a
+row. Set OMP_NUM_THREADS for the runs as for every benchmark here.
+
+usage: coulomb_size_table.py FOSLS_CONTACT REFINEMENTS... [--pdas]
+"""
+import json
+import math
+import subprocess
+import sys
+import tempfile
+
+
+def case(binary, refinements, friction, method):
+    c = json.loads(subprocess.run([binary, "example", "cattaneo_mindlin"],
+                                  capture_output=True, text=True, check=True).stdout)
+    c["mesh"]["refinements"] = refinements
+    c.setdefault("solver", {})["method"] = method
+    for condition in c["boundary"].values():
+        if condition["type"] == "contact":
+            if friction:
+                condition["friction"] = {"coefficient": 0.3}
+            else:
+                condition.pop("friction", None)
+    return c
+
+
+def solve(binary, c):
+    with tempfile.TemporaryDirectory() as d:
+        path, out = d + "/case.json", d + "/result.json"
+        json.dump(c, open(path, "w"))
+        subprocess.run([binary, "solve", path, "--out", out, "--quiet"], capture_output=True)
+        return json.load(open(out))
+
+
+def cell(result):
+    """Iterations per step (with where pdas took over), seconds per step, peak MiB."""
+    steps = result["load_steps"]["steps"]
+    its = []
+    for s in steps:
+        switched = (s.get("friction") or {}).get("fallback_after")
+        its.append(f"{s['iterations']}" + (f" ({switched} + pdas)" if switched else "")
+                   + ("" if s["converged"] else " not converged"))
+    seconds = "/".join(f"{s['timing']['solve_s'] + s['timing']['setup_s']:.1f}" for s in steps)
+    return f"{'/'.join(its)}, {seconds} s, {result['memory']['peak_mib']:.0f} MiB"
+
+
+def force_difference(a, b):
+    """Largest relative difference of the contact force over the steps."""
+    worst = 0.0
+    for sa, sb in zip(a["load_steps"]["steps"], b["load_steps"]["steps"]):
+        fa, fb = sa["contact"]["force"], sb["contact"]["force"]
+        worst = max(worst, math.hypot(*(x - y for x, y in zip(fa, fb))) / math.hypot(*fb))
+    return worst
+
+
+def main():
+    args = [a for a in sys.argv[1:] if not a.startswith("--")]
+    if len(args) < 2:
+        print(__doc__)
+        return 2
+    binary, with_pdas = args[0], "--pdas" in sys.argv
+    print("| refinements | unknowns | frictionless | Coulomb 0.3, mmg | Coulomb 0.3, pdas | "
+          "mmg − pdas in force |")
+    print("|---|---|---|---|---|---|")
+    for refinements in (int(r) for r in args[1:]):
+        frictionless = solve(binary, case(binary, refinements, False, "mmg"))
+        mmg = solve(binary, case(binary, refinements, True, "mmg"))
+        pdas = solve(binary, case(binary, refinements, True, "pdas")) if with_pdas else None
+        print(f"| {refinements} | {mmg['dofs']:,} | {cell(frictionless)} | {cell(mmg)} | "
+              + (f"{cell(pdas)} | {force_difference(mmg, pdas):.1e} |" if pdas else "— | — |"),
+              flush=True)
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
