@@ -29,10 +29,13 @@ struct StallTest {
   bool stalled(const std::vector<IterationRecord>& history) const;
 };
 
-/// Where the fallback may be used: pdas factorises the whole problem (CHOLMOD), whose memory
-/// grows like N log N. Above this many unknowns mmg goes on to its max_iterations instead
-/// (docs/method.md §8.4).
-inline constexpr int kFallbackMaxUnknowns = 500000;
+/// Where the fallback may be used: pdas factorises the whole problem (CHOLMOD) in every step,
+/// and its time and memory grow faster than mmg's. The hard cases it is for are small; on a
+/// large mesh where the stall test fires (cattaneo_mindlin's press step at refinements 5)
+/// finishing with pdas cost more time and several times the memory of letting mmg go on
+/// (docs/performance.md, "The fallback where mmg stalls"). Above this many unknowns mmg goes on
+/// to its max_iterations instead (docs/method.md §8.4).
+inline constexpr int kFallbackMaxUnknowns = 200000;
 
 /// `mmg`, stalled after its iterations, continued by `pdas` from its last iterate: one report
 /// whose history, iterations, updates and times are both solves' in order (pdas's iteration 0,
