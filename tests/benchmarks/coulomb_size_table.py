@@ -13,9 +13,12 @@ usage: coulomb_size_table.py FOSLS_CONTACT REFINEMENTS... [--pdas]
 """
 import json
 import math
+import os
 import subprocess
 import sys
-import tempfile
+
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "validation"))
+import validation_lib as vl  # noqa: E402  (runs fosls-contact on a case dict)
 
 
 def case(binary, refinements, friction, method):
@@ -30,14 +33,6 @@ def case(binary, refinements, friction, method):
             else:
                 condition.pop("friction", None)
     return c
-
-
-def solve(binary, c):
-    with tempfile.TemporaryDirectory() as d:
-        path, out = d + "/case.json", d + "/result.json"
-        json.dump(c, open(path, "w"))
-        subprocess.run([binary, "solve", path, "--out", out, "--quiet"], capture_output=True)
-        return json.load(open(out))
 
 
 def cell(result):
@@ -71,9 +66,11 @@ def main():
           "mmg − pdas in force |")
     print("|---|---|---|---|---|---|")
     for refinements in (int(r) for r in args[1:]):
-        frictionless = solve(binary, case(binary, refinements, False, "mmg"))
-        mmg = solve(binary, case(binary, refinements, True, "mmg"))
-        pdas = solve(binary, case(binary, refinements, True, "pdas")) if with_pdas else None
+        frictionless = vl.solve(binary, case(binary, refinements, False, "mmg"),
+                                allow_unconverged=True)
+        mmg = vl.solve(binary, case(binary, refinements, True, "mmg"), allow_unconverged=True)
+        pdas = (vl.solve(binary, case(binary, refinements, True, "pdas"), allow_unconverged=True)
+                if with_pdas else None)
         print(f"| {refinements} | {mmg['dofs']:,} | {cell(frictionless)} | {cell(mmg)} | "
               + (f"{cell(pdas)} | {force_difference(mmg, pdas):.1e} |" if pdas else "— | — |"),
               flush=True)
