@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <chrono>
-#include <cmath>
 
 #include "assembly/definiteness.hpp"
 #include "assembly/error_indicators.hpp"
