@@ -66,7 +66,6 @@ int run_estimate(const std::string& path, const std::string& max_memory) {
   // An adaptive accuracy loop keeps the same bisection hierarchy as an adaptive run.
   const bool bisection = adaptive || (spec.accuracy && spec.accuracy->adaptive);
   for (const MethodInfo& m : solver_methods()) {
-    if (!runs_in(m.method, count.dimension)) continue;
     const auto e = bisection ? estimate_adaptive_resources(count.unknowns, count, m.method)
                              : estimate_resources(count, m.method);
     const auto seconds = estimated_seconds(count, m.method);

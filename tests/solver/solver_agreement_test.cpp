@@ -1,11 +1,13 @@
 // Every method reaches the same discrete solution: mmg, tnnmg and pgs
 // agree with pdas to a relative energy-norm difference ≤ 1e-8 at tolerance 1e-12, on the
-// curved-gap square and on hertz, for λ = 1 and λ = ∞, on uniform and on adapted meshes.
+// curved-gap square and on hertz, for λ = 1 and λ = ∞, on uniform and on adapted meshes, and in
+// 3D on the Signorini block.
 #include <gtest/gtest.h>
 
 #include <cstdio>
 #include <limits>
 
+#include "../tet_problems.hpp"
 #include "adapted_hierarchy.hpp"
 #include "case/format/solver_methods.hpp"
 #include "contact_problems.hpp"
@@ -21,7 +23,8 @@ struct Solved {
   SolverReport report;
 };
 
-Solved run(const Discretization<2>& disc, const LevelHierarchy& h, SolverMethod m, int max_it) {
+template <int dim>
+Solved run(const Discretization<dim>& disc, const LevelHierarchy& h, SolverMethod m, int max_it) {
   SolverOptions o;
   o.method = m;
   o.tolerance = 1e-12;
@@ -41,7 +44,8 @@ double energy_distance(const BoxQp& qp, const Vector& a, const Vector& b) {
   return std::sqrt(d.dot(ad) / b.dot(ab));
 }
 
-void check_agreement(const Discretization<2>& disc, std::vector<SolverMethod> methods) {
+template <int dim>
+void check_agreement(const Discretization<dim>& disc, std::vector<SolverMethod> methods) {
   const LevelHierarchy h = disc.build_level_hierarchy();
   const auto& qp = disc.problem().qp;
   const Solved ref = run(disc, h, SolverMethod::kPdas, 50);
@@ -104,6 +108,15 @@ TEST(Agreement, AdaptedHertz) {
     check_agreement(adapted(data, make_hertz({.size = 0.1}), 1), kMultilevel);
   }
   check_agreement(adapted(testing::hertz(1.0), make_hertz({.size = 0.1}), 0), kSingleLevel);
+}
+TEST(Agreement, SignoriniBlockIn3d) {
+  for (double lambda : {1.0, kInf}) {
+    const ProblemData<3> data = testing::signorini_block(lambda);
+    check_agreement(Discretization<3>(build_tet_hierarchy(make_box({2, 2, 2}), 2), data),
+                    kMultilevel);
+    check_agreement(Discretization<3>(build_tet_hierarchy(make_box({2, 2, 2}), 0), data),
+                    kSingleLevel);
+  }
 }
 
 }  // namespace

@@ -151,12 +151,16 @@ TEST(Cli3d, BenchSolvesA3dCaseOnEachLevelByMmgAndPdas) {
                  pdas = rows[k + 1]["force"][2].get<double>();
     EXPECT_NEAR(mmg, pdas, 1e-6 * pdas);
   }
-  // tnnmg has no 3D solver: refused before running, at the field, and the bench exits 1.
-  const CliRun refused =
-      fosls_contact({"bench", "hertz_3d", "--levels", "1", "--methods", "tnnmg"});
-  EXPECT_EQ(refused.exit_code, 1);
-  EXPECT_NE(refused.out.find("refused before running: /solver/method"), std::string::npos)
-      << refused.out;
+  // Every method runs a 3D case: tnnmg and pgs through the same levels, tnnmg to pdas's force.
+  const fs::path tnnmg_file = folder.path / "tnnmg.json";
+  const CliRun tnnmg = fosls_contact(
+      {"bench", "hertz_3d", "--levels", "1", "--methods", "tnnmg", "--json", tnnmg_file.string()});
+  ASSERT_EQ(tnnmg.exit_code, 0) << tnnmg.out << tnnmg.err;
+  std::ifstream tnnmg_in(tnnmg_file);
+  const json tnnmg_row = json::parse(tnnmg_in).at(0);
+  EXPECT_TRUE(tnnmg_row["converged"].get<bool>()) << tnnmg_row.dump();
+  EXPECT_NEAR(tnnmg_row["force"][2].get<double>(), rows[1]["force"][2].get<double>(),
+              1e-6 * rows[1]["force"][2].get<double>());
 }
 
 TEST(Cli3d, EstimateChecksA3dCaseAndPrintsEachMethodsMemoryAndTime) {

@@ -227,9 +227,7 @@ std::optional<CaseError> check_memory_budget(const ResourceEstimate& estimate, S
   // accuracy loop's largest level is the thing to lower, whatever the method.
   for (const MethodInfo& m : solver_methods()) {
     if (accuracy || m.method == method || !converges_on_fine_meshes(m.method)) continue;
-    if ((estimate.order == 2 && m.method == SolverMethod::kTnnmg) ||
-        !runs_in(m.method, estimate.dimension))
-      continue;  // mmg or pdas only
+    if (estimate.order == 2 && m.method == SolverMethod::kTnnmg) continue;  // mmg or pdas only
     const ResourceEstimate other =
         adaptive ? estimate_adaptive_resources(estimate.unknowns, estimate.count(), m.method)
                  : estimate_resources(estimate.count(), m.method);

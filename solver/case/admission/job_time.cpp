@@ -124,7 +124,6 @@ std::string advice(const CaseTimeEstimate& e, const CaseSpec& spec, const Proble
   const SolverMethod method = spec.solver.method;
   for (const MethodInfo& m : solver_methods()) {
     if (m.method == method || !converges_on_fine_meshes(m.method)) continue;
-    if (!runs_in(m.method, spec.dimension)) continue;
     CaseSpec other = spec;
     other.solver.method = m.method;
     for (CaseSpec& point : other.sweep_points) point.solver.method = m.method;

@@ -1,7 +1,5 @@
 #include "case/format/dimension_support.hpp"
 
-#include "case/format/solver_methods.hpp"
-
 namespace fosls {
 
 namespace {
@@ -25,8 +23,6 @@ std::vector<CaseError> dimension_support_problems(const nlohmann::json& j, const
     errors.push_back({"/mesh/order",
                       "order 2 is 2D only for now: the order-2 space P2 × RT1 is built on "
                       "triangles; use mesh.order 1 and more mesh.refinements"});
-  if (!runs_in(spec.solver.method, 3))
-    errors.push_back({"/solver/method", "a 3D case is solved by mmg (the default) or pdas"});
   if (spec.solver.stopping == StoppingRule::kDiscretisation)
     errors.push_back(
         {"/solver/tolerance",

@@ -16,27 +16,23 @@ const std::vector<MethodInfo>& method_table() {
        "monotone multilevel method: smoothing, truncated coarse corrections within coarse "
        "obstacles, W-cycle, nested iteration",
        true,
-       {kSmoother, kPreSmoothing, kPostSmoothing, kCoarseObstacle, kCycle},
-       true},
+       {kSmoother, kPreSmoothing, kPostSmoothing, kCoarseObstacle, kCycle}},
       {SolverMethod::kTnnmg,
        "tnnmg",
        "truncated non-smooth Newton multigrid: smoothing, a linear cycle on the inactive set, "
        "projection and line search",
        false,
-       {kSmoother, kPreSmoothing, kPostSmoothing, kCoarseObstacle, kCycle},
-       false},
+       {kSmoother, kPreSmoothing, kPostSmoothing, kCoarseObstacle, kCycle}},
       {SolverMethod::kPdas,
        "pdas",
        "primal-dual active set method with a direct solver (CHOLMOD) on the finest level",
        false,
-       {},
-       true},
+       {}},
       {SolverMethod::kPgs,
        "pgs",
        "projected Gauss-Seidel on the finest level only",
        false,
-       {kSmoother},
-       false},
+       {kSmoother}},
   };
   return table;
 }
@@ -128,10 +124,6 @@ const char* option_field(SolverOption option) {
       return "cycle";
   }
   return "?";
-}
-
-bool runs_in(SolverMethod method, int dimension) {
-  return dimension != 3 || method_info(method).in_3d;
 }
 
 bool uses_option(const MethodInfo& method, SolverOption option) {

@@ -22,9 +22,6 @@ struct MethodInfo {
   /// A smoothing step per level is needed: pre_smoothing + post_smoothing ≥ 1.
   bool needs_smoothing;
   std::vector<SolverOption> options;  ///< the options it uses, in the order of the case
-  /// Solves 3D cases too (the 3D backend builds the levels of mmg; tnnmg and pgs come with the
-  /// one finite-element stack).
-  bool in_3d;
 };
 
 struct CoarseObstacleInfo {
@@ -63,7 +60,5 @@ std::vector<std::string> cycle_names();
 const char* option_field(SolverOption option);
 /// Whether `method` uses `option`.
 bool uses_option(const MethodInfo& method, SolverOption option);
-/// Whether `method` solves cases of `dimension`.
-bool runs_in(SolverMethod method, int dimension);
 
 }  // namespace fosls
