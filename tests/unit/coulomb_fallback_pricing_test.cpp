@@ -74,6 +74,12 @@ TEST(CoulombFallbackPricing, ABudgetWithoutRoomForTheFallbackRefusesTheCase) {
   ASSERT_TRUE(frictionless.estimate && coulomb.estimate);
   EXPECT_LT(frictionless.estimate->memory_bytes, options.limits.max_memory_bytes);
   EXPECT_GT(coulomb.estimate->memory_bytes, options.limits.max_memory_bytes);
+  // Tresca never falls back: priced as frictionless, bit for bit.
+  j["boundary"]["contact"]["friction"] = {{"bound", 0.01}};
+  const CaseAdmission tresca = admit_case(j, options);
+  EXPECT_TRUE(tresca.errors.empty());
+  ASSERT_TRUE(tresca.estimate);
+  EXPECT_EQ(tresca.estimate->memory_bytes, frictionless.estimate->memory_bytes);
 }
 
 }  // namespace
