@@ -45,29 +45,48 @@ std::vector<int> chain_order(const FoslsSpace<2>& space) {
   return order;
 }
 
-/// Shear, slip and state of contact edge r.edge.
-void set_friction_state(const FoslsAssembler<2>& assembler, const AssembledProblem& problem,
-                        const Vector& x_full, double largest_bound, ContactEdgeResult& r) {
+/// Shear, slip and whether |σ_nt| is at the bound of contact edge r.edge; returns the largest
+/// |slip of the step| of its vertices, or −1 on a frictionless edge.
+double set_friction_values(const FoslsAssembler<2>& assembler, const AssembledProblem& problem,
+                           const Vector& x_full, double largest_bound, ContactEdgeResult& r) {
   const FoslsSpace<2>& space = assembler.space();
   const Mesh& mesh = space.mesh();
   const int e = r.edge;
+  double vertex_slip = 0.0;
   for (int v : mesh.edge(e)) {
     const Point t = slip_tangent(space, e, v);
-    r.slip += 0.5 * (tangential_displacement(space, x_full, v, t) -
-                     reference_slip_origin(assembler.data(), v, t));
+    const double slip = tangential_displacement(space, x_full, v, t) -
+                        reference_slip_origin(assembler.data(), v, t);
+    r.slip += 0.5 * slip;
+    vertex_slip = std::max(vertex_slip, std::abs(slip));
   }
   const int st = space.sigma_dof(e, 1);
-  if (space.role(st) != DofRole::kTangentialS) {
-    r.state = r.active ? ContactEdgeResult::State::kSlip : ContactEdgeResult::State::kOpen;
-    return;
-  }
+  if (space.role(st) != DofRole::kTangentialS) return -1.0;
   r.shear = x_full[st] * problem.stress_scale / r.length;
   const double bound = problem.qp.upper[space.free_index(st)];
   // At the bound up to the solver's tolerance, relative to the largest bound.
-  const bool at_bound = std::abs(x_full[st]) >= bound - 1e-6 * largest_bound;
-  r.state = !r.active  ? ContactEdgeResult::State::kOpen
-            : at_bound ? ContactEdgeResult::State::kSlip
-                       : ContactEdgeResult::State::kStick;
+  r.at_bound = std::abs(x_full[st]) >= bound - 1e-6 * largest_bound;
+  return vertex_slip;
+}
+
+/// The states from the slip of the step (ContactEdgeResult::State), and the count of those
+/// that |σ_nt| against the bound contradicts.
+void set_states(const std::vector<double>& vertex_slips, ContactResult& out) {
+  double largest_slip = 0.0;
+  for (std::size_t i = 0; i < out.edges.size(); ++i)
+    if (out.edges[i].active) largest_slip = std::max(largest_slip, vertex_slips[i]);
+  for (std::size_t i = 0; i < out.edges.size(); ++i) {
+    ContactEdgeResult& r = out.edges[i];
+    using State = ContactEdgeResult::State;
+    if (!r.active) continue;  // kOpen
+    if (vertex_slips[i] < 0.0) {
+      r.state = State::kSlip;  // frictionless
+      continue;
+    }
+    r.state = vertex_slips[i] <= kStickSlipTolerance * largest_slip ? State::kStick : State::kSlip;
+    out.slipping_below_bound += r.state == State::kSlip && !r.at_bound;
+    out.sticking_at_bound += r.state == State::kStick && r.at_bound;
+  }
 }
 }  // namespace
 
@@ -92,6 +111,8 @@ ContactResult contact_output(const FoslsAssembler<2>& assembler, const Assembled
   double largest_bound = 0.0;  // of the slip bounds s̄_e
   for (const FrictionEdge& f : problem.friction.edges)
     largest_bound = std::max(largest_bound, problem.qp.upper[f.st]);
+  std::vector<double> vertex_slips;  // per edge of out.edges: set_friction_values
+  out.frictional = !problem.friction.edges.empty();
   for (int e : chain_order(space)) {
     ContactEdgeResult r;
     r.edge = e;
@@ -109,13 +130,14 @@ ContactResult contact_output(const FoslsAssembler<2>& assembler, const Assembled
     // σn = σ_nn n + σ_nt t; σ_nt = 0 on a frictionless contact edge.
     out.force_x += sn * ne.x();
     out.force_y += sn * ne.y();
-    set_friction_state(assembler, problem, x_full, largest_bound, r);
+    vertex_slips.push_back(set_friction_values(assembler, problem, x_full, largest_bound, r));
     if (r.shear != 0.0) {
       out.force_x += r.shear * len * -ne.y();
       out.force_y += r.shear * len * ne.x();
     }
     out.edges.push_back(r);
   }
+  set_states(vertex_slips, out);
   struct Adjacent {
     double pressure = 0, shear = 0;
     int edges = 0, state = 0;

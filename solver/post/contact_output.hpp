@@ -21,10 +21,19 @@ struct ContactEdgeResult {
   /// traction of the obstacle on the body (0 on a frictionless edge).
   double shear = 0;
   double slip = 0;  ///< u·t − its reference value, mean over the edge: the slip of the step
-  /// kOpen out of contact; in contact kStick below the slip bound, kSlip at it (always on a
-  /// frictionless edge).
+  /// kOpen out of contact; in contact kStick where the step's slip is zero at both vertices
+  /// (to kStickSlipTolerance of the largest), kSlip where it is not (always on a frictionless
+  /// edge).
   enum class State { kOpen, kStick, kSlip } state = State::kOpen;
+  /// |σ_nt| at the slip bound (to 1e-6 of the largest bound): what a slipping edge should be.
+  bool at_bound = false;
 };
+
+/// A contact edge sticks when the slip of the step at both its vertices is at most this times
+/// the largest over the contact edges in contact: the solvers hold a sticking U_t exactly at its
+/// kink (docs/method.md §8.3), so the slips there are 0 in floating point, and this only keeps
+/// a slip at the solver's tolerance from counting.
+inline constexpr double kStickSlipTolerance = 1e-6;
 
 const char* state_name(ContactEdgeResult::State state);
 
@@ -54,6 +63,11 @@ struct ContactResult {
   ContactZone zone() const;
   /// The edges in state kStick: `edges`, `length`, and the extent s_start..s_end.
   ContactZone stick_zone() const;
+  /// The state from the slip against |σ_nt| against the bound (a consistency check of the
+  /// discrete solution, docs/result-format.md): frictional edges in contact that slip with
+  /// |σ_nt| below the bound, and that stick with |σ_nt| at it.
+  int slipping_below_bound = 0, sticking_at_bound = 0;
+  bool frictional = false;  ///< some contact edge has friction
 };
 
 ContactResult contact_output(const FoslsAssembler<2>& assembler, const AssembledProblem& problem,

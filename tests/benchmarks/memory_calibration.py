@@ -9,14 +9,21 @@ by least squares on relative error and prints the table for docs/case-format.md 
 coefficients for solver/case/admission/resource_estimate.cpp.
 
     tests/benchmarks/memory_calibration.py build/bin/fosls-contact [--levels 4,5,6,7] [--hertz]
-        [--adaptive]
+        [--adaptive] [--coulomb CASE.json...]
 
 With --adaptive it also runs the shipped hertz_adaptive example to 6, 8 and 10 steps with mmg
 and tnnmg (solved to the end: the adaptive mesh depends on the solutions) and prints the factor
 by which its peak exceeds the uniform estimate for the same finest size: the
 kAdaptiveHierarchyFactor of solver/case/admission/resource_estimate.hpp.
 
-Only two iterations are run: the peak is reached while setting up (hierarchy, factorisation)
+With --coulomb it measures instead what Coulomb's fallback to pdas costs (issue 49): each case
+given (the robustness cases where mmg stalls, docs/validation.md §13) with Coulomb 𝔣 = 0.3 on
+every contact group, solved to the end by mmg (which hands a stalled solve to pdas below
+kFallbackMaxUnknowns) and by pdas, and frictionless by mmg, each peak against the estimate
+`fosls-contact estimate` prints for the case: the fallback_bytes of
+solver/case/admission/resource_estimate.hpp.
+
+Only two iterations are run (not with --coulomb): the peak is reached while setting up (hierarchy, factorisation)
 and in the first cycles; later iterations allocate nothing new.
 """
 import argparse
@@ -78,7 +85,11 @@ def main():
     ap.add_argument("--levels", default="4,5,6,7")
     ap.add_argument("--hertz", action="store_true", help="also the Hertz example (graded gmsh mesh)")
     ap.add_argument("--adaptive", action="store_true", help="also the adaptive hierarchy factor")
+    ap.add_argument("--coulomb", nargs="+", metavar="CASE",
+                    help="only the price of Coulomb's fallback, on these cases")
     args = ap.parse_args()
+    if args.coulomb:
+        return coulomb_fallback(args.cli, args.coulomb)
     base_case = json.loads(subprocess.check_output([args.cli, "example", "signorini_square"]))
     rows = []
     cases = [("square", base_case, int(r)) for r in args.levels.split(",")]
@@ -147,6 +158,50 @@ def adaptive_factor(cli, base, slopes):
                 print(f"| {steps} | {method} | {dofs} | {result['levels']} | {peak / 2**20:.0f} | "
                       f"{uniform / 2**20:.0f} | {factor:.2f} |", flush=True)
     print(f"largest factor {max(factors):.2f}")
+
+
+def with_friction(case, coefficient, method):
+    c = json.loads(json.dumps(case))
+    c["solver"] = dict(c.get("solver", {}), method=method)
+    for condition in c["boundary"].values():
+        if condition.get("type") == "contact":
+            condition.pop("friction", None)
+            if coefficient:
+                condition["friction"] = {"coefficient": coefficient}
+    return c
+
+
+def estimated_mib(cli, path, method):
+    """The memory `fosls-contact estimate` prints for `method` (its table of methods)."""
+    for line in subprocess.check_output([cli, "estimate", path], text=True).splitlines():
+        words = line.split()
+        if len(words) >= 3 and words[0] == method and words[2] == "MiB":
+            return float(words[1])
+    return float("nan")
+
+
+def coulomb_fallback(cli, paths):
+    """Peaks of Coulomb by mmg (with its fallback) and by pdas, and of frictionless mmg."""
+    print("| case | unknowns | run | where pdas took over | peak (MiB) | estimate (MiB) |")
+    print("|---|---|---|---|---|---|")
+    runs = [("frictionless, mmg", 0.0, "mmg"), ("Coulomb 0.3, mmg", 0.3, "mmg"),
+            ("Coulomb 0.3, pdas", 0.3, "pdas")]
+    with tempfile.TemporaryDirectory() as tmp:
+        for path in paths:
+            with open(path) as f:
+                case = json.load(f)
+            for label, coefficient, method in runs:
+                c = with_friction(case, coefficient, method)
+                case_path = f"{tmp}/case.json"
+                with open(case_path, "w") as f:
+                    json.dump(c, f)
+                peak, _, out = peak_of([cli, "solve", case_path, "--quiet", "--vtu", f"{tmp}/s.vtu"])
+                result = json.loads(out)
+                switched = (result.get("friction") or {}).get("fallback_after")
+                print(f"| {c.get('name', path)} | {result['dofs_total']} | {label} | "
+                      f"{switched if switched else '—'} | {peak / 2**20:.0f} | "
+                      f"{estimated_mib(cli, case_path, method):.0f} |", flush=True)
+    return 0
 
 
 if __name__ == "__main__":

@@ -12,6 +12,9 @@ With --load-steps the shipped example cattaneo_mindlin is solved as it is shippe
 step 0, then shifted by 0.001 and 0.002 in steps 1 and 2, each from the previous step's solution
 (the slip measured from it); its shift steps are compared.
 
+The stick zone is the result's (edges whose vertices did not slip in the step, docs/result-format.md);
+the last column reads it as before issue 49, from |σ_nt| below the bound 𝔣p.
+
 usage: cattaneo_mindlin.py FOSLS_CONTACT [--load-steps] [refinements ...]
 """
 import json
@@ -62,6 +65,12 @@ def compare(r):
     p0 = 2 * P / (math.pi * a)
     ratio = math.sqrt(max(0.0, 1 - Q / (F * P)))
     stick = c["stick_zone"]["length"] / 2 / a
+    # The state as it was read before issue 49: stick where |σ_nt| is below the bound 𝔣p (to
+    # 1e-4 of the largest bound: the bound is that of the last update, 𝔣p the final iterate's).
+    largest = F * max(c["pressure"])
+    below = [l for s, p, l, on in zip(c["shear"], c["pressure"], c["length"], c["active"])
+             if on and abs(s) < F * p - 1e-4 * largest]
+    stick_by_traction = sum(below) / 2 / a
     num = den = 0.0
     for x, s, l, active in zip(c["x"], c["shear"], c["length"], c["active"]):
         xi = (x - x0) / a
@@ -73,8 +82,11 @@ def compare(r):
         num += (abs(s) - ref) ** 2 * l
         den += ref * ref * l
     return {"Q/fP": Q / (F * P), "c/a": stick, "theory c/a": ratio,
+            "c/a by traction": stick_by_traction,
             "shear L2": math.sqrt(num / den) if den else float("nan"),
             "edges in zone": c["zone"]["edges"], "iterations": r["iterations"],
+            "stick edges": c["stick_zone"]["edges"],
+            "slip below bound": c["stick_zone"].get("slipping_below_bound", "—"),
             "updates": r.get("friction", {}).get("updates")}
 
 
@@ -83,8 +95,9 @@ def main():
     load_steps = "--load-steps" in sys.argv[2:]
     levels = [int(v) for v in sys.argv[2:] if v != "--load-steps"] or [3, 4, 5]
     print("| refinements | shift | edges in zone | Q/(𝔣P) | c/a computed | √(1 − Q/𝔣P) | "
-          "shear rel. L2 | mmg iterations | updates |")
-    print("|---|---|---|---|---|---|---|---|---|")
+          "shear rel. L2 | mmg iterations | updates | stick edges | slipping below bound | "
+          "c/a by traction |")
+    print("|---|---|---|---|---|---|---|---|---|---|---|---|")
     for r in levels:
         if load_steps:
             runs = stepped(solve(binary, shipped(binary, r)))
@@ -94,7 +107,8 @@ def main():
             m = compare(result)
             print(f"| {r} | {shift} | {m['edges in zone']} | {m['Q/fP']:.3f} | {m['c/a']:.3f} | "
                   f"{m['theory c/a']:.3f} | {m['shear L2']:.3f} | {m['iterations']} | "
-                  f"{m['updates']} |", flush=True)
+                  f"{m['updates']} | {m['stick edges']} | {m['slip below bound']} | "
+                  f"{m['c/a by traction']:.3f} |", flush=True)
 
 
 if __name__ == "__main__":

@@ -138,7 +138,13 @@ std::vector<CaseError> check_size(const CaseSpec& spec, const ProblemCount& coun
   return errors;
 }
 
-ResourceEstimate admission_estimate(const CaseSpec& spec, const ProblemCount& count) {
+ResourceEstimate admission_estimate(const CaseSpec& spec, const ProblemCount& counted) {
+  // Coulomb with mmg may fall back to pdas (solvers/coulomb_fallback.hpp): the estimate prices it.
+  ProblemCount count = counted;
+  count.coulomb = std::any_of(spec.boundary.begin(), spec.boundary.end(), [](const auto& b) {
+    return b.second.type == BoundaryCondition::Type::kContact &&
+           b.second.friction_coefficient > 0.0;
+  });
   ResourceEstimate estimate = estimate_resources(count, spec.solver.method);
   // An adaptive run may grow up to adaptivity.max_dofs: admit it for that size.
   if (spec.adaptivity && spec.adaptivity->steps > 0) {

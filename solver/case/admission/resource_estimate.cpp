@@ -5,6 +5,7 @@
 #include <cstdio>
 
 #include "case/admission/memory_size.hpp"
+#include "solvers/coulomb_fallback.hpp"
 
 namespace fosls {
 
@@ -71,6 +72,7 @@ ResourceEstimate priced(long long unknowns, const ProblemCount& count, SolverMet
   e.order = count.order;
   e.coarse_unknowns = count.coarse_unknowns;
   e.dimension = count.dimension;
+  e.coulomb = count.coulomb;
   const double base = count.dimension == 3 ? kSolveBaseBytes3d : kSolveBaseBytes;
   const double slope = slope_factor * bytes_per_unknown(method, count.order, count.dimension) *
                        static_cast<double>(unknowns);
@@ -80,11 +82,26 @@ ResourceEstimate priced(long long unknowns, const ProblemCount& count, SolverMet
   else if (multilevel(method))
     e.factorisation_bytes =
         direct_factorisation_bytes(count.coarse_unknowns, method, count.dimension);
-  e.memory_bytes = base + slope + e.factorisation_bytes;
+  ProblemCount finest = count;
+  finest.unknowns = unknowns;
+  e.fallback_bytes = fallback_bytes(finest, method);
+  e.memory_bytes = base + slope + e.factorisation_bytes + e.fallback_bytes;
   return e;
 }
 
 }  // namespace
+
+double fallback_bytes(const ProblemCount& count, SolverMethod method) {
+  // solvers/solve_loop.cpp switches only mmg on a 2D Coulomb problem of at most this size.
+  if (!count.coulomb || method != SolverMethod::kMmg || count.dimension != 2 ||
+      count.unknowns > kFallbackMaxUnknowns)
+    return 0;
+  const double n = static_cast<double>(count.unknowns);
+  const double pdas = std::max(bytes_per_unknown(SolverMethod::kPdas, count.order, 2) * n,
+                               direct_factorisation_bytes(count.unknowns, SolverMethod::kPdas, 2));
+  return kFallbackShare *
+         std::max(0.0, pdas - bytes_per_unknown(SolverMethod::kMmg, count.order, 2) * n);
+}
 
 ResourceEstimate estimate_resources(const ProblemCount& count, SolverMethod method) {
   return priced(count.unknowns, count, method, 1.0);
@@ -114,7 +131,12 @@ std::string describe(const ResourceEstimate& e, SolverMethod method) {
   std::string s = std::string(text) + " for " + (e.unknowns_exact ? "" : "about ") +
                   std::to_string(e.unknowns) + " unknowns with " + names[static_cast<int>(method)];
   // Say where the memory goes when the direct factorisation is a large part of it.
-  if (e.factorisation_bytes > 0.25 * e.memory_bytes)
+  if (e.fallback_bytes > 0.25 * e.memory_bytes)
+    s += " (" + format_bytes(e.fallback_bytes) +
+         " of it for Coulomb's fallback to pdas, which factorises the whole problem where mmg "
+         "stalls, up to " +
+         std::to_string(kFallbackMaxUnknowns) + " unknowns)";
+  else if (e.factorisation_bytes > 0.25 * e.memory_bytes)
     s += method == SolverMethod::kPdas
              ? " (its direct factorisation)"
              : " (" + format_bytes(e.factorisation_bytes) + " of it the direct factorisation of " +

@@ -33,6 +33,9 @@ struct ProblemCount {
   bool exact = false;  ///< false when the coarse mesh was estimated, not built
   int order = 1;       ///< mesh.order
   int dimension = 2;
+  /// Coulomb friction on some contact group: mmg may hand a stalled step to pdas, which
+  /// factorises the whole problem (solvers/coulomb_fallback.hpp).
+  bool coulomb = false;
 };
 
 /// 2D direct factorisations, bytes per N log₂ N (measured on the square at refinements 0, less
@@ -73,13 +76,28 @@ struct ResourceEstimate {
   /// Of memory_bytes, the direct factorisation of the coarsest level (mmg, tnnmg) or of the
   /// whole problem where it exceeds pdas's slope.
   double factorisation_bytes = 0;
+  bool coulomb = false;  ///< ProblemCount::coulomb
+  /// Of memory_bytes, what Coulomb's fallback to pdas adds to mmg's solve (0 where it cannot
+  /// run): fallback_bytes().
+  double fallback_bytes = 0;
   ProblemCount count() const {
-    return {unknowns, coarse_unknowns, unknowns_exact, order, dimension};
+    return {unknowns, coarse_unknowns, unknowns_exact, order, dimension, coulomb};
   }
 };
 
-/// mmg and tnnmg: their slope on the finest level and the direct factorisation of the coarsest;
-/// pdas: the larger of its slope and the factorisation of the whole problem; pgs: its slope.
+/// What Coulomb's fallback adds to an mmg solve of `count` (0 where it cannot run: no Coulomb,
+/// another method, 3D, or more unknowns than kFallbackMaxUnknowns): mmg's hierarchy and
+/// iterate stay while pdas factorises the whole problem, so the peak is mmg's plus pdas's
+/// above what the two share (the base and the finest level's matrix and vectors):
+/// pdas's estimate less the base and mmg's slope, times kFallbackShare. Measured with
+/// tests/benchmarks/memory_calibration.py --coulomb (docs/case-format.md, "Resources").
+double fallback_bytes(const ProblemCount& count, SolverMethod method);
+/// The part of pdas's estimate above the base and mmg's slope that a fallback adds (measured).
+inline constexpr double kFallbackShare = 1.0;
+
+/// mmg and tnnmg: their slope on the finest level and the direct factorisation of the coarsest,
+/// mmg with Coulomb plus fallback_bytes(); pdas: the larger of its slope and the factorisation
+/// of the whole problem; pgs: its slope.
 ResourceEstimate estimate_resources(const ProblemCount& count, SolverMethod method);
 
 /// An adaptive run's peak: its finest level has at most `max_dofs` unknowns, and mmg and tnnmg

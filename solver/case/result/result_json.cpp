@@ -99,6 +99,10 @@ json contact_json(const ContactResult& contact) {
                      {"length", stick.length},
                      {"s_start", stick.edges ? json(stick.s_start) : json(nullptr)},
                      {"s_end", stick.edges ? json(stick.s_end) : json(nullptr)}};
+  if (contact.frictional) {
+    c["stick_zone"]["slipping_below_bound"] = contact.slipping_below_bound;
+    c["stick_zone"]["sticking_at_bound"] = contact.sticking_at_bound;
+  }
   c["force"] = {contact.force_x, contact.force_y};
   const ContactZone z = contact.zone();
   c["zone"] = {{"edges", z.edges},

@@ -202,6 +202,12 @@ ObjectRulePtr friction_result_rule() {
                     "mmg finished (docs/method.md §8.4)")});
 }
 
+/// A field the result has only with friction (the frictionless result stays as it was).
+FieldRule friction_only(FieldRule f) {
+  f.required = false;
+  return f;
+}
+
 ObjectRulePtr stick_zone_rule() {
   ValueRule where = number_or_null();
   return object_rule("the stick zone", "stick_zone",
@@ -210,7 +216,16 @@ ObjectRulePtr stick_zone_rule() {
                       output_field("s_start", where, "L",
                                    "arc length at the start of the first stick edge (null: none)"),
                       output_field("s_end", where, "L",
-                                   "arc length at the end of the last stick edge (null: none)")});
+                                   "arc length at the end of the last stick edge (null: none)"),
+                      friction_only(output_field(
+                          "slipping_below_bound", count(), "1",
+                          "with friction only: frictional edges in contact that slip with "
+                          "|σ_nt| below the slip bound (a consistency check of the discrete "
+                          "solution)")),
+                      friction_only(output_field(
+                          "sticking_at_bound", count(), "1",
+                          "with friction only: frictional edges that stick with |σ_nt| at the "
+                          "bound"))});
 }
 
 ObjectRulePtr contact_rule() {
@@ -243,8 +258,10 @@ ObjectRulePtr contact_rule() {
                    "previous load step; zero without one), mean over the edge"),
       output_field("state", list_value(choice_value({"open", "stick", "slip"}), "per contact edge"),
                    "",
-                   "open: not in contact; stick: in contact with |σ_nt| below the slip "
-                   "bound; slip: at the bound (every edge in contact on frictionless contact)"),
+                   "open: not in contact; stick: in contact and not slipping in this load "
+                   "step (the slip of the step zero at both vertices, to 1e-6 of the largest); "
+                   "slip: in contact and slipping (every edge in contact on frictionless "
+                   "contact)"),
       output_field("stick_zone", object_value(stick_zone_rule()), "",
                    "where the body sticks: the edges in state stick"),
       output_field("shape", object_value(shape_rule()), "",
