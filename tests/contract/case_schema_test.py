@@ -145,10 +145,11 @@ BOTH_REFUSE_3D = [
 # Read in 3D, and refused there for now (docs/case-format.md, "3D cases"): the schema accepts.
 READER_ONLY_3D = [
     ("3d_friction", setting("/boundary/bottom/friction", {"coefficient": 0.3})),
-    ("3d_tnnmg", setting("/solver/method", "tnnmg")),
 ]
 
 BOTH_ACCEPT_3D = [
+    ("3d_tnnmg", setting("/solver/method", "tnnmg")),
+    ("3d_pgs", setting("/solver/method", "pgs")),
     ("3d_sphere", setting("/boundary/bottom", {
         "type": "contact", "obstacle": {"type": "sphere", "center": [0.5, 0.5, -10], "radius": 10}})),
     ("3d_expression_body_force", setting("/body_force", [0, 0, "0.01*z"])),
