@@ -6,7 +6,7 @@
 namespace fosls {
 
 PdasStep::PdasStep(const BoxQp& qp, double complement_min_flops)
-    : qp_(qp), m_(qp.A), diagonal_(qp.A.diagonal()) {
+    : qp_(qp), diagonal_(qp.A.diagonal()) {
   std::vector<int> bounded;
   for (int i = 0; i < qp.size(); ++i)
     if (is_bounded_above(qp.upper[i]) || is_bounded_below(qp.lower[i])) bounded.push_back(i);
@@ -50,8 +50,13 @@ void PdasStep::hold_active_rows(const std::vector<char>& active) {
 void PdasStep::solve_by_factorisation(const std::vector<char>& active, const Vector& psi,
                                       Vector& x) {
   const int n = qp_.size();
-  if (!analysed_) analyse_checked(llt_, m_);
-  analysed_ = true;
+  if (!analysed_) {
+    // The held-rows matrix's storage only where it is used (a copy of A: the complement's path
+    // does without it).
+    m_ = qp_.A;
+    analyse_checked(llt_, m_);
+    analysed_ = true;
+  }
   // M = A with active rows/columns replaced by the identity; same pattern as A.
   Vector rhs = qp_.b;
   Vector apsi;

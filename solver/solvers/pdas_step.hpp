@@ -48,7 +48,7 @@ class PdasStep : public IterationStep {
   SparseMatrix m_;
   Vector diagonal_;
   Eigen::CholmodSupernodalLLT<SparseMatrix> llt_;
-  bool analysed_ = false;
+  bool analysed_ = false;  // m_ and llt_'s pattern: on the first factorisation
   std::unique_ptr<BoundedComplementSolver> complement_;
   std::vector<char> current_;
   bool first_ = true;
