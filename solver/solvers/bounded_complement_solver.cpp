@@ -61,8 +61,10 @@ bool BoundedComplementSolver::analyse(SparseMatrix& a, const std::vector<int>& b
   cholmod_sparse view = view_lower(a);
   cholmod_factor* plain = cholmod_analyze(&view, &common_);
   check_cholmod_status(common_, "the symbolic analysis");
-  const double dense_flops = std::pow(static_cast<double>(bounded.size()), 3);
-  if (common_.fl < min_flops || dense_flops > common_.fl) {
+  // Forming G (|B|³ flops) and each G_HH's factorisation (≤ |B|³/3) a tenth of a sparse
+  // factorisation at most, and G no larger than the factor.
+  const double m = static_cast<double>(bounded.size());
+  if (common_.fl < min_flops || m * m * m > 0.1 * common_.fl || m * m > common_.lnz) {
     cholmod_free_factor(&plain, &common_);
     return false;
   }

@@ -25,8 +25,9 @@ class BoundedComplementSolver {
  public:
   /// The solver for A (symmetric positive definite, both triangles stored) and the bounded DOFs
   /// `bounded`, or null where it does not apply or pay: a factorisation of A of fewer than
-  /// `min_flops` (CHOLMOD's count from the analysis), |B|³ above that count, A not positive
-  /// definite, or the bounded DOFs not last in the postordered factor. The caller then
+  /// `min_flops` (CHOLMOD's count from the analysis), |B|³ above a tenth of that count or |B|²
+  /// above the factor's entries, A not positive definite, or the bounded DOFs not last in the
+  /// postordered factor. The caller then
   /// factorises per active set, as before.
   static std::unique_ptr<BoundedComplementSolver> make(const SparseMatrix& a,
                                                        const std::vector<int>& bounded,
