@@ -5,8 +5,12 @@
 
 namespace fosls {
 
-PdasStep::PdasStep(const BoxQp& qp) : qp_(qp), m_(qp.A), diagonal_(qp.A.diagonal()) {
-  analyse_checked(llt_, m_);
+PdasStep::PdasStep(const BoxQp& qp, double complement_min_flops)
+    : qp_(qp), diagonal_(qp.A.diagonal()) {
+  std::vector<int> bounded;
+  for (int i = 0; i < qp.size(); ++i)
+    if (is_bounded_above(qp.upper[i]) || is_bounded_below(qp.lower[i])) bounded.push_back(i);
+  complement_ = BoundedComplementSolver::make(qp.A, bounded, complement_min_flops);
 }
 
 std::vector<char> PdasStep::next_active_set(const Vector& x, const Vector& r) {
@@ -43,14 +47,18 @@ void PdasStep::hold_active_rows(const std::vector<char>& active) {
     }
 }
 
-void PdasStep::iterate(Vector& x, Vector& r) {
+void PdasStep::solve_by_factorisation(const std::vector<char>& active, const Vector& psi,
+                                      Vector& x) {
   const int n = qp_.size();
-  const std::vector<char> active = next_active_set(x, r);
+  if (!analysed_) {
+    // The held-rows matrix's storage only where it is used (a copy of A: the complement's path
+    // does without it).
+    m_ = qp_.A;
+    analyse_checked(llt_, m_);
+    analysed_ = true;
+  }
   // M = A with active rows/columns replaced by the identity; same pattern as A.
   Vector rhs = qp_.b;
-  Vector psi = Vector::Zero(n);
-  for (int i = 0; i < n; ++i)
-    if (active[i]) psi[i] = bound(active[i], i);
   Vector apsi;
   symmetric_multiply(qp_.A, psi, apsi);
   for (int i = 0; i < n; ++i) rhs[i] = active[i] ? psi[i] : rhs[i] - apsi[i];
@@ -58,6 +66,16 @@ void PdasStep::iterate(Vector& x, Vector& r) {
   if (!factorize_checked(llt_, m_))
     throw IndefiniteSystemError("CHOLMOD: the matrix is not positive definite");
   x = solve_checked(llt_, rhs);
+}
+
+void PdasStep::iterate(Vector& x, Vector& r) {
+  const int n = qp_.size();
+  const std::vector<char> active = next_active_set(x, r);
+  Vector psi = Vector::Zero(n);
+  for (int i = 0; i < n; ++i)
+    if (active[i]) psi[i] = bound(active[i], i);
+  if (!complement_ || !complement_->solve(active, qp_.b, psi, x))
+    solve_by_factorisation(active, psi, x);
   for (int i = 0; i < n; ++i)
     if (active[i]) x[i] = bound(active[i], i);
   Vector ax;
