@@ -107,7 +107,7 @@ TEST(AdaptivitySection, AdmissionCountsTheUnknownsMaxDofsAllows) {
   EXPECT_EQ(adaptive.estimate->unknowns, 500000);
   EXPECT_GT(adaptive.estimate->memory_bytes, uniform.estimate->memory_bytes);
   // Too large for a budget: the error names the field to change.
-  const auto e = check_memory_budget(*adaptive.estimate, SolverMethod::kMmg, 1e8, "the budget");
+  const auto e = check_memory_budget(*adaptive.estimate, *adaptive.spec, 1e8, "the budget");
   ASSERT_TRUE(e);
   EXPECT_EQ(e->pointer, "/adaptivity/max_dofs");
   EXPECT_NE(e->detail.find("lower adaptivity.max_dofs"), std::string::npos) << e->detail;

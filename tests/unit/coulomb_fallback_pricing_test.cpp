@@ -68,6 +68,8 @@ TEST(CoulombFallbackPricing, ABudgetWithoutRoomForTheFallbackRefusesTheCase) {
   EXPECT_EQ(coulomb.errors[0].pointer, "/mesh/refinements");
   EXPECT_NE(coulomb.errors[0].detail.find("Coulomb's fallback to pdas"), std::string::npos)
       << coulomb.errors[0].detail;
+  // tnnmg would fit the budget but has no friction: the advice does not offer it.
+  EXPECT_EQ(coulomb.errors[0].detail.find("tnnmg"), std::string::npos) << coulomb.errors[0].detail;
   for (auto& [name, condition] : j["boundary"].items()) condition.erase("friction");
   const CaseAdmission frictionless = admit_case(j, options);
   EXPECT_TRUE(frictionless.errors.empty());

@@ -127,8 +127,8 @@ std::vector<CaseError> check_size(const CaseSpec& spec, const ProblemCount& coun
                                   ", more than the limit of " + std::to_string(limits.max_dofs) +
                                   "; use fewer refinements or a coarser " + coarser(spec)});
   if (limits.max_memory_bytes > 0)
-    if (auto e = check_memory_budget(admission_estimate(spec, count), spec.solver.method,
-                                     limits.max_memory_bytes, limits.memory_budget_name)) {
+    if (auto e = check_memory_budget(admission_estimate(spec, count), spec, limits.max_memory_bytes,
+                                     limits.memory_budget_name)) {
       e->detail = built + e->detail;
       errors.push_back(std::move(*e));
     }
@@ -219,9 +219,10 @@ CaseAdmission admit_case(const nlohmann::json& j, const CaseReadOptions& options
   return out;
 }
 
-std::optional<CaseError> check_memory_budget(const ResourceEstimate& estimate, SolverMethod method,
+std::optional<CaseError> check_memory_budget(const ResourceEstimate& estimate, const CaseSpec& spec,
                                              double budget_bytes, const std::string& budget_name) {
   if (estimate.memory_bytes <= budget_bytes) return std::nullopt;
+  const SolverMethod method = spec.solver.method;
   const bool adaptive = estimate.limited_by == "/adaptivity/max_dofs";
   const bool accuracy = estimate.limited_by == "/accuracy/max_dofs";
   std::string advice = adaptive   ? "lower adaptivity.max_dofs"
@@ -229,11 +230,12 @@ std::optional<CaseError> check_memory_budget(const ResourceEstimate& estimate, S
                                     "accuracy if it needs more), or ask a larger accuracy.force"
                        : estimate.dimension == 3 ? "use fewer refinements or a coarser mesh"
                                                  : "use fewer refinements or a coarser mesh.size";
-  // Another method only if it converges on fine meshes (not pgs), runs this case and fits; the
+  // Another method only if it converges on fine meshes (not pgs), solves this case and fits; the
   // accuracy loop's largest level is the thing to lower, whatever the method.
   for (const MethodInfo& m : solver_methods()) {
-    if (accuracy || m.method == method || !converges_on_fine_meshes(m.method)) continue;
-    if (estimate.order == 2 && m.method == SolverMethod::kTnnmg) continue;  // mmg or pdas only
+    if (accuracy || m.method == method || !converges_on_fine_meshes(m.method) ||
+        !method_solves(m.method, spec))
+      continue;
     const ResourceEstimate other =
         adaptive ? estimate_adaptive_resources(estimate.unknowns, estimate.count(), m.method)
                  : estimate_resources(estimate.count(), m.method);

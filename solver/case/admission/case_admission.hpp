@@ -51,9 +51,9 @@ std::vector<CaseError> check_size(const CaseSpec& spec, const ProblemCount& coun
                                   const CaseLimits& limits);
 
 /// The problem (at estimate.limited_by) of an estimate above a memory budget, naming both and
-/// what to change — among methods, only those that converge on fine meshes and fit; nothing
-/// when it fits.
-std::optional<CaseError> check_memory_budget(const ResourceEstimate& estimate, SolverMethod method,
+/// what to change — among methods, only those that solve `spec`, converge on fine meshes and
+/// fit; nothing when it fits.
+std::optional<CaseError> check_memory_budget(const ResourceEstimate& estimate, const CaseSpec& spec,
                                              double budget_bytes, const std::string& budget_name);
 
 }  // namespace fosls

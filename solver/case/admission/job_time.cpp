@@ -16,19 +16,13 @@ namespace {
 /// levels grow step by step, so most of its solves are far smaller than the last.
 constexpr double kAdaptiveSolves = 3.0;
 
-bool frictional(const CaseSpec& spec) {
-  return std::any_of(spec.boundary.begin(), spec.boundary.end(), [](const auto& b) {
-    return b.second.type == BoundaryCondition::Type::kContact && b.second.frictional();
-  });
-}
-
 /// The iterations a solve of `point` is priced at: the fits' count, or fewer when
 /// solver.max_iterations stops it first; with friction every one max_iterations allows, since
 /// Coulomb's slip bounds are a fixed point the method does not bound (docs/method.md §8: 20–47
 /// iterations where it settles, not within 200 at 5 refinements of the Hertz case).
 int priced_iterations(const CaseSpec& point, int fitted) {
   const int most = point.solver.max_iterations;
-  return frictional(point) ? most : std::min(most, fitted);
+  return has_friction(point) ? most : std::min(most, fitted);
 }
 
 /// Seconds of one solve of `point` on `count`: the fitted estimate scaled to its priced
@@ -109,7 +103,7 @@ std::string describe_time(const CaseTimeEstimate& e, const CaseSpec& spec,
     return text + method + " on levels of up to " +
            std::to_string(accuracy_largest_unknowns(unknowns, spec.accuracy->max_dofs)) +
            " DOFs (accuracy.max_dofs), all levels together about 4/3 of the largest";
-  if (frictional(spec))
+  if (has_friction(spec))
     return text + "up to " + std::to_string(solver.max_iterations) + " " + method +
            " iterations (solver.max_iterations: with friction the slip bounds may need every "
            "one) on about " +
@@ -123,7 +117,8 @@ std::string advice(const CaseTimeEstimate& e, const CaseSpec& spec, const Proble
   std::vector<std::string> options;
   const SolverMethod method = spec.solver.method;
   for (const MethodInfo& m : solver_methods()) {
-    if (m.method == method || !converges_on_fine_meshes(m.method)) continue;
+    if (m.method == method || !converges_on_fine_meshes(m.method) || !method_solves(m.method, spec))
+      continue;
     CaseSpec other = spec;
     other.solver.method = m.method;
     for (CaseSpec& point : other.sweep_points) point.solver.method = m.method;
@@ -133,7 +128,7 @@ std::string advice(const CaseTimeEstimate& e, const CaseSpec& spec, const Proble
                         describe_seconds(t.seconds) + " in all)");
   }
   if (e.points > 1) options.push_back("fewer sweep values");
-  if (method == SolverMethod::kPgs || frictional(spec))
+  if (method == SolverMethod::kPgs || has_friction(spec))
     options.push_back("fewer solver.max_iterations");
   if (spec.accuracy)
     options.push_back("a larger accuracy.force or a lower accuracy.max_dofs");
@@ -187,7 +182,7 @@ CaseTimeEstimate estimate_case_time(const CaseSpec& spec, const ProblemCount& co
   const bool accuracy_size =
       spec.accuracy && accuracy_largest_unknowns(unknowns, spec.accuracy->max_dofs) > unknowns;
   e.limited_by = e.bounded_by_time_limit ? "/solver/time_limit_s"
-                 : spec.solver.method == SolverMethod::kPgs || frictional(spec)
+                 : spec.solver.method == SolverMethod::kPgs || has_friction(spec)
                      ? "/solver/max_iterations"
                  : e.points > 1 && !spec.load_step_points.empty() ? "/load_steps"
                  : e.points > 1                                   ? "/sweep/values"

@@ -50,10 +50,7 @@ void settle_accuracy_refinement(CaseSpec& spec, std::vector<CaseError>& errors) 
   if (!spec.accuracy) return;
   AccuracySpec& a = *spec.accuracy;
   if (!a.refinement_given) a.adaptive = spec.dimension == 3;
-  const bool frictional = std::any_of(spec.boundary.begin(), spec.boundary.end(), [](auto& b) {
-    return b.second.type == BoundaryCondition::Type::kContact && b.second.frictional();
-  });
-  const char* why = frictional             ? "with friction"
+  const char* why = has_friction(spec)     ? "with friction"
                     : spec.mesh.order == 2 ? "with mesh.order 2"
                                            : nullptr;
   if (!why) return;

@@ -69,11 +69,7 @@ namespace {
 
 /// What friction is not (yet) combined with (docs/method.md §8.5).
 void check_friction_support(const CaseSpec& spec, std::vector<CaseError>& errors) {
-  const bool frictional =
-      std::any_of(spec.boundary.begin(), spec.boundary.end(), [](const auto& b) {
-        return b.second.type == BoundaryCondition::Type::kContact && b.second.frictional();
-      });
-  if (!frictional) return;
+  if (!has_friction(spec)) return;
   if (spec.solver.method == SolverMethod::kTnnmg)
     errors.push_back(
         {"/solver/method", "tnnmg does not handle friction; use mmg (the default) or pdas"});

@@ -168,4 +168,19 @@ inline bool has_contact(const CaseSpec& spec) {
   return false;
 }
 
+/// Whether some contact group of the case has friction (Tresca or Coulomb).
+inline bool has_friction(const CaseSpec& spec) {
+  for (const auto& [name, bc] : spec.boundary)
+    if (bc.type == BoundaryCondition::Type::kContact && bc.frictional()) return true;
+  return false;
+}
+
+/// Whether `method` may solve the case; the reader refuses the others (case_reader.cpp): tnnmg
+/// has no friction, and order 2 is solved by mmg or pdas only. The admission's advice offers
+/// only these.
+inline bool method_solves(SolverMethod method, const CaseSpec& spec) {
+  if (method == SolverMethod::kTnnmg && has_friction(spec)) return false;
+  return spec.mesh.order != 2 || method == SolverMethod::kMmg || method == SolverMethod::kPdas;
+}
+
 }  // namespace fosls
