@@ -38,8 +38,7 @@ std::unique_ptr<BoundedComplementSolver> BoundedComplementSolver::make(
   // Eigen's CholmodSupernodalLLT's settings.
   solver->common_.final_asis = 1;
   solver->common_.supernodal = CHOLMOD_SUPERNODAL;
-  SparseMatrix& matrix = const_cast<SparseMatrix&>(a);
-  if (bounded.empty() || !solver->analyse(matrix, bounded, min_flops)) return nullptr;
+  if (bounded.empty() || !solver->analyse(a, bounded, min_flops)) return nullptr;
   cholmod_sparse view = view_lower(a);
   cholmod_factorize(&view, solver->factor_, &solver->common_);
   check_cholmod_status(solver->common_, "the factorisation");
@@ -56,7 +55,7 @@ BoundedComplementSolver::~BoundedComplementSolver() {
   cholmod_finish(&common_);
 }
 
-bool BoundedComplementSolver::analyse(SparseMatrix& a, const std::vector<int>& bounded,
+bool BoundedComplementSolver::analyse(const SparseMatrix& a, const std::vector<int>& bounded,
                                       double min_flops) {
   cholmod_sparse view = view_lower(a);
   cholmod_factor* plain = cholmod_analyze(&view, &common_);

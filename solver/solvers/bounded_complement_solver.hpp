@@ -44,7 +44,7 @@ class BoundedComplementSolver {
   BoundedComplementSolver() = default;
   /// Orders A with CHOLMOD's default methods, then again with the bounded DOFs moved last;
   /// false when the postordered factor does not keep them last.
-  bool analyse(SparseMatrix& a, const std::vector<int>& bounded, double min_flops);
+  bool analyse(const SparseMatrix& a, const std::vector<int>& bounded, double min_flops);
   /// G = L_BB⁻ᵀ L_BB⁻¹ from the trailing block of the supernodal factor.
   void invert_complement();
   /// A⁻¹ b with the factor.

@@ -17,7 +17,6 @@
 #include <vector>
 
 #include "solvers/bounded_complement_solver.hpp"
-
 #include "solvers/iteration_step.hpp"
 
 namespace fosls {

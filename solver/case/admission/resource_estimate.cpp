@@ -99,8 +99,7 @@ double fallback_bytes(const ProblemCount& count, SolverMethod method) {
   const double n = static_cast<double>(count.unknowns);
   const double pdas = std::max(bytes_per_unknown(SolverMethod::kPdas, count.order, 2) * n,
                                direct_factorisation_bytes(count.unknowns, SolverMethod::kPdas, 2));
-  return kFallbackShare *
-         std::max(0.0, pdas - bytes_per_unknown(SolverMethod::kMmg, count.order, 2) * n);
+  return std::max(0.0, pdas - bytes_per_unknown(SolverMethod::kMmg, count.order, 2) * n);
 }
 
 ResourceEstimate estimate_resources(const ProblemCount& count, SolverMethod method) {

@@ -89,11 +89,9 @@ struct ResourceEstimate {
 /// another method, 3D, or more unknowns than kFallbackMaxUnknowns): mmg's hierarchy and
 /// iterate stay while pdas factorises the whole problem, so the peak is mmg's plus pdas's
 /// above what the two share (the base and the finest level's matrix and vectors):
-/// pdas's estimate less the base and mmg's slope, times kFallbackShare. Measured with
+/// pdas's estimate less the base and mmg's slope. Measured with
 /// tests/benchmarks/memory_calibration.py --coulomb (docs/case-format.md, "Resources").
 double fallback_bytes(const ProblemCount& count, SolverMethod method);
-/// The part of pdas's estimate above the base and mmg's slope that a fallback adds (measured).
-inline constexpr double kFallbackShare = 1.0;
 
 /// mmg and tnnmg: their slope on the finest level and the direct factorisation of the coarsest,
 /// mmg with Coulomb plus fallback_bytes(); pdas: the larger of its slope and the factorisation
