@@ -66,7 +66,9 @@ void expect_complement_matches_factorisation(const BoxQp& qp) {
     const Vector fresh = solve_held_rows(qp.A, held, qp.b, psi);
     EXPECT_LE((x - fresh).norm(), 1e-10 * fresh.norm()) << "round " << round;
     for (int i = 0; i < qp.size(); ++i)
-      if (held[i]) EXPECT_EQ(x[i], psi[i]);
+      if (held[i]) {
+        EXPECT_EQ(x[i], psi[i]);
+      }
   }
 }
 

@@ -311,8 +311,9 @@ TEST(AccuracyAdmission, AnAdaptiveLoopNeedsTwiceTheUnknownsAUniformOneTwoAndAHal
   const CaseAdmission tight = admitted_accuracy("adaptive", 1.8, "mmg");
   ASSERT_TRUE(refused_at(tight, "/accuracy/max_dofs"));
   for (const CaseError& e : tight.errors)
-    if (e.pointer == "/accuracy/max_dofs")
+    if (e.pointer == "/accuracy/max_dofs") {
       EXPECT_NE(e.detail.find("twice as many"), std::string::npos) << e.detail;
+    }
 }
 
 TEST(AccuracyAdmission, AnAdaptiveLoopIsPricedWithTheBisectionHierarchy) {
