@@ -36,12 +36,7 @@ struct BisectionState {
 /// is its refinement edge; all generations equal `generation`.
 BisectionState longest_edge_state(const Mesh& mesh, int generation = 0);
 
-/// One refinement step.
-struct Bisection {
-  Mesh fine;
-  RefinementMaps maps;
-  BisectionState state;
-};
+using Bisection = BisectionStep<Mesh, RefinementMaps, BisectionState>;
 
 /// Refines the marked triangles (indices into `mesh`, repetitions allowed) and the closure
 /// that keeps the mesh conforming. Fine triangles are ordered by their coarse parent; a kept

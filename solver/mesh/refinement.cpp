@@ -74,16 +74,7 @@ Refinement refine_uniformly(const Mesh& coarse) {
 }
 
 MeshHierarchy build_mesh_hierarchy(Mesh coarse, int refinements) {
-  if (refinements < 0) throw std::invalid_argument("refinements must be non-negative");
-  MeshHierarchy h;
-  h.meshes.push_back(std::move(coarse));
-  h.maps.emplace_back();
-  for (int r = 0; r < refinements; ++r) {
-    Refinement ref = refine_uniformly(h.meshes.back());
-    h.meshes.push_back(std::move(ref.fine));
-    h.maps.push_back(std::move(ref.maps));
-  }
-  return h;
+  return refine_repeatedly<Mesh, RefinementMaps>(std::move(coarse), refinements, refine_uniformly);
 }
 
 }  // namespace fosls

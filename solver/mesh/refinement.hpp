@@ -4,6 +4,7 @@
 #include <vector>
 
 #include "mesh/mesh.hpp"
+#include "mesh/nested_meshes.hpp"
 
 namespace fosls {
 
@@ -42,21 +43,11 @@ struct RefinementMaps {
 };
 
 /// One red refinement: every triangle split into four by its edge midpoints.
-struct Refinement {
-  Mesh fine;
-  RefinementMaps maps;
-};
+using Refinement = RefinementStep<Mesh, RefinementMaps>;
 
 Refinement refine_uniformly(const Mesh& coarse);
 
-/// Meshes of all levels, coarsest first, and maps[j] relating level j-1 to level j (maps[0]
-/// is empty).
-struct MeshHierarchy {
-  std::vector<Mesh> meshes;
-  std::vector<RefinementMaps> maps;
-  int num_levels() const { return static_cast<int>(meshes.size()); }
-  const Mesh& finest() const { return meshes.back(); }
-};
+using MeshHierarchy = NestedMeshes<Mesh, RefinementMaps>;
 
 MeshHierarchy build_mesh_hierarchy(Mesh coarse, int refinements);
 

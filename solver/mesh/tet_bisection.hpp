@@ -64,12 +64,7 @@ struct TetBisectionState {
 /// face's marked edge and each tetrahedron's refinement edge its top-ranked one; nothing flagged.
 TetBisectionState initial_tet_bisection_state(const TetMesh& mesh, int generation = 0);
 
-/// One refinement step.
-struct TetBisection {
-  TetMesh fine;
-  TetRefinementMaps maps;
-  TetBisectionState state;
-};
+using TetBisection = BisectionStep<TetMesh, TetRefinementMaps, TetBisectionState>;
 
 /// The deepest bisection of one tetrahedron in one step (all six edges halved, volume / 8).
 constexpr int kMaxBisectionsPerStep = 3;

@@ -123,15 +123,8 @@ TetRefinement refine_tets_uniformly(const TetMesh& coarse) {
 }
 
 TetHierarchy build_tet_hierarchy(TetMesh coarse, int refinements) {
-  TetHierarchy h;
-  h.meshes.push_back(std::move(coarse));
-  h.maps.emplace_back();
-  for (int r = 0; r < refinements; ++r) {
-    TetRefinement next = refine_tets_uniformly(h.meshes.back());
-    h.meshes.push_back(std::move(next.fine));
-    h.maps.push_back(std::move(next.maps));
-  }
-  return h;
+  return refine_repeatedly<TetMesh, TetRefinementMaps>(std::move(coarse), refinements,
+                                                       refine_tets_uniformly);
 }
 
 void append_kuhn_cube(const std::array<int, 3>& start, const std::array<int, 3>& step,

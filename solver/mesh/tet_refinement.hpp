@@ -6,6 +6,7 @@
 #include <functional>
 #include <vector>
 
+#include "mesh/nested_meshes.hpp"
 #include "mesh/tet_mesh.hpp"
 
 namespace fosls {
@@ -37,10 +38,7 @@ struct TetRefinementMaps {
   }
 };
 
-struct TetRefinement {
-  TetMesh fine;
-  TetRefinementMaps maps;
-};
+using TetRefinement = RefinementStep<TetMesh, TetRefinementMaps>;
 
 /// Every tetrahedron (x0, x1, x2, x3) into its four corner tetrahedra and four from the inner
 /// octahedron, cut along the diagonal x02–x13 (Bey 1995: the vertex order of the children keeps
@@ -52,12 +50,7 @@ TetRefinement refine_tets_uniformly(const TetMesh& coarse);
 /// set): a fine face whose vertices all lie between the three vertices of a coarse face is in it.
 void map_fine_faces(const TetMesh& coarse, const TetMesh& fine, TetRefinementMaps& maps);
 
-struct TetHierarchy {
-  std::vector<TetMesh> meshes;
-  std::vector<TetRefinementMaps> maps;  ///< maps[j]: level j−1 to j (maps[0] empty)
-  int num_levels() const { return static_cast<int>(meshes.size()); }
-  const TetMesh& finest() const { return meshes.back(); }
-};
+using TetHierarchy = NestedMeshes<TetMesh, TetRefinementMaps>;
 
 TetHierarchy build_tet_hierarchy(TetMesh coarse, int refinements);
 
