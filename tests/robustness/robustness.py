@@ -42,7 +42,11 @@ CASE_BOUNDS = {("l_bracket", "tnnmg"): 100}
 FRICTION_METHODS = ("mmg", "pdas")
 FRICTION_BOUNDS = {"mmg": 40, "pdas": 40}
 FRICTION_CASE_BOUNDS = {}
-# Case: the iteration after which pdas took over (measured; mmg alone took 67, 66, 36 and 33).
+# Case: the iteration after which pdas took over (measured; mmg alone took 67, 66, 36 and 33),
+# asserted within FALLBACK_SLACK: where the residual's plateau sits near the stall test's
+# threshold (the L-bracket's 0.88), round-off moves the switch by an iteration between machines
+# (OpenBLAS picks its kernels for the CPU at run time: 18 on one, 19 on another).
+FALLBACK_SLACK = 2
 FRICTION_FALLBACK = {
     "incompressible_cylinder_punch": 34,
     "thin_strip_incompressible": 15,
@@ -146,9 +150,11 @@ def check_case(binary, path, table_rows, plain, repeat=1, offset=0, friction=0.0
             failures.append(f"{method}: {r['iterations']} iterations > {bound}")
     if friction and not offset and not plain:
         switched = results["mmg"]["friction"]["fallback_after"]
-        if switched != FRICTION_FALLBACK.get(name):
+        expected = FRICTION_FALLBACK.get(name)
+        if (switched is None) != (expected is None) or (
+                expected is not None and abs(switched - expected) > FALLBACK_SLACK):
             failures.append(f"mmg: pdas took over after {switched} iterations, expected "
-                            f"{FRICTION_FALLBACK.get(name)}")
+                            f"{expected} (± {FALLBACK_SLACK})")
     mmg = results["mmg"]
     weights = (f"{mmg['weights']['c3']:.3g} ({mmg['weights']['c3_limit']:.3g})"
                if "weights" in mmg else "0.1 (3D: fixed)")
