@@ -56,9 +56,6 @@ class CoulombUpdate {
   /// The frozen problem's residual at the start (after the start's update): the reference of
   /// the schedule's `reduction` until the next update.
   void started(double frozen) { frozen_at_update_ = frozen; }
-  /// The frictional edges and kinks whose bounds and weights this sets.
-  const FrictionLayout& layout() const { return layout_; }
-  const Kinks& kinks() const { return kinks_; }
   /// pdas's schedule (CoulombSchedule::newton_schedule).
   bool newton() const { return schedule_.newton; }
   /// Whether the iteration of `history` has stalled (the schedule's StallTest).

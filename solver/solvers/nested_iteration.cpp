@@ -3,11 +3,8 @@
 #include <algorithm>
 #include <cmath>
 #include <memory>
-#include <optional>
 #include <utility>
 #include <vector>
-
-#include "solvers/coarse_friction.hpp"
 
 namespace fosls {
 
@@ -28,7 +25,12 @@ BoxQp coarser_problem(const BoxQp& fine, const Level& level, CoarseProjection pr
   // coarse S_n a little, and would hold that at 0 too. Other bounds (Tresca's) are not passed
   // down, as before; the start is clipped to the fine bounds afterwards.
   if (!fine.row_obstacles.empty()) {
-    const std::vector<int> main_column = main_columns(p);
+    std::vector<int> main_column(fine.size(), -1);
+    std::vector<double> main_weight(fine.size(), 0.0);
+    for (int col = 0; col < n; ++col)
+      for (SparseMatrix::InnerIterator it(p, col); it; ++it)
+        if (std::abs(it.value()) > std::abs(main_weight[it.row()]))
+          main_weight[it.row()] = it.value(), main_column[it.row()] = col;
     for (int i : fine.row_obstacles)
       if (main_column[i] >= 0 && fine.lower[i] == 0.0 && fine.upper[i] == 0.0)
         c.lower[main_column[i]] = c.upper[main_column[i]] = 0.0;
@@ -65,47 +67,6 @@ std::vector<BoxQp> coarser_problems(const BoxQp& qp, const LevelHierarchy& h,
   return problems;
 }
 
-/// The coarse problems with Coulomb friction of their own (coarse_friction.hpp) in `friction`,
-/// whose row obstacles hold each coarser level's S_t at 0 from the start like the fine one's;
-/// `friction` is left empty, and the problems are coarser_problems', where a level's edges do
-/// not pair up.
-std::vector<BoxQp> coarser_coulomb_problems(const BoxQp& qp, const NestedCoulomb& coulomb,
-                                            const LevelHierarchy& h, CoarseProjection projection,
-                                            std::vector<CoarseFriction>& friction) {
-  const int top = h.num_levels() - 1;
-  std::vector<BoxQp> problems(top);
-  friction.assign(top, {});
-  for (int j = top; j >= 1; --j) {
-    const bool finest = j == top;
-    std::optional<CoarseFriction> coarse =
-        coarser_friction(finest ? *coulomb.layout : friction[j].layout,
-                         finest ? *coulomb.kinks : friction[j].kinks, h.levels[j].prolongation);
-    if (!coarse) {
-      friction.clear();
-      return coarser_problems(qp, h, projection);
-    }
-    problems[j - 1] = coarser_problem(finest ? qp : problems[j], h.levels[j], projection);
-    friction[j - 1] = std::move(*coarse);
-    problems[j - 1].row_obstacles = friction[j - 1].row_obstacles;
-  }
-  return problems;
-}
-
-/// x within the bounds of qp, except that the S_t of `layout` (if any) keep their values within
-/// ±𝔣 max(0, −S_n) of x's own S_n instead of Coulomb's start bounds of 0: the start the coarser
-/// level's Coulomb solve gives.
-void clip_start(const BoxQp& qp, const FrictionLayout* layout, Vector& x) {
-  if (!layout) return qp.clip(x);
-  std::vector<double> st(layout->edges.size());
-  for (std::size_t e = 0; e < st.size(); ++e) st[e] = x[layout->edges[e].st];
-  qp.clip(x);
-  for (std::size_t e = 0; e < st.size(); ++e) {
-    const FrictionEdge& f = layout->edges[e];
-    const double s = slip_bound(f, x);
-    x[f.st] = std::clamp(st[e], -s, s);
-  }
-}
-
 /// The options of the coarse solves: to the nested tolerance by the KKT test alone.
 SolverOptions coarse_solve_options(const SolverOptions& options) {
   SolverOptions inner = options;
@@ -120,16 +81,12 @@ SolverOptions coarse_solve_options(const SolverOptions& options) {
 
 bool nested_initial_guess(const BoxQp& qp, const LevelHierarchy& h, const SolverOptions& options,
                           GalerkinChain& chain, Vector& x, SolverReport& report,
-                          const std::function<bool()>& out_of_time, const NestedCoulomb& coulomb) {
+                          const std::function<bool()>& out_of_time) {
   const int top = h.num_levels() - 1;
   if (top < 1) return false;
   for (int i = 0; i < qp.size(); ++i)
     if (qp.lower[i] > 0 || qp.upper[i] < 0) return false;
-  std::vector<CoarseFriction> friction;
-  std::vector<BoxQp> problems =
-      coulomb.layout
-          ? coarser_coulomb_problems(qp, coulomb, h, options.multilevel.projection, friction)
-          : coarser_problems(qp, h, options.multilevel.projection);
+  std::vector<BoxQp> problems = coarser_problems(qp, h, options.multilevel.projection);
   SolverOptions inner = coarse_solve_options(options);
   SolverObserver coarse;
   coarse.out_of_time = out_of_time;
@@ -142,23 +99,19 @@ bool nested_initial_guess(const BoxQp& qp, const LevelHierarchy& h, const Solver
     LentMatrices lent;
     lent.lend(chain.matrices[j], problems[j].A);
     for (int k = 0; k < j; ++k) lent.lend(chain.matrices[k], sub_chain->matrices[k]);
-    const FrictionLayout* layout = friction.empty() ? nullptr : &friction[j].layout;
     if (j > 0) {
       xc = h.levels[j].prolongation * xc;
-      clip_start(problems[j], layout, xc);
+      problems[j].clip(xc);
     }
     // The coarsest level is solved by pdas on CHOLMOD: a handful of factorisations, where the
     // cycle's exact coarse solver met the bounds one at a time from x = 0 (docs/performance.md,
     // "Nested iteration"). The initial guess needs no monotone path: it is clipped to the bounds.
     inner.method = j == 0 ? SolverMethod::kPdas : options.method;
-    const SolverReport r =
-        layout ? solve_kinked_qp(problems[j], KinkedProblem{&friction[j].kinks, layout, {}}, sub,
-                                 inner, coarse, xc, sub_chain)
-               : solve_with_chain(problems[j], sub, inner, coarse, xc, sub_chain);
+    const SolverReport r = solve_with_chain(problems[j], sub, inner, coarse, xc, sub_chain);
     report.nested_iterations.push_back(r.iterations);
   }
   x = h.levels[top].prolongation * xc;
-  clip_start(qp, friction.empty() ? nullptr : coulomb.layout, x);
+  qp.clip(x);
   return true;
 }
 

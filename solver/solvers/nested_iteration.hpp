@@ -17,14 +17,6 @@ namespace fosls {
 /// by the coarse-obstacle projection of the level-j bounds.
 BoxQp coarser_problem(const BoxQp& fine, const Level& level, CoarseProjection projection);
 
-/// The finest level's Coulomb friction (none: layout null): the coarser levels then solve
-/// Coulomb's problem too, each on its own frictional edges (coarse_friction.hpp) to the nested
-/// tolerance, and hand their S_t, slip bounds and stick/slip states on (docs/method.md §8.4).
-struct NestedCoulomb {
-  const FrictionLayout* layout = nullptr;
-  const Kinks* kinks = nullptr;
-};
-
 /// Sets x to the prolongated, bound-clipped solution of the coarser levels' problems (each to
 /// options.nested_tolerance; iterations per level appended to report.nested_iterations) and
 /// returns true; returns false with x untouched when there is no coarser level or x = 0 is not
@@ -33,7 +25,6 @@ struct NestedCoulomb {
 /// stops each coarse solve at its last iterate once it returns true (solver.time_limit_s).
 bool nested_initial_guess(const BoxQp& qp, const LevelHierarchy& h, const SolverOptions& options,
                           GalerkinChain& chain, Vector& x, SolverReport& report,
-                          const std::function<bool()>& out_of_time = {},
-                          const NestedCoulomb& coulomb = {});
+                          const std::function<bool()>& out_of_time = {});
 
 }  // namespace fosls

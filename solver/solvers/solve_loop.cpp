@@ -289,12 +289,7 @@ SolverReport solve_from_start(const BoxQp& qp, const LevelHierarchy& hierarchy,
     if (options.nested) {
       // Where the nested iteration cannot start (one level, or x = 0 infeasible) x stays as is.
       const auto t_nested = Clock::now();
-      // Coulomb's coarser levels solve Coulomb's problem too (mmg's schedule; pdas has no
-      // nested iteration).
-      NestedCoulomb friction;
-      if (coulomb && !coulomb->newton()) friction = {&coulomb->layout(), &coulomb->kinks()};
-      nested_initial_guess(qp, hierarchy, options, *chain, x, report, observer.out_of_time,
-                           friction);
+      nested_initial_guess(qp, hierarchy, options, *chain, x, report, observer.out_of_time);
       report.nested_s = seconds_since(t_nested);
     }
   }
@@ -354,26 +349,22 @@ namespace {
 /// One frictional solve by options.method with the schedule given (or pdas's own).
 SolverReport solve_sided(BoxQp& qp, const KinkedProblem& kinked, const CoulombSchedule& schedule,
                          const LevelHierarchy& hierarchy, const SolverOptions& options,
-                         const SolverObserver& observer, Vector& x,
-                         std::shared_ptr<GalerkinChain> chain = nullptr) {
+                         const SolverObserver& observer, Vector& x) {
   const bool pdas = options.method == SolverMethod::kPdas;
   KinkSides sides(qp, *kinked.kinks, pdas);
   std::optional<CoulombUpdate> coulomb;
   if (kinked.coulomb)
     coulomb.emplace(qp, *kinked.coulomb, *kinked.kinks, sides,
                     pdas ? CoulombSchedule::newton_schedule() : schedule);
-  CoulombUpdate* update = coulomb ? &*coulomb : nullptr;
-  if (chain && is_multilevel(options.method))
-    return solve_from_start(qp, hierarchy, options, observer, x, std::move(chain), &sides, update);
-  return solve_with_new_chain(qp, hierarchy, options, observer, x, &sides, update);
+  return solve_with_new_chain(qp, hierarchy, options, observer, x, &sides,
+                              coulomb ? &*coulomb : nullptr);
 }
 
 }  // namespace
 
 SolverReport solve_kinked_qp(BoxQp& qp, const KinkedProblem& kinked,
                              const LevelHierarchy& hierarchy, const SolverOptions& options,
-                             const SolverObserver& observer, Vector& x,
-                             std::shared_ptr<GalerkinChain> chain) {
+                             const SolverObserver& observer, Vector& x) {
   // tnnmg's linear correction and line search see the sided QP's kinks as bounds it would
   // cross in one Newton step; it is not extended to them.
   if (options.method == SolverMethod::kTnnmg)
@@ -387,8 +378,7 @@ SolverReport solve_kinked_qp(BoxQp& qp, const KinkedProblem& kinked,
     schedule.stall = StallTest::never();
   else if (schedule.stall.window == 0)
     schedule.stall = StallTest{};  // the measured default unless the caller gives one
-  SolverReport report =
-      solve_sided(qp, kinked, schedule, hierarchy, options, observer, x, std::move(chain));
+  SolverReport report = solve_sided(qp, kinked, schedule, hierarchy, options, observer, x);
   if (!report.stalled) return report;
   SolverOptions newton = options;
   newton.method = SolverMethod::kPdas;

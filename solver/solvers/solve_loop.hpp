@@ -140,12 +140,9 @@ SolverReport solve_box_qp(const BoxQp& qp, const LevelHierarchy& hierarchy,
 /// criterion is met), the stopping criteria measure the Coulomb residual, and the solve
 /// converges when a criterion is met and the update then changes no bound by more than
 /// options.friction_tolerance or moves x by no more than the residual that met it.
-/// `chain`, when given, is the hierarchy's Galerkin chain (the nested iteration's coarse
-/// Coulomb solves), used as it is, without the definiteness check.
 SolverReport solve_kinked_qp(BoxQp& qp, const KinkedProblem& kinked,
                              const LevelHierarchy& hierarchy, const SolverOptions& options,
-                             const SolverObserver& observer, Vector& x,
-                             std::shared_ptr<GalerkinChain> chain = nullptr);
+                             const SolverObserver& observer, Vector& x);
 
 /// solve_box_qp on the Galerkin chain of the hierarchy (formed here when null, for mmg and
 /// tnnmg), without the definiteness check: the nested iteration's coarse solves.
