@@ -14,18 +14,11 @@ usage: coulomb_nested_table.py NAME=FOSLS_CONTACT [NAME=FOSLS_CONTACT ...] [refi
 """
 import json
 import os
-import subprocess
 import sys
 
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "validation"))
 import validation_lib as vl  # noqa: E402  (runs fosls-contact on a case dict)
-
-
-def shipped(binary, refinements):
-    c = json.loads(subprocess.run([binary, "example", "cattaneo_mindlin"],
-                                  capture_output=True, text=True, check=True).stdout)
-    c["mesh"]["refinements"] = refinements
-    return c
+from cattaneo_mindlin import shipped  # noqa: E402  (the shipped case at a refinement)
 
 
 def stick_ratio(step):
