@@ -172,8 +172,7 @@ void point_links(const FoslsSpace<dim>& coarse, const FoslsSpace<dim>& fine,
     const CoarseVertexWeights& w = maps.composed_weights[k];
     ContactLink& link = links.emplace_back();
     link.fine_un_mid = normal_u(fine, v);
-    const std::array<int*, 3> coarse_un = {&link.coarse_un_a, &link.coarse_un_b,
-                                           &link.coarse_un_c};
+    const std::array<int*, 3> coarse_un = {&link.coarse_un_a, &link.coarse_un_b, &link.coarse_un_c};
     const std::array<int*, 3> fine_un = {&link.fine_un_a, &link.fine_un_b, &link.fine_un_c};
     for (int i = 0; i < 3; ++i) {
       link.un_weight[i] = w.weight[i];

@@ -16,9 +16,9 @@
 namespace fosls {
 
 /// The largest share of the next kept level's unknowns that a kept level may have while a
-/// coarser level can still be reached by composed maps: about a uniform 2D refinement's
-/// spacing, and as far as the contact boundary lets 3D's adapted levels compose
-/// (docs/performance.md, "The solver levels a factor apart").
+/// coarser level can still be reached by composed maps: a level at most half the next one
+/// (docs/performance.md, "The solver levels a factor apart" and "The contact zone's levels
+/// skipped too").
 constexpr double kMaxSolverLevelShare = 0.5;
 
 template <int dim>

@@ -13,8 +13,7 @@ std::string link_inconsistency(const ContactLink& l, int coarse, int fine, int l
     if (p.link < 0 || p.link >= links) return "a contact link's partner is not a link";
   for (int d : {l.coarse_un_a, l.coarse_un_b, l.coarse_un_c, l.coarse_sn})
     if (!inside(d, coarse, true)) return "a contact link's coarse DOF is outside its level";
-  for (int d :
-       {l.fine_un_a, l.fine_un_mid, l.fine_un_b, l.fine_un_c, l.fine_sn[0], l.fine_sn[1]})
+  for (int d : {l.fine_un_a, l.fine_un_mid, l.fine_un_b, l.fine_un_c, l.fine_sn[0], l.fine_sn[1]})
     if (!inside(d, fine, true)) return "a contact link's fine DOF is outside its level";
   double weights = 0.0;
   for (double w : l.un_weight) {

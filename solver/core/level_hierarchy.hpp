@@ -31,9 +31,9 @@ struct ContactLink {
   int coarse_un_a = -1, coarse_un_b = -1, coarse_un_c = -1;  ///< coarse U_n at a, b, c
   int fine_un_a = -1, fine_un_mid = -1, fine_un_b = -1, fine_un_c = -1;
   std::array<double, 3> un_weight = {0.5, 0.5, 0.0};  ///< m's P1 weights of a, b, c
-  int coarse_sn = -1;                            ///< coarse S_n of E
-  std::array<int, 2> fine_sn = {-1, -1};         ///< fine S_n of the two halves
-  std::array<double, 2> sn_weight = {0.5, 0.5};  ///< P entry fine S_n ← coarse S_n
+  int coarse_sn = -1;                                 ///< coarse S_n of E
+  std::array<int, 2> fine_sn = {-1, -1};              ///< fine S_n of the two halves
+  std::array<double, 2> sn_weight = {0.5, 0.5};       ///< P entry fine S_n ← coarse S_n
   /// flux_moves[k]: a fine field that takes one unit of normal flux off half k and puts it on
   /// the other half, divergence-free inside E's coarse triangle (it crosses the fine triangles
   /// between the two halves): first the other half's S_n, then the interior σ DOFs on the way.

@@ -51,8 +51,8 @@ std::vector<CoarseVertexWeights> composed_weights(const SimplexMeshType& coarse,
 
 }  // namespace
 
-RefinementMaps compose_refinement_maps(const Mesh& coarse, const Mesh& middle, const RefinementMaps& first,
-                                       const RefinementMaps& second) {
+RefinementMaps compose_refinement_maps(const Mesh& coarse, const Mesh& middle,
+                                       const RefinementMaps& first, const RefinementMaps& second) {
   const int ncv = first.num_coarse_vertices;
   RefinementMaps maps;
   maps.num_coarse_vertices = ncv;

@@ -47,8 +47,8 @@ void project_defect(const Level& fine_level, CoarseProjection projection, const 
     const ContactLink& l = fine_level.links[index];
     const std::array<double, 2>& weight = sn_weights ? (*sn_weights)[index] : l.sn_weight;
     const std::array<double, 3> t =
-        un_bounds(projection, {d(l.fine_un_a), d(l.fine_un_b), d(l.fine_un_c)},
-                  d(l.fine_un_mid), l.un_weight);
+        un_bounds(projection, {d(l.fine_un_a), d(l.fine_un_b), d(l.fine_un_c)}, d(l.fine_un_mid),
+                  l.un_weight);
     const std::array<int, 3> coarse_un = {l.coarse_un_a, l.coarse_un_b, l.coarse_un_c};
     for (int i = 0; i < 3; ++i)
       if (coarse_un[i] >= 0 && l.un_weight[i] > 0.0)

@@ -307,9 +307,8 @@ SparseMatrix TruncatedHierarchy::flux_moves(int j, std::vector<char>& coarse) {
       if (link.fine_sn[1] < 0) {
         // A contact edge that bisection kept has one child: the coarse S_n is truncated
         // with it, unless the child's partners of the same facet take its share.
-        if (truncated[link.fine_sn[0]] &&
-            !move_to_partner(level, static_cast<int>(l), truncated, weights,
-                             columns[link.coarse_sn]))
+        if (truncated[link.fine_sn[0]] && !move_to_partner(level, static_cast<int>(l), truncated,
+                                                           weights, columns[link.coarse_sn]))
           coarse[link.coarse_sn] = 1;
         continue;
       }

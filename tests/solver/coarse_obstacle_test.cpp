@@ -195,8 +195,8 @@ void expect_feasible_links(const LevelHierarchy& h, std::mt19937& rng) {
         if (i >= 0) bounded[i] = 1;
     std::vector<char> fine_bounded(level.num_dofs, 0);
     for (const ContactLink& l : level.links)
-      for (int i : {l.fine_un_a, l.fine_un_mid, l.fine_un_b, l.fine_un_c, l.fine_sn[0],
-                    l.fine_sn[1]})
+      for (int i :
+           {l.fine_un_a, l.fine_un_mid, l.fine_un_b, l.fine_un_c, l.fine_sn[0], l.fine_sn[1]})
         if (i >= 0) fine_bounded[i] = 1;
     for (int trial = 0; trial < 20; ++trial) {
       Vector d = random_defect(level.num_dofs, rng);

@@ -95,9 +95,10 @@ TEST_P(Monotonicity, EnergyNeverIncreasesAndIteratesStayFeasible) {
   EXPECT_LE(kkt, 1e-8 * initial_kkt) << "did not converge in 400 cycles";
   EXPECT_GE(checks, 3 * iterations);  // pre, coarse and post steps were all observed
   if (c.adaptive_steps > 0) EXPECT_LE(iterations, 45);  // measured 22–32
-  std::printf("%s: %d of %d levels, %d contact-zone links across skipped levels; %d cycles from "
-              "x = 0, %d monotone feasible steps checked\n",
-              c.name, h.num_levels(), disc.num_levels(), skips, iterations, checks);
+  std::printf(
+      "%s: %d of %d levels, %d contact-zone links across skipped levels; %d cycles from "
+      "x = 0, %d monotone feasible steps checked\n",
+      c.name, h.num_levels(), disc.num_levels(), skips, iterations, checks);
 }
 
 INSTANTIATE_TEST_SUITE_P(

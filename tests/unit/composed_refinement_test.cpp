@@ -79,8 +79,8 @@ Compositions compositions(const SimplexHierarchy<dim>& h) {
     Eigen::SparseMatrix<double> product =
         cartesian_prolongation<dim>(h.meshes[fine - 1], h.meshes[fine], h.maps[fine]);
     for (int coarse = fine - 2; coarse >= std::max(0, fine - 4); --coarse) {
-      maps = compose_refinement_maps(h.meshes[coarse], h.meshes[coarse + 1], h.maps[coarse + 1],
-                                     maps);
+      maps =
+          compose_refinement_maps(h.meshes[coarse], h.meshes[coarse + 1], h.maps[coarse + 1], maps);
       product = product * cartesian_prolongation<dim>(h.meshes[coarse], h.meshes[coarse + 1],
                                                       h.maps[coarse + 1]);
       const SimplexMesh<dim>& c = h.meshes[coarse];
