@@ -55,8 +55,8 @@ TEST_P(Monotonicity, EnergyNeverIncreasesAndIteratesStayFeasible) {
   const Discretization<2> disc = discretization(c);
   ASSERT_EQ(disc.num_levels(), c.adaptive_steps > 0 ? 2 + c.adaptive_steps : 4);
   const LevelHierarchy h = disc.build_level_hierarchy();
-  // An adapted hierarchy's solver levels are mesh levels a factor apart
-  // (assembly/solver_levels.hpp): measured 4–6 of the 7.
+  // An adapted hierarchy's solver levels are mesh levels a factor apart, the contact zone's
+  // too (assembly/solver_levels.hpp): measured 3–4 of 7, 5 of 10.
   if (c.adaptive_steps > 0) EXPECT_LT(h.num_levels(), disc.num_levels());
   const int skips = contact_zone_skips(h);
   if (c.adaptive_steps > 0) EXPECT_GT(skips, 0);
@@ -94,7 +94,7 @@ TEST_P(Monotonicity, EnergyNeverIncreasesAndIteratesStayFeasible) {
   }
   EXPECT_LE(kkt, 1e-8 * initial_kkt) << "did not converge in 400 cycles";
   EXPECT_GE(checks, 3 * iterations);  // pre, coarse and post steps were all observed
-  if (c.adaptive_steps > 0) EXPECT_LE(iterations, 45);  // measured 22–32
+  if (c.adaptive_steps > 0) EXPECT_LE(iterations, 45);  // measured 24–32
   std::printf(
       "%s: %d of %d levels, %d contact-zone links across skipped levels; %d cycles from "
       "x = 0, %d monotone feasible steps checked\n",
