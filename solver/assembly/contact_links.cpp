@@ -33,8 +33,8 @@ std::vector<std::array<int, 2>> facet_edges(const TetMesh& mesh, int f) {
   return edges;
 }
 
-/// The fine facets inside each coarse contact facet, in their pairs' order: in 2D the half at
-/// the coarse edge's first end first (a kept edge alone), in 3D the quarters in fine order.
+/// The fine facets inside each coarse contact facet, in their pairs' order: in 2D along the
+/// coarse edge from its first end (a kept edge alone), in 3D in fine order.
 template <int dim>
 std::vector<std::vector<int>> contact_children(const FoslsSpace<dim>& coarse,
                                                const SimplexMesh<dim>& fine,
@@ -45,23 +45,22 @@ std::vector<std::vector<int>> contact_children(const FoslsSpace<dim>& coarse,
       children[parent].push_back(f);
   if constexpr (dim == 2)
     for (int e = 0; e < coarse.mesh().num_edges(); ++e) {
-      auto& halves = children[e];
-      const int first_end = coarse.mesh().edge(e)[0];
-      if (halves.size() == 2 && fine.edge(halves[0])[0] != first_end &&
-          fine.edge(halves[0])[1] != first_end)
-        std::swap(halves[0], halves[1]);
+      const Point start = coarse.mesh().vertex(coarse.mesh().edge(e)[0]);
+      const auto distance = [&](int f) { return (fine.edge_midpoint(f) - start).squaredNorm(); };
+      std::sort(children[e].begin(), children[e].end(),
+                [&](int f, int g) { return distance(f) < distance(g); });
     }
   return children;
 }
 
-/// 2D: the fine RT0 field that moves one unit of normal flux from boundary edge `from` to
-/// boundary edge `to` (the two halves of one coarse contact edge) with zero divergence in every
-/// fine triangle: the vector flux S·n_from leaves `from`'s triangle through its edge into the
-/// interior of the coarse triangle, crosses the fine triangles between the halves and comes
-/// out through `to`. Its first entry is `to`'s S_n, n_from·n_to (1 on a straight edge; the
-/// tangential part, which S_t = 0 does not allow, is dropped on curved edges).
-Move flux_move(const FoslsSpace<2>& space, const RefinementMaps& maps, int from, int to,
-               const std::vector<int>&) {
+/// 2D, a coarse edge's two halves: the fine RT0 field that moves one unit of normal flux from
+/// boundary edge `from` to boundary edge `to` with zero divergence in every fine triangle: the
+/// vector flux S·n_from leaves `from`'s triangle through its edge into the interior of the coarse
+/// triangle, crosses the fine triangles between the halves and comes out through `to`. Its first
+/// entry is `to`'s S_n, n_from·n_to (1 on a straight edge; the tangential part, which S_t = 0
+/// does not allow, is dropped on curved edges).
+Move flux_move_along_path(const FoslsSpace<2>& space, const RefinementMaps& maps, int from,
+                          int to) {
   const Mesh& mesh = space.mesh();
   const Point n = mesh.edge_normal(from);
   const auto path = flux_path(mesh, maps, from, to);
@@ -75,51 +74,67 @@ Move flux_move(const FoslsSpace<2>& space, const RefinementMaps& maps, int from,
   return moves;
 }
 
-/// 3D: one unit of normal flux taken off quarter `from` arrives on quarter `to` as
-/// n_from · n_to of its S_n (the tangential rest falls on the fixed S_t), carried through the
-/// fine faces inside the coarse tetrahedron (`interior`, their free σ DOFs), whose values the
-/// truncation sets with the least energy (solvers/truncated_hierarchy.cpp).
-Move flux_move(const FoslsSpace<3>& fine, const TetRefinementMaps&, int from, int to,
-               const std::vector<int>& interior) {
-  const TetMesh& m = fine.mesh();
+/// One unit of normal flux taken off child `from` arrives on child `to` as n_from · n_to of its
+/// S_n (the tangential rest falls on the fixed S_t), carried through `interior`, the free σ DOFs
+/// of the fine facets inside the coarse cell, whose values the truncation sets with the least
+/// energy (solvers/truncated_hierarchy.cpp). 2D's two halves of an edge (interior null) take the
+/// path of fine edges between them instead.
+template <int dim>
+Move flux_move(const FoslsSpace<dim>& fine, const SimplexRefinementMaps<dim>& maps, int from,
+               int to, const std::vector<int>* interior) {
+  if constexpr (dim == 2)
+    if (!interior) return flux_move_along_path(fine, maps, from, to);
+  const SimplexMesh<dim>& m = fine.mesh();
   Move move;
   move.emplace_back(fine.free_index(fine.sigma_dof(to, 0)),
-                    m.face_normal(from).dot(m.face_normal(to)));
-  for (int dof : interior) move.emplace_back(dof, 0.0);
+                    m.facet_normal(from).dot(m.facet_normal(to)));
+  for (int dof : *interior) move.emplace_back(dof, 0.0);
   return move;
 }
 
-/// 3D: the free σ DOFs of the fine faces inside each coarse tetrahedron under a contact face:
-/// the way its flux moves go. (2D's moves find their own path.)
-std::vector<std::vector<int>> interior_sigma_dofs(const FoslsSpace<3>& coarse,
-                                                  const FoslsSpace<3>& fine,
-                                                  const TetRefinementMaps& maps) {
-  const TetMesh& cm = coarse.mesh();
-  std::vector<char> under_contact(cm.num_tets(), 0);
-  for (int f = 0; f < cm.num_faces(); ++f)
-    if (coarse.is_contact_facet(f)) under_contact[cm.face_tets(f)[0]] = 1;
-  std::vector<std::vector<int>> dofs(cm.num_tets());
-  for (int f = 0; f < fine.mesh().num_faces(); ++f)
-    if (const int t = maps.parent_tet_of_face[f]; t >= 0 && under_contact[t])
-      for (int i = 0; i < 3; ++i)
+/// The free σ DOFs of the fine facets inside each coarse cell under a contact facet: the way
+/// the flux moves go in 3D, and in 2D across more than two children of an edge.
+template <int dim>
+std::vector<std::vector<int>> interior_sigma_dofs(const FoslsSpace<dim>& coarse,
+                                                  const FoslsSpace<dim>& fine,
+                                                  const SimplexRefinementMaps<dim>& maps) {
+  const SimplexMesh<dim>& cm = coarse.mesh();
+  std::vector<char> under_contact(cm.num_cells(), 0);
+  for (int f = 0; f < cm.num_facets(); ++f)
+    if (coarse.is_contact_facet(f)) under_contact[cm.facet_cells(f)[0]] = 1;
+  std::vector<std::vector<int>> dofs(cm.num_cells());
+  for (int f = 0; f < fine.mesh().num_facets(); ++f)
+    if (const int t = maps.parent_cell_of_facet(f); t >= 0 && under_contact[t])
+      for (int i = 0; i < dim; ++i)
         if (const int dof = fine.free_index(fine.sigma_dof(f, i)); dof >= 0) dofs[t].push_back(dof);
   return dofs;
 }
 
-/// Makes the last two links, a coarse facet's pairs, each other's partner: partner_factor[k][i]
-/// = n_k · n_i from this link's child k to the partner's child i.
+/// Makes the links [first, first + count) of one coarse facet each other's partners (in order),
+/// with the factors n_k · n_i between their children `children[2·link + k]`. A link of one child
+/// gets its flux move towards its first partner's first child.
 template <int dim>
-void pair_up(const FoslsSpace<dim>& fine, const std::vector<int>& children,
-             std::vector<ContactLink>& links) {
-  const int n = static_cast<int>(links.size());
+void make_partners(const FoslsSpace<dim>& fine, const SimplexRefinementMaps<dim>& maps,
+                   const std::vector<int>& children, const std::vector<int>& interior,
+                   std::size_t first, std::size_t count, std::vector<ContactLink>& links) {
   const SimplexMesh<dim>& m = fine.mesh();
-  for (int side = 0; side < 2; ++side) {
-    ContactLink& link = links[n - 2 + side];
-    link.partner = n - 1 - side;
-    for (int k = 0; k < 2; ++k)
-      for (int i = 0; i < 2; ++i)
-        link.partner_factor[k][i] = m.facet_normal(children[2 * side + k])
-                                        .dot(m.facet_normal(children[2 * (1 - side) + i]));
+  const auto child = [&](std::size_t link, int k) {
+    const std::size_t c = 2 * link + static_cast<std::size_t>(k);
+    return c < children.size() ? children[c] : -1;
+  };
+  for (std::size_t a = 0; a < count; ++a) {
+    ContactLink& link = links[first + a];
+    for (std::size_t b = 0; b < count; ++b) {
+      if (b == a) continue;
+      LinkPartner& partner = link.partners.emplace_back();
+      partner.link = static_cast<int>(first + b);
+      for (int k = 0; k < 2; ++k)
+        for (int i = 0; i < 2; ++i)
+          if (child(a, k) >= 0 && child(b, i) >= 0)
+            partner.factor[k][i] = m.facet_normal(child(a, k)).dot(m.facet_normal(child(b, i)));
+    }
+    if (child(a, 1) < 0 && link.fine_sn[0] >= 0)
+      link.flux_moves[0] = flux_move(fine, maps, child(a, 0), child(a == 0 ? 1 : 0, 0), &interior);
   }
 }
 
@@ -134,13 +149,38 @@ std::map<std::pair<int, int>, int> contact_midpoints(const FoslsSpace<dim>& coar
       for (int v : cm.facet(f)) on_contact[v] = 1;
   std::map<std::pair<int, int>, int> midpoint;
   for (int k = 0; k < maps.num_midpoints(); ++k) {
-    // Composed maps (solver_levels.hpp) leave vertices off the contact boundary without parents.
+    // Composed maps (solver_levels.hpp) leave vertices that halve no coarse edge without
+    // parents: their links come from their weights (point_links).
     if (!halves_coarse_edge(maps, k)) continue;
     const auto& ab = maps.midpoint_parents(cm, k);
     if (on_contact[ab[0]] && on_contact[ab[1]])
       midpoint[std::minmax(ab[0], ab[1])] = maps.num_coarse_vertices + k;
   }
   return midpoint;
+}
+
+/// The U_n links of the fine contact vertices that halve no coarse edge (composed maps: a chain
+/// of midpoints along a coarse edge, or a vertex inside a coarse face): each with the coarse
+/// vertices it interpolates and their weights.
+template <int dim>
+void point_links(const FoslsSpace<dim>& coarse, const FoslsSpace<dim>& fine,
+                 const SimplexRefinementMaps<dim>& maps, std::vector<ContactLink>& links) {
+  if (maps.composed_weights.empty()) return;
+  for (int k = 0; k < maps.num_midpoints(); ++k) {
+    const int v = maps.num_coarse_vertices + k;
+    if (halves_coarse_edge(maps, k) || !fine.is_contact_vertex(v)) continue;
+    const CoarseVertexWeights& w = maps.composed_weights[k];
+    ContactLink& link = links.emplace_back();
+    link.fine_un_mid = normal_u(fine, v);
+    const std::array<int*, 3> coarse_un = {&link.coarse_un_a, &link.coarse_un_b, &link.coarse_un_c};
+    const std::array<int*, 3> fine_un = {&link.fine_un_a, &link.fine_un_b, &link.fine_un_c};
+    for (int i = 0; i < 3; ++i) {
+      link.un_weight[i] = w.weight[i];
+      if (w.vertex[i] < 0) continue;
+      *coarse_un[i] = normal_u(coarse, w.vertex[i]);
+      *fine_un[i] = normal_u(fine, w.vertex[i]);
+    }
+  }
 }
 
 }  // namespace
@@ -152,8 +192,7 @@ std::vector<ContactLink> contact_links(const FoslsSpace<dim>& coarse, const Fosl
   const SimplexMesh<dim>& cm = coarse.mesh();
   const auto midpoint = contact_midpoints(coarse, maps);
   const auto children = contact_children(coarse, fine.mesh(), maps);
-  std::vector<std::vector<int>> interior;
-  if constexpr (dim == 3) interior = interior_sigma_dofs(coarse, fine, maps);
+  const std::vector<std::vector<int>> interior = interior_sigma_dofs(coarse, fine, maps);
   std::vector<ContactLink> links;
   std::set<std::pair<int, int>> linked;  // coarse edges with their U_n link
   for (int F = 0; F < cm.num_facets(); ++F) {
@@ -172,11 +211,15 @@ std::vector<ContactLink> contact_links(const FoslsSpace<dim>& coarse, const Fosl
     }
     const int coarse_sn = coarse.free_index(coarse.sigma_dof(F, 0));
     const std::vector<int>& kids = children[F];
-    const std::vector<int> none;
-    const std::vector<int>& path = dim == 3 ? interior[cm.facet_cells(F)[0]] : none;
+    // 2D: the edge's U_n link carries its first S_n pair too.
+    const std::size_t first_sn = dim == 2 ? first : links.size();
+    const std::size_t pairs = (kids.size() + 1) / 2;
+    // 3D's moves and those across more than two children go through the coarse cell's interior,
+    // 2D's between two halves along their own path.
+    const std::vector<int>* path =
+        dim == 3 || pairs > 1 ? &interior[cm.facet_cells(F)[0]] : nullptr;
     for (std::size_t q = 0; q < kids.size(); q += 2) {
-      // 2D: the edge's U_n link carries its S_n pair too.
-      ContactLink& link = dim == 2 ? links[first] : links.emplace_back();
+      ContactLink& link = dim == 2 && q == 0 ? links[first] : links.emplace_back();
       link.coarse_sn = coarse_sn;
       for (std::size_t k = 0; k < 2 && q + k < kids.size(); ++k) {
         link.fine_sn[k] = fine.free_index(fine.sigma_dof(kids[q + k], 0));
@@ -186,8 +229,9 @@ std::vector<ContactLink> contact_links(const FoslsSpace<dim>& coarse, const Fosl
         for (int k = 0; k < 2; ++k)
           link.flux_moves[k] = flux_move(fine, maps, kids[q + k], kids[q + 1 - k], path);
     }
-    if (kids.size() == 4) pair_up(fine, kids, links);
+    if (pairs > 1) make_partners(fine, maps, kids, *path, first_sn, pairs, links);
   }
+  point_links(coarse, fine, maps, links);
   return links;
 }
 

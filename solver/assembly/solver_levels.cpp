@@ -9,12 +9,13 @@ namespace fosls {
 namespace {
 
 /// Whether the composed maps of fine level `fine` leave a vertex on the contact boundary
-/// without parents.
+/// without coarse weights (one inside a coarse tetrahedron: not seen, a guard).
 template <int dim>
-bool contact_vertex_without_parents(const SimplexRefinementMaps<dim>& maps, int fine,
+bool contact_vertex_without_weights(const SimplexRefinementMaps<dim>& maps, int fine,
                                     const std::function<bool(int, int)>& on_contact) {
   for (int k = 0; k < maps.num_midpoints(); ++k)
-    if (!halves_coarse_edge(maps, k) && on_contact(fine, maps.num_coarse_vertices + k)) return true;
+    if (!maps.composed_weights[k].known() && on_contact(fine, maps.num_coarse_vertices + k))
+      return true;
   return false;
 }
 
@@ -31,9 +32,9 @@ SolverLevels<dim> skip_close_levels(const SimplexHierarchy<dim>& meshes,
     SimplexRefinementMaps<dim> maps = meshes.maps[fine];
     while (below > coarsest &&
            static_cast<double>(unknowns[below]) > max_share * static_cast<double>(unknowns[fine])) {
-      SimplexRefinementMaps<dim> longer =
-          compose_refinement_maps(meshes.meshes[below], meshes.maps[below], maps);
-      if (contact_vertex_without_parents<dim>(longer, fine, on_contact)) break;
+      SimplexRefinementMaps<dim> longer = compose_refinement_maps(
+          meshes.meshes[below - 1], meshes.meshes[below], meshes.maps[below], maps);
+      if (contact_vertex_without_weights<dim>(longer, fine, on_contact)) break;
       maps = std::move(longer);
       --below;
     }

@@ -16,9 +16,9 @@
 namespace fosls {
 
 /// The largest share of the next kept level's unknowns that a kept level may have while a
-/// coarser level can still be reached by composed maps: about a uniform 2D refinement's
-/// spacing, and as far as the contact boundary lets 3D's adapted levels compose
-/// (docs/performance.md, "The solver levels a factor apart").
+/// coarser level can still be reached by composed maps: a level at most half the next one
+/// (docs/performance.md, "The solver levels a factor apart" and "The contact zone's levels
+/// skipped too").
 constexpr double kMaxSolverLevelShare = 0.5;
 
 template <int dim>
@@ -29,12 +29,12 @@ struct SolverLevels {
 };
 
 /// From the finest level down, the next kept level is the finest one below with at most
-/// `max_share` of its unknowns, or, where the composition stops before it, the coarsest one it
-/// reaches: a skipped level may not have made an edge on the contact boundary that a later
-/// level halves (the contact links relate a coarse contact edge to its ends and one midpoint,
-/// and a contact face to at most four children). `unknowns[j]`: level j's free DOFs;
-/// `on_contact(j, v)`: vertex v of level j lies on the contact boundary; levels below
-/// `coarsest` are not used.
+/// `max_share` of its unknowns: the contact links relate a coarse contact facet to any number of
+/// fine children and a coarse U_n to every fine contact vertex it interpolates to (the composed
+/// maps' vertex weights), so the contact zone's levels are skipped too. (A composition would stop
+/// at a vertex on the contact boundary without coarse weights; none has any.) `unknowns[j]`:
+/// level j's free DOFs; `on_contact(j, v)`: vertex v of level j lies on the contact boundary;
+/// levels below `coarsest` are not used.
 template <int dim>
 SolverLevels<dim> skip_close_levels(const SimplexHierarchy<dim>& meshes,
                                     const std::vector<long long>& unknowns,

@@ -9,11 +9,18 @@ bool inside(int dof, int size, bool fixed_allowed) {
 }
 
 std::string link_inconsistency(const ContactLink& l, int coarse, int fine, int links) {
-  if (l.partner < -1 || l.partner >= links) return "a contact link's partner is not a link";
-  for (int d : {l.coarse_un_a, l.coarse_un_b, l.coarse_sn})
+  for (const LinkPartner& p : l.partners)
+    if (p.link < 0 || p.link >= links) return "a contact link's partner is not a link";
+  for (int d : {l.coarse_un_a, l.coarse_un_b, l.coarse_un_c, l.coarse_sn})
     if (!inside(d, coarse, true)) return "a contact link's coarse DOF is outside its level";
-  for (int d : {l.fine_un_a, l.fine_un_mid, l.fine_un_b, l.fine_sn[0], l.fine_sn[1]})
+  for (int d : {l.fine_un_a, l.fine_un_mid, l.fine_un_b, l.fine_un_c, l.fine_sn[0], l.fine_sn[1]})
     if (!inside(d, fine, true)) return "a contact link's fine DOF is outside its level";
+  double weights = 0.0;
+  for (double w : l.un_weight) {
+    if (w < 0.0) return "a contact link's U_n weight is negative";
+    weights += w;
+  }
+  if (weights > 1.0) return "a contact link's U_n weights add up to more than 1";
   for (const auto& move : l.flux_moves)
     for (const auto& [dof, weight] : move)
       if (!inside(dof, fine, false)) return "a flux move's DOF is outside the fine level";

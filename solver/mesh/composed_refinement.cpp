@@ -14,10 +14,45 @@ std::vector<int> composed_cell_parents(const std::vector<int>& first,
   return parent;
 }
 
+/// Adds share × w to sum; false when the sum would need a fourth coarse vertex.
+bool accumulate(CoarseVertexWeights& sum, const CoarseVertexWeights& w, double share) {
+  for (int i = 0; i < 3 && w.vertex[i] >= 0; ++i) {
+    int slot = 0;
+    while (slot < 3 && sum.vertex[slot] >= 0 && sum.vertex[slot] != w.vertex[i]) ++slot;
+    if (slot == 3) return false;
+    sum.vertex[slot] = w.vertex[i];
+    sum.weight[slot] += share * w.weight[i];
+  }
+  return true;
+}
+
+/// The new fine vertices' weights over the coarse vertices: the middle's new vertices' (first's
+/// own), then the fine ones' (second's, over the middle vertices, each replaced by its weights).
+template <class SimplexMeshType, class Maps>
+std::vector<CoarseVertexWeights> composed_weights(const SimplexMeshType& coarse,
+                                                  const SimplexMeshType& middle, const Maps& first,
+                                                  const Maps& second) {
+  std::vector<CoarseVertexWeights> all;
+  all.reserve(first.num_midpoints() + second.num_midpoints());
+  for (int k = 0; k < first.num_midpoints(); ++k)
+    all.push_back(coarse_vertex_weights(coarse, first, first.num_coarse_vertices + k));
+  for (int k = 0; k < second.num_midpoints(); ++k) {
+    const CoarseVertexWeights over_middle =
+        coarse_vertex_weights(middle, second, second.num_coarse_vertices + k);
+    CoarseVertexWeights sum;
+    bool fits = over_middle.known();
+    for (int i = 0; i < 3 && fits && over_middle.vertex[i] >= 0; ++i)
+      fits = accumulate(sum, coarse_vertex_weights(coarse, first, over_middle.vertex[i]),
+                        over_middle.weight[i]);
+    all.push_back(fits ? sum : CoarseVertexWeights{});
+  }
+  return all;
+}
+
 }  // namespace
 
-RefinementMaps compose_refinement_maps(const Mesh& middle, const RefinementMaps& first,
-                                       const RefinementMaps& second) {
+RefinementMaps compose_refinement_maps(const Mesh& coarse, const Mesh& middle,
+                                       const RefinementMaps& first, const RefinementMaps& second) {
   const int ncv = first.num_coarse_vertices;
   RefinementMaps maps;
   maps.num_coarse_vertices = ncv;
@@ -42,10 +77,12 @@ RefinementMaps compose_refinement_maps(const Mesh& middle, const RefinementMaps&
     }
   }
   maps.triangle_parent = composed_cell_parents(first.triangle_parent, second.triangle_parent);
+  maps.composed_weights = composed_weights(coarse, middle, first, second);
   return maps;
 }
 
-TetRefinementMaps compose_refinement_maps(const TetMesh&, const TetRefinementMaps& first,
+TetRefinementMaps compose_refinement_maps(const TetMesh& coarse, const TetMesh& middle,
+                                          const TetRefinementMaps& first,
                                           const TetRefinementMaps& second) {
   const int ncv = first.num_coarse_vertices;
   TetRefinementMaps maps;
@@ -70,6 +107,7 @@ TetRefinementMaps compose_refinement_maps(const TetMesh&, const TetRefinementMap
     }
   }
   maps.tet_parent = composed_cell_parents(first.tet_parent, second.tet_parent);
+  maps.composed_weights = composed_weights(coarse, middle, first, second);
   return maps;
 }
 

@@ -3,6 +3,7 @@
 
 #include <vector>
 
+#include "mesh/coarse_vertex_weights.hpp"
 #include "mesh/mesh.hpp"
 #include "mesh/nested_meshes.hpp"
 
@@ -29,6 +30,9 @@ struct RefinementMaps {
   std::vector<signed char> parent_sign;
   /// For each fine triangle: the coarse triangle that contains it.
   std::vector<int> triangle_parent;
+  /// Maps composed across skipped levels only (empty otherwise): each new fine vertex's P1
+  /// weights over the coarse vertices (mesh/composed_refinement.hpp).
+  std::vector<CoarseVertexWeights> composed_weights;
 
   // The vocabulary TetRefinementMaps shares (mesh/simplex_mesh.hpp).
   int parent_facet(int f) const { return parent_edge[f]; }

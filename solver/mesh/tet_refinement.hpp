@@ -6,6 +6,7 @@
 #include <functional>
 #include <vector>
 
+#include "mesh/coarse_vertex_weights.hpp"
 #include "mesh/nested_meshes.hpp"
 #include "mesh/tet_mesh.hpp"
 
@@ -27,6 +28,9 @@ struct TetRefinementMaps {
   std::vector<int> parent_tet_of_face;
   /// For each fine tetrahedron: the coarse one that contains it.
   std::vector<int> tet_parent;
+  /// Maps composed across skipped levels only (empty otherwise): each new fine vertex's P1
+  /// weights over the coarse vertices (mesh/composed_refinement.hpp).
+  std::vector<CoarseVertexWeights> composed_weights;
 
   // The vocabulary RefinementMaps shares (mesh/simplex_mesh.hpp).
   int parent_facet(int f) const { return parent_face[f]; }

@@ -54,25 +54,26 @@ std::vector<int> path_of(const std::vector<std::pair<int, double>>& move) {
   return path;
 }
 
-/// When both quarters of link l are truncated, their share of the coarse S_n moves onto a free
-/// quarter of the partner link (3D): false when there is none.
+/// When every child of link l is truncated, its share of the coarse S_n moves onto the first free
+/// child of a partner link (another pair of the same coarse facet): false when there is none.
 bool move_to_partner(const Level& level, int l, const std::vector<char>& truncated,
                      std::vector<std::array<double, 2>>& weights, ColumnMoves& column) {
   const ContactLink& link = level.links[l];
-  if (link.partner < 0 || link.flux_moves[0].empty()) return false;
-  const ContactLink& partner = level.links[link.partner];
-  for (int i = 0; i < 2; ++i) {
-    const int free_sn = partner.fine_sn[i];
-    if (free_sn < 0 || truncated[free_sn]) continue;
-    for (int k = 0; k < 2; ++k) {
-      const double moved = link.sn_weight[k] * link.partner_factor[k][i];
-      column.arrivals.emplace_back(free_sn, moved);
-      weights[link.partner][i] += moved;
+  if (link.partners.empty() || link.flux_moves[0].empty()) return false;
+  for (const LinkPartner& partner : link.partners)
+    for (int i = 0; i < 2; ++i) {
+      const int free_sn = level.links[partner.link].fine_sn[i];
+      if (free_sn < 0 || truncated[free_sn]) continue;
+      for (int k = 0; k < 2; ++k) {
+        if (link.fine_sn[k] < 0) continue;
+        const double moved = link.sn_weight[k] * partner.factor[k][i];
+        column.arrivals.emplace_back(free_sn, moved);
+        weights[partner.link][i] += moved;
+      }
+      column.path = path_of(link.flux_moves[0]);
+      return true;
     }
-    column.path = path_of(link.flux_moves[0]);
-    return true;
-  }
-  return false;  // all four quarters are truncated: the coarse S_n has no flux left
+  return false;  // every child of the facet is truncated: the coarse S_n has no flux left
 }
 
 /// P̃'s entries for the moves: the arrivals, and one least-energy correction on each column's path.
@@ -305,8 +306,10 @@ SparseMatrix TruncatedHierarchy::flux_moves(int j, std::vector<char>& coarse) {
       if (link.coarse_sn < 0 || link.fine_sn[0] < 0) continue;
       if (link.fine_sn[1] < 0) {
         // A contact edge that bisection kept has one child: the coarse S_n is truncated
-        // with it.
-        if (truncated[link.fine_sn[0]]) coarse[link.coarse_sn] = 1;
+        // with it, unless the child's partners of the same facet take its share.
+        if (truncated[link.fine_sn[0]] && !move_to_partner(level, static_cast<int>(l), truncated,
+                                                           weights, columns[link.coarse_sn]))
+          coarse[link.coarse_sn] = 1;
         continue;
       }
       const bool t0 = truncated[link.fine_sn[0]], t1 = truncated[link.fine_sn[1]];

@@ -16,7 +16,8 @@ TEST(CycleSetup, CoarseLevelsAreBuiltOncePerTruncatedSetAndNotBeforeTheFirstCycl
   const Discretization<2> disc(
       testing::adapted_hierarchy(build_mesh_hierarchy(make_hertz({.size = 0.1}), 1), data, 3),
       data);
-  const LevelHierarchy h = disc.build_level_hierarchy();
+  // Every bisection level kept (a share of 1): the default skips them down to three levels.
+  const LevelHierarchy h = disc.build_level_hierarchy(1.0);
   ASSERT_GE(h.num_levels(), 4);
   const BoxQp& qp = disc.problem().qp;
   MultilevelCycle cycle(qp, h, MultilevelOptions{});

@@ -90,11 +90,12 @@ TEST(TetHertzLinks, EachQuarterCanMoveItsFluxOntoItsPartnerInsideTheCoarseTetrah
     if (link.coarse_sn < 0 || link.fine_sn[0] < 0 || link.fine_sn[1] < 0) continue;
     ++pairs;
     // The face's other two quarters: when both quarters here are truncated, their share goes there.
-    ASSERT_GE(link.partner, 0);
-    const ContactLink& partner = links[link.partner];
-    EXPECT_EQ(&links[partner.partner], &link);
+    ASSERT_EQ(link.partners.size(), 1u);
+    const ContactLink& partner = links[link.partners[0].link];
+    ASSERT_EQ(partner.partners.size(), 1u);
+    EXPECT_EQ(&links[partner.partners[0].link], &link);
     EXPECT_EQ(partner.coarse_sn, link.coarse_sn);
-    for (const auto& row : link.partner_factor)
+    for (const auto& row : link.partners[0].factor)
       for (double factor : row) {
         EXPECT_GT(factor, 0.8);
         EXPECT_LE(factor, 1.0 + 1e-12);

@@ -56,7 +56,7 @@ LinkKinds link_kinds(const LevelHierarchy& h) {
       if (link.coarse_sn < 0 || link.fine_sn[0] < 0) continue;
       if (link.fine_sn[1] < 0)
         ++kinds.kept;
-      else if (link.partner < 0)
+      else if (link.partners.empty())
         ++kinds.pair;
       else
         ++kinds.partnered;

@@ -79,7 +79,8 @@ Compositions compositions(const SimplexHierarchy<dim>& h) {
     Eigen::SparseMatrix<double> product =
         cartesian_prolongation<dim>(h.meshes[fine - 1], h.meshes[fine], h.maps[fine]);
     for (int coarse = fine - 2; coarse >= std::max(0, fine - 4); --coarse) {
-      maps = compose_refinement_maps(h.meshes[coarse + 1], h.maps[coarse + 1], maps);
+      maps =
+          compose_refinement_maps(h.meshes[coarse], h.meshes[coarse + 1], h.maps[coarse + 1], maps);
       product = product * cartesian_prolongation<dim>(h.meshes[coarse], h.meshes[coarse + 1],
                                                       h.maps[coarse + 1]);
       const SimplexMesh<dim>& c = h.meshes[coarse];
@@ -161,16 +162,33 @@ TEST(SolverLevels, BisectionLevelsAreKeptAFactorApart) {
   }
 }
 
-TEST(SolverLevels, NoContactVertexIsLeftWithoutParents) {
-  // Every vertex on the contact boundary: only complete compositions are kept.
+TEST(SolverLevels, EveryVertexOnTheContactBoundaryHasCoarseWeights) {
+  // Every vertex on the contact boundary: the contact zone's levels are skipped as any others,
+  // and every new vertex of a kept level is a P1 combination of at most three coarse vertices
+  // (weights positive, adding up to 1; ½ and ½ where it halves a coarse edge).
   const MeshHierarchy h =
       bisected_towards_corner<2>(build_mesh_hierarchy(make_square({.size = 0.25}), 0), 8, 1e-9);
   const SolverLevels<2> everywhere = skip_close_levels<2>(
       h, lowest_order_unknowns(h), [](int, int) { return true; }, 0);
   const SolverLevels<2> nowhere = skip_close_levels<2>(h, lowest_order_unknowns(h), kNoContact, 0);
-  EXPECT_GT(everywhere.mesh_levels.size(), nowhere.mesh_levels.size());
+  EXPECT_EQ(everywhere.mesh_levels, nowhere.mesh_levels);
+  int chained = 0;
   for (const RefinementMaps& maps : everywhere.maps)
-    EXPECT_TRUE(every_new_vertex_halves_a_coarse_edge(maps));
+    for (int k = 0; k < static_cast<int>(maps.composed_weights.size()); ++k) {
+      const CoarseVertexWeights& w = maps.composed_weights[k];
+      ASSERT_TRUE(w.known());
+      double sum = 0.0;
+      for (int i = 0; i < 3; ++i) {
+        EXPECT_EQ(w.vertex[i] >= 0, w.weight[i] > 0.0);
+        sum += w.weight[i];
+      }
+      EXPECT_EQ(sum, 1.0);
+      if (halves_coarse_edge(maps, k))
+        EXPECT_EQ(w.weight, (std::array<double, 3>{0.5, 0.5, 0.0}));
+      else
+        ++chained;
+    }
+  EXPECT_GT(chained, 0);
 }
 
 }  // namespace
