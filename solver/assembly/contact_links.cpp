@@ -192,7 +192,14 @@ std::vector<ContactLink> contact_links(const FoslsSpace<dim>& coarse, const Fosl
   const SimplexMesh<dim>& cm = coarse.mesh();
   const auto midpoint = contact_midpoints(coarse, maps);
   const auto children = contact_children(coarse, fine.mesh(), maps);
-  const std::vector<std::vector<int>> interior = interior_sigma_dofs(coarse, fine, maps);
+  // The coarse cells' interior DOFs carry 3D's flux moves, and 2D's only where levels were
+  // skipped (an edge with more than two children): a uniform 2D hierarchy does without them.
+  const bool moves_through_cells =
+      dim == 3 || std::any_of(children.begin(), children.end(),
+                              [](const std::vector<int>& kids) { return kids.size() > 2; });
+  const std::vector<std::vector<int>> interior = moves_through_cells
+                                                     ? interior_sigma_dofs(coarse, fine, maps)
+                                                     : std::vector<std::vector<int>>{};
   std::vector<ContactLink> links;
   std::set<std::pair<int, int>> linked;  // coarse edges with their U_n link
   for (int F = 0; F < cm.num_facets(); ++F) {
