@@ -3,6 +3,9 @@
 // (tet_bisection.hpp) three times. On every adapted level mmg keeps J non-increasing and every
 // iterate feasible after every smoother sweep and coarse correction, each step's solve converges in
 // a bounded number of iterations from the prolongated solution, and the estimator J^½ decreases.
+// The last steps' solver levels skip bisection levels of the contact zone, so those checks run
+// across contact links of chains of midpoints, vertices inside coarse faces and faces with more
+// than four children.
 // The same loop with an accuracy section refines uniformly and estimates the force's error, which
 // bounds the error against the force of the next uniform refinement.
 #include <gtest/gtest.h>
@@ -10,6 +13,7 @@
 #include <cmath>
 #include <cstdio>
 
+#include "../contact_zone_skips.hpp"
 #include "../step_energy_counter.hpp"
 #include "../sweep_checks.hpp"
 #include "../tet_problems.hpp"
@@ -71,11 +75,18 @@ TEST(AdaptiveLoop3d, MonotoneFeasibleBoundedAndTheEstimatorDecreases) {
   // Every adapted level's hierarchy: J non-increasing and every iterate feasible after every
   // sweep and coarse correction of cycles from zero.
   const TetHierarchy& all = s.disc->meshes();
+  int skips_last = 0;
   for (const AdaptiveStepRecord& r : s.steps) {
     const Discretization<3> disc(first_levels(all, r.levels), data);
     const LevelHierarchy h = disc.build_level_hierarchy();
     EXPECT_GE(testing::checked_cycles_from_zero(disc.problem().qp, h, 5), 10) << r.levels;
+    skips_last = testing::contact_zone_skips(h, 3);
+    std::printf("%d mesh levels: %d solver levels, %d contact-zone links across skipped levels\n",
+                r.levels, h.num_levels(), skips_last);
   }
+  // The last step's solver levels skip bisection levels of the contact zone too, and the checks
+  // above ran across them.
+  EXPECT_GT(skips_last, 0);
 }
 
 TEST(AccuracyLoop3d, TheForceErrorEstimateBoundsTheErrorAgainstAFinerLevel) {

@@ -8,6 +8,7 @@
 
 #include <limits>
 
+#include "../contact_zone_skips.hpp"
 #include "adapted_hierarchy.hpp"
 #include "contact_problems.hpp"
 #include "solvers/solve_loop.hpp"
@@ -25,16 +26,6 @@ struct Case {
   int adaptive_steps = 0;  ///< bisection levels on top of the uniform ones
   CycleShape cycle = CycleShape::kW;
 };
-
-/// How many contact links of `h` relate levels across a skipped refinement of the contact zone:
-/// U_n points with weights other than ½ and S_n links among partners.
-int contact_zone_skips(const LevelHierarchy& h) {
-  int skips = 0;
-  for (const Level& level : h.levels)
-    for (const ContactLink& l : level.links)
-      skips += (l.fine_un_mid >= 0 && l.un_weight[0] != 0.5) || !l.partners.empty();
-  return skips;
-}
 
 Discretization<2> discretization(const Case& c) {
   // Adapted hierarchies: two uniform levels and five or eight bisection levels.
@@ -58,7 +49,7 @@ TEST_P(Monotonicity, EnergyNeverIncreasesAndIteratesStayFeasible) {
   // An adapted hierarchy's solver levels are mesh levels a factor apart, the contact zone's
   // too (assembly/solver_levels.hpp): measured 3–4 of 7, 5 of 10.
   if (c.adaptive_steps > 0) EXPECT_LT(h.num_levels(), disc.num_levels());
-  const int skips = contact_zone_skips(h);
+  const int skips = testing::contact_zone_skips(h, 2);
   if (c.adaptive_steps > 0) EXPECT_GT(skips, 0);
   const BoxQp& qp = disc.problem().qp;
   MultilevelOptions options;
