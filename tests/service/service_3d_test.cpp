@@ -99,8 +99,8 @@ TEST(Service3d, ACaseTooLargeOrNamingALocalFileIsRefusedByItsFieldBeforeItRuns) 
   std::string why;
   EXPECT_EQ(refused_at(svc, file, &why), std::vector<std::string>{"/mesh/msh_file"});
   EXPECT_NE(why.find("mesh.msh"), std::string::npos) << why;
-  // Refinement 3: about 639 000 unknowns, estimated above 20 s (260 µs per unknown); pdas
-  // would not fit either (193 s), so it is not offered.
+  // Refinement 3: about 639 000 unknowns, estimated above 20 s (2.8 min with mmg); pdas
+  // would not fit either (3.2 min), so it is not offered.
   why.clear();
   EXPECT_EQ(refused_at(svc, hertz_3d(3), &why), std::vector<std::string>{"/mesh/refinements"});
   EXPECT_NE(why.find("--max-job-seconds"), std::string::npos) << why;

@@ -31,7 +31,7 @@ double solve_seconds(const CaseSpec& point, const ProblemCount& count) {
   const SolverOptions& solver = point.solver;
   if (auto s = estimated_seconds(count, solver.method)) {
     const int fitted = fitted_iterations(solver.method, count.dimension);
-    const double share = setup_share(solver.method);
+    const double share = setup_share(solver.method, count.dimension);
     return *s * (share + (1.0 - share) * priced_iterations(point, fitted) / fitted);
   }
   // Mesh and assembly as measured with pgs (docs/service.md, "Time limits").

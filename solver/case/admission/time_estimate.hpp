@@ -1,7 +1,8 @@
 #pragma once
 // A rough guide to how long a solve takes, from its unknowns and method (docs/case-format.md,
-// "Resources"): in 2D fitted on the curved-gap square, in 3D the slowest measured cases
-// (docs/performance.md, "3D"), on two cores of the development machine. The CLI prints it; the
+// "Resources"): in 2D fitted on the curved-gap square on two cores of the development machine,
+// in 3D on the slowest of one thread's CPU time on four cases (docs/performance.md, "3D: the time
+// guide"). The CLI prints it; the
 // service bounds a whole case's time by it (job_time.hpp) only with a wide margin — the same run
 // varies 2–3× with the machine's load.
 
@@ -31,9 +32,10 @@ std::optional<double> estimated_seconds(const ProblemCount& count, SolverMethod 
 int fitted_iterations(SolverMethod method, int dimension);
 
 /// The share of estimated_seconds that does not grow with the iterations (mesh, assembly, the
-/// hierarchy and the nested iteration): mmg and tnnmg about 0.3; pdas factorises at every
-/// iteration, 0.
-double setup_share(SolverMethod method);
+/// hierarchy and the nested iteration): mmg and tnnmg about 0.3; pdas 0 in 2D, where it
+/// factorises per active set, and 0.7 in 3D, where one factorisation serves every active set
+/// (measured 0.74 on the Hertz ball at 79 384 unknowns).
+double setup_share(SolverMethod method, int dimension);
 
 /// "about 0.81 s", "about 53 s", "about 6 min", "about 2.5 h": two significant digits in a
 /// unit a reader takes in at a glance (not "3.5e+02 s").
