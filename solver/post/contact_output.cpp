@@ -9,8 +9,9 @@
 namespace fosls {
 
 namespace {
-/// Contact edges in chain order: each chain starts at an end vertex (used by one contact edge).
-std::vector<int> chain_order(const FoslsSpace<2>& space) {
+/// Contact edges in chain order, each with the vertex it is entered from: each chain starts at
+/// an end vertex (used by one contact edge).
+std::vector<std::pair<int, int>> chain_order(const FoslsSpace<2>& space) {
   const Mesh& mesh = space.mesh();
   std::map<int, std::vector<int>> at_vertex;
   std::vector<int> edges;
@@ -20,11 +21,11 @@ std::vector<int> chain_order(const FoslsSpace<2>& space) {
       for (int v : mesh.edge(e)) at_vertex[v].push_back(e);
     }
   std::vector<char> used(mesh.num_edges(), 0);
-  std::vector<int> order;
+  std::vector<std::pair<int, int>> order;
   auto walk = [&](int e, int from) {
     while (e >= 0 && !used[e]) {
       used[e] = 1;
-      order.push_back(e);
+      order.push_back({e, from});
       int to = mesh.edge(e)[0] == from ? mesh.edge(e)[1] : mesh.edge(e)[0];
       int next = -1;
       for (int f : at_vertex[to])
@@ -53,11 +54,13 @@ double set_friction_values(const FoslsAssembler<2>& assembler, const AssembledPr
   const Mesh& mesh = space.mesh();
   const int e = r.edge;
   double vertex_slip = 0.0;
-  for (int v : mesh.edge(e)) {
+  for (int k = 0; k < 2; ++k) {
+    const int v = r.ends[k];
     const Point t = slip_tangent(space, e, v);
     const double slip = tangential_displacement(space, x_full, v, t) -
                         reference_slip_origin(assembler.data(), v, t);
     r.slip += 0.5 * slip;
+    r.end_slip[k] = slip;
     vertex_slip = std::max(vertex_slip, std::abs(slip));
   }
   const int st = space.sigma_dof(e, 1);
@@ -113,9 +116,10 @@ ContactResult contact_output(const FoslsAssembler<2>& assembler, const Assembled
     largest_bound = std::max(largest_bound, problem.qp.upper[f.st]);
   std::vector<double> vertex_slips;  // per edge of out.edges: set_friction_values
   out.frictional = !problem.friction.edges.empty();
-  for (int e : chain_order(space)) {
+  for (auto [e, from] : chain_order(space)) {
     ContactEdgeResult r;
     r.edge = e;
+    r.ends = {from, mesh.edge(e)[0] == from ? mesh.edge(e)[1] : mesh.edge(e)[0]};
     const Point m = mesh.edge_midpoint(e);
     r.x = m.x(), r.y = m.y();
     const double len = mesh.edge_length(e);

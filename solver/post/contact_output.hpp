@@ -3,6 +3,7 @@
 // force, from a solution in the space's rotated, scaled coordinates (docs/result-format.md,
 // docs/method.md §6).
 
+#include <array>
 #include <vector>
 
 #include "assembly/fosls_assembler.hpp"
@@ -21,6 +22,11 @@ struct ContactEdgeResult {
   /// traction of the obstacle on the body (0 on a frictionless edge).
   double shear = 0;
   double slip = 0;  ///< u·t − its reference value, mean over the edge: the slip of the step
+  /// The edge's vertices in the order of the contact boundary (at s − length/2, s + length/2),
+  /// and the slip of the step at each: what locates a stick zone's
+  /// front within an edge (post/stick_front.hpp).
+  std::array<int, 2> ends = {-1, -1};
+  std::array<double, 2> end_slip = {0, 0};
   /// kOpen out of contact; in contact kStick where the step's slip is zero at both vertices
   /// (to kStickSlipTolerance of the largest), kSlip where it is not (always on a frictionless
   /// edge).

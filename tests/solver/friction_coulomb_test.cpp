@@ -93,7 +93,23 @@ TEST(FrictionCoulomb, FrozenBoundsDecreaseTheEnergyAndEveryIterateIsFeasible) {
 /// Cattaneo–Mindlin solution (tests/validation/cattaneo_mindlin.py, docs/validation.md §13).
 struct CattaneoMindlin {
   double stick = 0.0, theory = 0.0, shear_error = 0.0;
+  /// c/a from the fronts located within their edges (stick_zone.width), and the largest it may
+  /// be: the whole-edge zone with the two edges holding its fronts.
+  double located = 0.0, upper = 0.0;
 };
+
+/// The arc length from the start of the edge before the stick zone to the end of the edge
+/// after it.
+double stick_zone_with_front_edges(const nlohmann::json& c) {
+  const nlohmann::json& zone = c["stick_zone"];
+  double before = 0.0, after = 0.0;
+  for (std::size_t e = 0; e < c["s"].size(); ++e) {
+    const double s = c["s"][e], l = c["length"][e];
+    if (std::abs(s + l / 2 - zone["s_start"].get<double>()) < 1e-12) before = l;
+    if (std::abs(s - l / 2 - zone["s_end"].get<double>()) < 1e-12) after = l;
+  }
+  return zone["length"].get<double>() + before + after;
+}
 
 CattaneoMindlin cattaneo_mindlin(const nlohmann::json& r, double coefficient) {
   const nlohmann::json& c = r["contact"];
@@ -107,6 +123,8 @@ CattaneoMindlin cattaneo_mindlin(const nlohmann::json& r, double coefficient) {
   CattaneoMindlin m;
   m.theory = std::sqrt(std::max(0.0, 1 - std::abs(Q) / (coefficient * P)));
   m.stick = c["stick_zone"]["length"].get<double>() / 2 / a;
+  m.located = c["stick_zone"]["width"].get<double>() / 2 / a;
+  m.upper = stick_zone_with_front_edges(c) / 2 / a;
   double num = 0.0, den = 0.0;
   for (std::size_t e = 0; e < c["length"].size(); ++e) {
     const double xi = (c["x"][e].get<double>() - x0) / a, l = c["length"][e];
@@ -138,6 +156,26 @@ TEST(FrictionCoulomb, CattaneoMindlinStickZoneWithinItsMeasuredError) {
   EXPECT_LT(m.stick, m.theory);
   EXPECT_LT(m.theory - m.stick, 0.09);
   EXPECT_LT(m.shear_error, 0.235);
+}
+
+// The fronts located within their edges (docs/method.md §8.3): the located c/a lies between the
+// whole-edge zone and that zone with the two edges holding its fronts, and closer to the theory
+// than the whole-edge one.
+TEST(FrictionCoulomb, CattaneoMindlinLocatedFrontsCloserThanWholeEdges) {
+  nlohmann::json j = testing::load_shipped_example("cattaneo_mindlin");
+  j["mesh"]["refinements"] = 4;
+  const nlohmann::json r = testing::solved_case(j);
+  ASSERT_TRUE(r["converged"].get<bool>());
+  const nlohmann::json& steps = r["load_steps"]["steps"];
+  for (std::size_t k = 1; k < steps.size(); ++k) {
+    const CattaneoMindlin m = cattaneo_mindlin(steps[k], 0.3);
+    const nlohmann::json& zone = steps[k]["contact"]["stick_zone"];
+    EXPECT_LE(zone["front_start"].get<double>(), zone["s_start"].get<double>()) << k;
+    EXPECT_GE(zone["front_end"].get<double>(), zone["s_end"].get<double>()) << k;
+    EXPECT_GE(m.located, m.stick) << k;
+    EXPECT_LE(m.located, m.upper) << k;
+    EXPECT_LT(std::abs(m.located - m.theory), std::abs(m.stick - m.theory)) << k;
+  }
 }
 
 // The state is the slip of the step (docs/result-format.md): in each step of the shipped

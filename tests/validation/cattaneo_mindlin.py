@@ -13,12 +13,19 @@ step 0, then shifted by 0.001 and 0.002 in steps 1 and 2, each from the previous
 (the slip measured from it); its shift steps are compared.
 
 The stick zone is the result's (edges whose vertices did not slip in the step, docs/result-format.md);
-the last column reads it as before issue 49, from |σ_nt| below the bound 𝔣p.
+"located" is the same zone with its fronts located within their edges (contact.stick_zone.width,
+docs/method.md §8.3); the last column reads it as before issue 49, from |σ_nt| below the bound 𝔣p.
 
-usage: cattaneo_mindlin.py FOSLS_CONTACT [--load-steps] [refinements ...]
+usage: cattaneo_mindlin.py FOSLS_CONTACT [--load-steps] [--save DIR | --load DIR] [refinements ...]
+(with --load-steps, --save DIR keeps each result as DIR/cattaneo_mindlin_rN_stepped.json, for the
+figure, tests/validation/cattaneo_mindlin_figure.py; --load DIR reads them instead of solving).
+"fronts beyond" says where each end of the stick zone's fronts lies beyond the whole-edge
+zone, in edge lengths, start; end: the theory's ±c, then the located front.
 """
 import json
 import math
+import os
+import shutil
 import subprocess
 import sys
 import tempfile
@@ -36,11 +43,13 @@ def case(binary, refinements, shift):
     return c
 
 
-def solve(binary, c):
+def solve(binary, c, keep=None):
     with tempfile.TemporaryDirectory() as d:
         path, out = d + "/case.json", d + "/result.json"
         json.dump(c, open(path, "w"))
         subprocess.run([binary, "solve", path, "--out", out], capture_output=True)
+        if keep:
+            shutil.copyfile(out, keep)
         return json.load(open(out))
 
 
@@ -65,12 +74,21 @@ def compare(r):
     p0 = 2 * P / (math.pi * a)
     ratio = math.sqrt(max(0.0, 1 - Q / (F * P)))
     stick = c["stick_zone"]["length"] / 2 / a
+    located = c["stick_zone"].get("width", float("nan")) / 2 / a
     # The state as it was read before issue 49: stick where |σ_nt| is below the bound 𝔣p (to
     # 1e-4 of the largest bound: the bound is that of the last update, 𝔣p the final iterate's).
     largest = F * max(c["pressure"])
     below = [l for s, p, l, on in zip(c["shear"], c["pressure"], c["length"], c["active"])
              if on and abs(s) < F * p - 1e-4 * largest]
     stick_by_traction = sum(below) / 2 / a
+    zone = c["stick_zone"]
+    first = c["state"].index("stick")
+    last = len(c["state"]) - 1 - c["state"][::-1].index("stick")
+    h = c["length"][first]
+    ends = (c["x"][first] - c["length"][first] / 2 - x0, c["x"][last] + c["length"][last] / 2 - x0)
+    beyond = ((ends[0] + ratio * a) / h, (ratio * a - ends[1]) / h,
+              (zone["s_start"] - zone.get("front_start", zone["s_start"])) / h,
+              (zone.get("front_end", zone["s_end"]) - zone["s_end"]) / h)
     num = den = 0.0
     for x, s, l, active in zip(c["x"], c["shear"], c["length"], c["active"]):
         xi = (x - x0) / a
@@ -81,8 +99,8 @@ def compare(r):
             ref -= F * p0 * ratio * math.sqrt(1 - (xi / ratio) ** 2)
         num += (abs(s) - ref) ** 2 * l
         den += ref * ref * l
-    return {"Q/fP": Q / (F * P), "c/a": stick, "theory c/a": ratio,
-            "c/a by traction": stick_by_traction,
+    return {"Q/fP": Q / (F * P), "c/a": stick, "theory c/a": ratio, "located c/a": located,
+            "c/a by traction": stick_by_traction, "beyond": beyond,
             "shear L2": math.sqrt(num / den) if den else float("nan"),
             "edges in zone": c["zone"]["edges"], "iterations": r["iterations"],
             "stick edges": c["stick_zone"]["edges"],
@@ -92,22 +110,34 @@ def compare(r):
 
 def main():
     binary = sys.argv[1]
-    load_steps = "--load-steps" in sys.argv[2:]
-    levels = [int(v) for v in sys.argv[2:] if v != "--load-steps"] or [3, 4, 5]
-    print("| refinements | shift | edges in zone | Q/(𝔣P) | c/a computed | √(1 − Q/𝔣P) | "
-          "shear rel. L2 | mmg iterations | updates | stick edges | slipping below bound | "
-          "c/a by traction |")
-    print("|---|---|---|---|---|---|---|---|---|---|---|---|")
+    args = sys.argv[2:]
+    load_steps = "--load-steps" in args
+    save = args[args.index("--save") + 1] if "--save" in args else None
+    load = args[args.index("--load") + 1] if "--load" in args else None
+    levels = [int(v) for v in args if v.isdigit()] or [3, 4, 5]
+    print("| refinements | shift | edges in zone | Q/(𝔣P) | √(1 − Q/𝔣P) | c/a whole edges | "
+          "difference | c/a located | difference | shear rel. L2 | mmg iterations | updates | "
+          "fronts beyond: theory; located (edges) | "
+          "stick edges | slipping below bound | c/a by traction |")
+    print("|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|")
     for r in levels:
         if load_steps:
-            runs = stepped(solve(binary, shipped(binary, r)))
+            name = f"cattaneo_mindlin_r{r}_stepped.json"
+            if load:
+                runs = stepped(json.load(open(os.path.join(load, name))))
+            else:
+                runs = stepped(solve(binary, shipped(binary, r), save and os.path.join(save, name)))
         else:
             runs = [(shift, solve(binary, case(binary, r, shift))) for shift in (0.001, 0.002)]
         for shift, result in runs:
             m = compare(result)
-            print(f"| {r} | {shift} | {m['edges in zone']} | {m['Q/fP']:.3f} | {m['c/a']:.3f} | "
-                  f"{m['theory c/a']:.3f} | {m['shear L2']:.3f} | {m['iterations']} | "
-                  f"{m['updates']} | {m['stick edges']} | {m['slip below bound']} | "
+            b = m["beyond"]
+            print(f"| {r} | {shift} | {m['edges in zone']} | {m['Q/fP']:.3f} | "
+                  f"{m['theory c/a']:.3f} | {m['c/a']:.3f} | {m['c/a'] - m['theory c/a']:+.3f} | "
+                  f"{m['located c/a']:.3f} | {m['located c/a'] - m['theory c/a']:+.3f} | "
+                  f"{m['shear L2']:.3f} | {m['iterations']} | "
+                  f"{m['updates']} | {b[0]:.2f}, {b[1]:.2f}; {b[2]:.2f}, {b[3]:.2f} | "
+                  f"{m['stick edges']} | {m['slip below bound']} | "
                   f"{m['c/a by traction']:.3f} |", flush=True)
 
 

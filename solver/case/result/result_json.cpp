@@ -5,6 +5,7 @@
 
 #include "case/format/solver_methods.hpp"
 #include "case/result/obstacle_gap.hpp"
+#include "post/stick_front.hpp"
 #include "solvers/rounding_level_stop.hpp"
 
 namespace fosls {
@@ -102,6 +103,10 @@ json contact_json(const ContactResult& contact) {
   if (contact.frictional) {
     c["stick_zone"]["slipping_below_bound"] = contact.slipping_below_bound;
     c["stick_zone"]["sticking_at_bound"] = contact.sticking_at_bound;
+    const StickFronts fronts = locate_stick_fronts(contact.edges);
+    c["stick_zone"]["front_start"] = stick.edges ? json(fronts.start) : json(nullptr);
+    c["stick_zone"]["front_end"] = stick.edges ? json(fronts.end) : json(nullptr);
+    c["stick_zone"]["width"] = fronts.width;
   }
   c["force"] = {contact.force_x, contact.force_y};
   const ContactZone z = contact.zone();

@@ -210,22 +210,37 @@ FieldRule friction_only(FieldRule f) {
 
 ObjectRulePtr stick_zone_rule() {
   ValueRule where = number_or_null();
-  return object_rule("the stick zone", "stick_zone",
-                     {output_field("edges", count(), "1", "contact edges in state stick"),
-                      output_field("length", number(), "L", "their total length"),
-                      output_field("s_start", where, "L",
-                                   "arc length at the start of the first stick edge (null: none)"),
-                      output_field("s_end", where, "L",
-                                   "arc length at the end of the last stick edge (null: none)"),
-                      friction_only(output_field(
-                          "slipping_below_bound", count(), "1",
-                          "with friction only: frictional edges in contact that slip with "
-                          "|σ_nt| below the slip bound (a consistency check of the discrete "
-                          "solution)")),
-                      friction_only(output_field(
-                          "sticking_at_bound", count(), "1",
-                          "with friction only: frictional edges that stick with |σ_nt| at the "
-                          "bound"))});
+  return object_rule(
+      "the stick zone", "stick_zone",
+      {output_field("edges", count(), "1", "contact edges in state stick"),
+       output_field("length", number(), "L", "their total length"),
+       output_field("s_start", where, "L",
+                    "arc length at the start of the first stick edge (null: none)"),
+       output_field("s_end", where, "L",
+                    "arc length at the end of the last stick edge (null: none)"),
+       friction_only(
+           output_field("slipping_below_bound", count(), "1",
+                        "with friction only: frictional edges in contact that slip with "
+                        "|σ_nt| below the slip bound (a consistency check of the discrete "
+                        "solution)")),
+       friction_only(
+           output_field("sticking_at_bound", count(), "1",
+                        "with friction only: frictional edges that stick with |σ_nt| at the "
+                        "bound")),
+       friction_only(
+           output_field("front_start", where, "L",
+                        "with friction only: arc length of the first stick–slip front, "
+                        "located within the edge before s_start from the slip of the step "
+                        "(docs/method.md §8.3; null: no stick edge)")),
+       friction_only(output_field("front_end", where, "L",
+                                  "with friction only: arc length of the last stick–slip front, "
+                                  "located within the edge after s_end (null: no stick edge)")),
+       friction_only(
+           output_field("width", number(), "L",
+                        "with friction only: the stick zone's length with its fronts located "
+                        "within their edges, summed over the stick runs (for Cattaneo–Mindlin "
+                        "2c); between `length` and `length` plus the two edges holding the "
+                        "fronts"))});
 }
 
 ObjectRulePtr contact_rule() {
