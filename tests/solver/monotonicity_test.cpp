@@ -3,7 +3,8 @@
 // every iterate satisfies the bounds exactly, for the three coarse-obstacle projections and the
 // W, V and F cycles, on uniform hierarchies and on hierarchies adapted by newest-vertex
 // bisection (whose solver levels skip close bisection levels, the contact zone's too: links of
-// chains of midpoints and of contact edges with more than two fine children).
+// chains of midpoints and of contact edges with more than two fine children), with the levels
+// at most half (adaptivity) or 0.3 (the 2D accuracy loop's adaptive levels) of the next kept one.
 #include <gtest/gtest.h>
 
 #include <limits>
@@ -24,6 +25,7 @@ struct Case {
   CoarseProjection projection;
   int adaptive_steps = 0;  ///< bisection levels on top of the uniform ones
   CycleShape cycle = CycleShape::kW;
+  double share = kMaxSolverLevelShare;  ///< of a kept solver level in the next kept one
 };
 
 /// How many contact links of `h` relate levels across a skipped refinement of the contact zone:
@@ -54,10 +56,14 @@ TEST_P(Monotonicity, EnergyNeverIncreasesAndIteratesStayFeasible) {
   const Case& c = GetParam();
   const Discretization<2> disc = discretization(c);
   ASSERT_EQ(disc.num_levels(), c.adaptive_steps > 0 ? 2 + c.adaptive_steps : 4);
-  const LevelHierarchy h = disc.build_level_hierarchy();
+  const LevelHierarchy h = disc.build_level_hierarchy(c.share);
   // An adapted hierarchy's solver levels are mesh levels a factor apart, the contact zone's
-  // too (assembly/solver_levels.hpp): measured 3–4 of 7, 5 of 10.
+  // too (assembly/solver_levels.hpp): measured 3–4 of 7, 5 of 10 at share ½, fewer at the
+  // accuracy loop's 0.3; a uniform one keeps every level.
   if (c.adaptive_steps > 0) EXPECT_LT(h.num_levels(), disc.num_levels());
+  if (c.adaptive_steps > 0 && c.share < kMaxSolverLevelShare)
+    EXPECT_LT(h.num_levels(), disc.build_level_hierarchy().num_levels());
+  if (c.adaptive_steps == 0) EXPECT_EQ(h.num_levels(), disc.num_levels());
   const int skips = contact_zone_skips(h);
   if (c.adaptive_steps > 0) EXPECT_GT(skips, 0);
   const BoxQp& qp = disc.problem().qp;
@@ -123,7 +129,15 @@ INSTANTIATE_TEST_SUITE_P(
         Case{"square_lambda1_a_V", false, 1.0, CoarseProjection::kA, 0, CycleShape::kV},
         Case{"square_lambda1_a_F", false, 1.0, CoarseProjection::kA, 0, CycleShape::kF},
         Case{"hertz_lambdainf_a_F", true, kInf, CoarseProjection::kA, 0, CycleShape::kF},
-        Case{"adapted_hertz_lambda1_a_F", true, 1.0, CoarseProjection::kA, 5, CycleShape::kF}),
+        Case{"adapted_hertz_lambda1_a_F", true, 1.0, CoarseProjection::kA, 5, CycleShape::kF},
+        Case{"accuracy_adapted8_hertz_lambda1_a", true, 1.0, CoarseProjection::kA, 8,
+             CycleShape::kW, kAccuracySolverLevelShare},
+        Case{"accuracy_adapted8_hertz_lambdainf_a", true, kInf, CoarseProjection::kA, 8,
+             CycleShape::kW, kAccuracySolverLevelShare},
+        Case{"accuracy_adapted8_square_lambdainf_b", false, kInf, CoarseProjection::kB, 8,
+             CycleShape::kW, kAccuracySolverLevelShare},
+        Case{"accuracy_adapted_hertz_lambda1_a_V", true, 1.0, CoarseProjection::kA, 5,
+             CycleShape::kV, kAccuracySolverLevelShare}),
     [](const auto& info) { return std::string(info.param.name); });
 
 }  // namespace
