@@ -100,7 +100,9 @@ TEST_P(Monotonicity, EnergyNeverIncreasesAndIteratesStayFeasible) {
   }
   EXPECT_LE(kkt, 1e-8 * initial_kkt) << "did not converge in 400 cycles";
   EXPECT_GE(checks, 3 * iterations);  // pre, coarse and post steps were all observed
-  if (c.adaptive_steps > 0) EXPECT_LE(iterations, 45);  // measured 24–32
+  // Measured 24–32 at share ½; 39–67 at 0.3, whose cycles are cheaper (the accuracy loop starts
+  // each level from the last one's solution and stops at the discretisation error: 3–9 per level).
+  if (c.adaptive_steps > 0) EXPECT_LE(iterations, c.share < kMaxSolverLevelShare ? 75 : 45);
   std::printf(
       "%s: %d of %d levels, %d contact-zone links across skipped levels; %d cycles from "
       "x = 0, %d monotone feasible steps checked\n",
