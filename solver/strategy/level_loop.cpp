@@ -109,8 +109,11 @@ void solve_finest(LevelSolution<dim>& solution, const LevelLoopOptions& loop, bo
       solve_finest_order2(solution, options, observer);
       return;
     }
+  const bool adaptive_accuracy = loop.accuracy && loop.accuracy->adaptive;
+  const double share =
+      dim == 2 && adaptive_accuracy ? kAccuracySolverLevelShare : kMaxSolverLevelShare;
   const LevelHierarchy hierarchy =
-      needs_level_hierarchy(options.method) ? disc.build_level_hierarchy() : LevelHierarchy{};
+      needs_level_hierarchy(options.method) ? disc.build_level_hierarchy(share) : LevelHierarchy{};
   // Without an iterate to return, a limit that passed while the hierarchy was built is still a
   // limit of the set-up (as in the assembly), not a solve stopped at its initial projection.
   if (!from_start) observer.deadline.check("building the level hierarchy");

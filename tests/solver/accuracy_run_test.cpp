@@ -68,7 +68,9 @@ TEST(AccuracyRun, HertzReachesItAdaptivelyAndTheClaimHolds) {
   for (std::size_t k = 1; k < steps.size(); ++k) {
     const double growth = steps[k]["dofs"].get<double>() / steps[k - 1]["dofs"].get<double>();
     EXPECT_LT(growth, 2.5) << k;  // a bisection step, not a red refinement (about 4)
-    EXPECT_LE(steps[k]["iterations"].get<int>(), 20) << k;
+    // To the example's KKT tolerance 1e-8 on solver levels 0.3 apart (assembly/solver_levels.hpp):
+    // measured 13–30, each cheaper than the 13–20 of levels ½ apart (docs/performance.md).
+    EXPECT_LE(steps[k]["iterations"].get<int>(), 35) << k;
   }
   const double estimate = a["estimate"].get<double>();
   const double force = r["contact"]["force"][1].get<double>();
