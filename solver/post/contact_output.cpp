@@ -9,9 +9,14 @@
 namespace fosls {
 
 namespace {
-/// Contact edges in chain order, each with the vertex it is entered from: each chain starts at
-/// an end vertex (used by one contact edge).
-std::vector<std::pair<int, int>> chain_order(const FoslsSpace<2>& space) {
+/// A contact edge and its vertices in the order the chain walks them.
+struct ChainEdge {
+  int edge;
+  std::array<int, 2> ends;  ///< entered from ends[0], left at ends[1]
+};
+
+/// Contact edges in chain order: each chain starts at an end vertex (used by one contact edge).
+std::vector<ChainEdge> chain_order(const FoslsSpace<2>& space) {
   const Mesh& mesh = space.mesh();
   std::map<int, std::vector<int>> at_vertex;
   std::vector<int> edges;
@@ -21,12 +26,12 @@ std::vector<std::pair<int, int>> chain_order(const FoslsSpace<2>& space) {
       for (int v : mesh.edge(e)) at_vertex[v].push_back(e);
     }
   std::vector<char> used(mesh.num_edges(), 0);
-  std::vector<std::pair<int, int>> order;
+  std::vector<ChainEdge> order;
   auto walk = [&](int e, int from) {
     while (e >= 0 && !used[e]) {
       used[e] = 1;
-      order.push_back({e, from});
-      int to = mesh.edge(e)[0] == from ? mesh.edge(e)[1] : mesh.edge(e)[0];
+      const int to = mesh.edge(e)[0] == from ? mesh.edge(e)[1] : mesh.edge(e)[0];
+      order.push_back({e, {from, to}});
       int next = -1;
       for (int f : at_vertex[to])
         if (!used[f]) next = f;
@@ -51,7 +56,6 @@ std::vector<std::pair<int, int>> chain_order(const FoslsSpace<2>& space) {
 double set_friction_values(const FoslsAssembler<2>& assembler, const AssembledProblem& problem,
                            const Vector& x_full, double largest_bound, ContactEdgeResult& r) {
   const FoslsSpace<2>& space = assembler.space();
-  const Mesh& mesh = space.mesh();
   const int e = r.edge;
   double vertex_slip = 0.0;
   for (int k = 0; k < 2; ++k) {
@@ -116,10 +120,10 @@ ContactResult contact_output(const FoslsAssembler<2>& assembler, const Assembled
     largest_bound = std::max(largest_bound, problem.qp.upper[f.st]);
   std::vector<double> vertex_slips;  // per edge of out.edges: set_friction_values
   out.frictional = !problem.friction.edges.empty();
-  for (auto [e, from] : chain_order(space)) {
+  for (const auto& [e, ends] : chain_order(space)) {
     ContactEdgeResult r;
     r.edge = e;
-    r.ends = {from, mesh.edge(e)[0] == from ? mesh.edge(e)[1] : mesh.edge(e)[0]};
+    r.ends = ends;
     const Point m = mesh.edge_midpoint(e);
     r.x = m.x(), r.y = m.y();
     const double len = mesh.edge_length(e);
