@@ -10,15 +10,17 @@
 namespace fosls {
 namespace {
 
+/// A measured solve: two threads' wall time in 2D, one thread's CPU time in 3D.
+struct Row {
+  long long unknowns;
+  SolverMethod method;
+  double seconds;
+};
+
 /// A 2D count whose coarsest level is not known: the solver table's fit alone.
 ProblemCount count_of(long long unknowns) { return ProblemCount{.unknowns = unknowns}; }
 
 TEST(TimeEstimate, FollowsTheMeasuredSolverTable) {
-  struct Row {
-    long long unknowns;
-    SolverMethod method;
-    double seconds;
-  };
   const Row measured[] = {
       {32832, SolverMethod::kMmg, 0.9},   {131200, SolverMethod::kMmg, 2.9},
       {524544, SolverMethod::kMmg, 11.8}, {32832, SolverMethod::kPdas, 1.1},
@@ -40,11 +42,6 @@ TEST(TimeEstimate, FollowsTheMeasuredSolverTable) {
 }
 
 TEST(TimeEstimate, In3dFollowsOneThreadsMeasuredCpuTime) {
-  struct Row {
-    long long unknowns;
-    SolverMethod method;
-    double seconds;  ///< CPU time, one thread
-  };
   // docs/performance.md, "3D: the time guide": the Hertz ball at λ = ∞ and λ = 1, the
   // incompressible block and rounded punch of the robustness cases.
   const Row measured[] = {
