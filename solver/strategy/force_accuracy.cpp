@@ -125,6 +125,7 @@ ForceErrorEstimate estimate_adaptive_force_error(const std::vector<ForceComponen
   if (!(size > 0)) return e;
   e.change = s.change / size;
   e.ratio_observed = s.i >= 0 && s.change > 0;
+  e.single_span = s.i < 0;
   e.monotone = s.monotone;
   e.growing = s.growing;
   if (s.growing) return e;
@@ -150,7 +151,7 @@ std::string accuracy_stop_reason(const ForceErrorEstimate& e, double tolerance,
   const auto zero = [](const ForceComponents& f) { return !(force_norm(f) > 0); };
   if (forces.size() >= 2 && zero(forces.back()) && zero(forces[forces.size() - 2]))
     return "no_force";
-  if (e.available() && e.estimate <= tolerance) return "reached";
+  if (e.available() && !e.single_span && e.estimate <= tolerance) return "reached";
   return "";
 }
 

@@ -50,6 +50,9 @@ struct ForceErrorEstimate {
   /// docs/validation.md §16). No estimate then: the loop refines on before it claims.
   bool growing = false;
   double estimate = kNone;  ///< the estimated relative error of |F_k|; NaN: none yet
+  /// An adaptive estimate from a single span, whose direction no earlier span could check: it
+  /// is reported, and the loop refines on instead of claiming from it (docs/method.md §9).
+  bool single_span = false;
   bool available() const { return estimate == estimate; }
 };
 
@@ -66,8 +69,9 @@ ForceErrorEstimate estimate_force_error(const std::vector<ForceComponents>& forc
 ForceErrorEstimate estimate_adaptive_force_error(const std::vector<ForceComponents>& forces,
                                                  const std::vector<long long>& dofs, int dim);
 
-/// Why the run stops after the last of `forces` (`reached` with an estimate within `tolerance`;
-/// `no_force` when it and the level before are zero), or empty to refine on.
+/// Why the run stops after the last of `forces` (`reached` with an estimate within `tolerance`
+/// that is not a single span's; `no_force` when it and the level before are zero), or empty to
+/// refine on.
 std::string accuracy_stop_reason(const ForceErrorEstimate& e, double tolerance,
                                  const std::vector<ForceComponents>& forces);
 
