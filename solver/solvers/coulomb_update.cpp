@@ -95,23 +95,4 @@ double CoulombUpdate::apply(int k, Vector& x, Vector& r, double frozen) {
   return change;
 }
 
-int CoulombUpdate::release_open_edges(Vector& x, Vector& r) {
-  int released = 0;
-  for (const FrictionEdge& f : layout_.edges) {
-    if (f.coefficient <= 0.0 || !(qp_.upper[f.st] > 0.0) || x[f.sn] < 0.0) continue;
-    qp_.lower[f.st] = qp_.upper[f.st] = 0.0;
-    if (x[f.st] != 0.0) update_residual(qp_.A, f.st, -x[f.st], r);
-    x[f.st] = 0.0;
-    ++released;
-  }
-  if (released == 0) return 0;
-  // The weights from the bounds as set, summed as an update sums them: a vertex whose edges
-  // are both released gets weight exactly 0 (no kink, kink_sides.hpp).
-  std::vector<double> bounds(layout_.edges.size());
-  for (std::size_t e = 0; e < layout_.edges.size(); ++e)
-    bounds[e] = qp_.upper[layout_.edges[e].st];
-  set_kink_weights(layout_, bounds, kinks_);
-  return released;
-}
-
 }  // namespace fosls

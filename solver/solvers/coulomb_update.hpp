@@ -74,14 +74,6 @@ class CoulombUpdate {
   /// largest bound (1 the first time).
   double apply(int k, Vector& x, Vector& r, double frozen);
 
-  /// Between updates: every edge whose S_n has reached 0 (it left contact in the last
-  /// iteration) while its bound is still positive loses its bound at once — bound 0, S_t moved
-  /// to 0 (r kept equal to b − A x), its kinks' weights set again (a vertex whose edges both lost
-  /// theirs has a free U_t) — without a full update of the other bounds; the kinks' sides are
-  /// chosen before the next iteration. Bounds only go down, so x stays feasible. Returns how
-  /// many edges were released.
-  int release_open_edges(Vector& x, Vector& r);
-
   /// ‖Δx‖ of the last update: how far it moved S_t onto the new bounds. Where x met a stopping
   /// criterion on Coulomb's residual and the update moved it by no more than that residual, the
   /// updated x is as close to Coulomb's law as the criterion asks, whatever the bounds' change.

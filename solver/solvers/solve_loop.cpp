@@ -165,8 +165,6 @@ class IterationLoop {
   }
 
   IterationRecord iterate(int k) {
-    // Edges that left contact in the last iteration lose their bound before this one.
-    if (coulomb_ && !coulomb_->newton()) coulomb_->release_open_edges(x_, r_);
     if (sides_) sides_->choose(x_, r_);
     const Vector x_old = x_, r_old = r_;
     step_.iterate(x_, r_);
