@@ -110,10 +110,7 @@ class IterationLoop {
     symmetric_multiply(qp_.A, x_, r_);
     r_ = qp_.b - r_;
     if (sides_) sides_->choose(x_, r_);
-    // From the nested iteration's start (bounds 0: frictionless) the fine level first settles
-    // its own contact zone; the first update follows after the schedule's iterations.
-    if (coulomb_ && !coulomb_->newton() && !(options_.nested && is_multilevel(options_.method)))
-      update_problem(0);  // the start's own bounds
+    if (coulomb_ && !coulomb_->newton()) update_problem(0);  // the start's own bounds
     active_ = qp_.active_set(x_);
     report_.initial_kkt = record(0, 0.0, 0).kkt_residual;
     if (coulomb_) coulomb_->started(frozen_kkt_);
@@ -135,8 +132,7 @@ class IterationLoop {
       // Met on Coulomb's residual, the update (bounds from x's S_n, slipping S_t moved onto
       // them) converges the solve if it changed the bounds by friction_tolerance at most, or
       // moved x by no more than the residual that met the criterion (coulomb_update.hpp).
-      if (coulomb_ && (met || coulomb_->due(k, frozen_kkt_, rec.kkt_residual) ||
-                       (k == 1 && options_.nested && is_multilevel(options_.method))) &&
+      if (coulomb_ && (met || coulomb_->due(k, frozen_kkt_, rec.kkt_residual)) &&
           update_problem(k) > options_.friction_tolerance && coulomb_->moved() > rec.kkt_residual)
         report_.converged_by = ConvergedBy::kNone;
       report_.converged = report_.converged_by != ConvergedBy::kNone;
