@@ -65,12 +65,18 @@ def stepped(result):
     return [(0.001 * k, s) for k, s in enumerate(result["load_steps"]["steps"]) if k > 0]
 
 
-def compare(r):
-    c = r["contact"]
+def loads(c):
+    """A result's contact: the normal load P, the tangential load |Q|, the half-width a and the
+    pressure's centre x0."""
     P = sum(p * l for p, l in zip(c["pressure"], c["length"]))
     Q = abs(sum(s * l for s, l in zip(c["shear"], c["length"])))
-    a = c["zone"]["width"] / 2
     x0 = sum(x * p * l for x, p, l in zip(c["x"], c["pressure"], c["length"])) / P
+    return P, Q, c["zone"]["width"] / 2, x0
+
+
+def compare(r):
+    c = r["contact"]
+    P, Q, a, x0 = loads(c)
     p0 = 2 * P / (math.pi * a)
     ratio = math.sqrt(max(0.0, 1 - Q / (F * P)))
     stick = c["stick_zone"]["length"] / 2 / a

@@ -16,7 +16,8 @@ import subprocess
 import sys
 import tempfile
 
-F = 0.3
+from cattaneo_mindlin import F, loads  # this directory's, as the script's own
+
 VARIANTS = [  # (indentation, shift sign and scale, direction)
     (0.01, 1.0, "body_normal"), (0.01, -1.0, "body_normal"), (0.0025, 0.25, "body_normal"),
     (0.01, 1.0, "obstacle_normal"), (0.0025, 0.25, "obstacle_normal")]
@@ -33,7 +34,7 @@ def solve(binary, refinements, depth, shift, direction):
         json.dump(c, open(d + "/case.json", "w"))
         subprocess.run([binary, "solve", d + "/case.json", "--out", d + "/result.json"],
                        capture_output=True, check=False)
-        return json.load(open(d + "/result.json"))
+        return json.load(open(d + "/result.json")), c["mesh"]["builtin"]["radius"]
 
 
 def x_at(contact, s):
@@ -43,14 +44,11 @@ def x_at(contact, s):
     return X[i - 1] + (X[i] - X[i - 1]) * (s - S[i - 1]) / (S[i] - S[i - 1])
 
 
-def offsets(contact):
-    P = sum(p * l for p, l in zip(contact["pressure"], contact["length"]))
-    Q = sum(s * l for s, l in zip(contact["shear"], contact["length"]))
-    a = contact["zone"]["width"] / 2
-    x0 = sum(x * p * l for x, p, l in zip(contact["x"], contact["pressure"], contact["length"])) / P
+def offsets(contact, radius):
+    P, Q, a, x0 = loads(contact)
     zone, stick = contact["zone"], contact["stick_zone"]
     centre = lambda s0, s1: ((x_at(contact, s0) + x_at(contact, s1)) / 2 - x0) / a
-    return {"a/R": a, "Q/fP": abs(Q) / (F * P), "theory": math.sqrt(max(0.0, 1 - abs(Q) / (F * P))),
+    return {"a/R": a / radius, "Q/fP": Q / (F * P), "theory": math.sqrt(max(0.0, 1 - Q / (F * P))),
             "c/a": stick["length"] / 2 / a, "located c/a": stick["width"] / 2 / a,
             "zone": centre(zone["s_start"], zone["s_end"]),
             "stick": centre(stick["s_start"], stick["s_end"]),
@@ -66,11 +64,12 @@ def main():
     print("|---|---|---|---|---|---|---|---|---|---|---|---|---|")
     for r in levels:
         for depth, shift, direction in VARIANTS:
-            steps = solve(binary, r, depth, shift, direction)["load_steps"]["steps"]
+            result, radius = solve(binary, r, depth, shift, direction)
+            steps = result["load_steps"]["steps"]
             for k, step in enumerate(steps):
                 if not step["contact"]["stick_zone"].get("edges"):
                     continue
-                m = offsets(step["contact"])
+                m = offsets(step["contact"], radius)
                 print(f"| {r} | {direction} | {depth} | {shift * k * 0.001:+.4f} | {m['a/R']:.3f} | "
                       f"{m['h/a']:.4f} | {m['Q/fP']:.3f} | {m['theory']:.3f} | {m['c/a']:.3f} | "
                       f"{m['located c/a']:.3f} | {m['zone']:+.4f} | {m['stick']:+.4f} | "
