@@ -15,7 +15,8 @@ add_dependencies(job_process_test fosls-solve-job)  # runs the real solve proces
 # One contract, two stores: the same tests on SQLite and on a throwaway PostgreSQL server that
 # the test process starts itself (postgres_cluster.hpp). One ctest entry per store, so that the
 # PostgreSQL tests share one server instead of running initdb per test.
-add_executable(job_store_contract_test ${SERVICE_TEST_DIR}/job_store_contract_test.cpp)
+add_executable(job_store_contract_test ${SERVICE_TEST_DIR}/job_store_contract_test.cpp
+                                       ${SERVICE_TEST_DIR}/job_store_recovery_test.cpp)
 target_link_libraries(job_store_contract_test PRIVATE fosls_service GTest::gtest_main)
 target_include_directories(job_store_contract_test PRIVATE ${SERVICE_TEST_DIR})
 foreach(store sqlite postgresql)
