@@ -1,8 +1,8 @@
 // Case JSON → CaseSpec (case/format/case_reader.hpp), bad input: every problem listed at its
 // JSON pointer with the reason, wrong types and values named, limits kept, nothing crashes.
 
-#include "case/format/case_reader.hpp"
 #include "../case_errors.hpp"
+#include "case/format/case_reader.hpp"
 #include "case_reader_cases.hpp"
 
 #include <gtest/gtest.h>
