@@ -22,14 +22,18 @@ class InexactPdasStep : public IterationStep {
   InexactPdasStep(const BoxQp& qp, const LevelHierarchy& hierarchy,
                   const MultilevelOptions& options, std::shared_ptr<GalerkinChain> chain,
                   int cycles);
+  ~InexactPdasStep() override;
   void iterate(Vector& x, Vector& r) override;
   CycleStatistics statistics() const override { return cycle_.statistics(); }
+  /// TEMPORARY (experiment): the cycles run so far.
+  int cycles_run() const { return cycles_run_; }
 
  private:
   const BoxQp& qp_;
   PdasActiveSet test_;
   MultilevelCycle cycle_;
   int cycles_;
+  int cycles_run_ = 0;
 };
 
 }  // namespace fosls
