@@ -18,7 +18,6 @@
 
 #include "solvers/bounded_complement_solver.hpp"
 #include "solvers/iteration_step.hpp"
-#include "solvers/pdas_active_set.hpp"
 
 namespace fosls {
 
@@ -34,17 +33,24 @@ class PdasStep : public IterationStep {
   void iterate(Vector& x, Vector& r) override;
 
  private:
+  static constexpr char kUpper = 1, kLower = 2;
+  /// The bound a DOF is active at.
+  double bound(char side, int i) const { return side == kUpper ? qp_.upper[i] : qp_.lower[i]; }
+  /// The active set of the next Newton step: the DOFs whose multiplier test says so.
+  std::vector<char> next_active_set(const Vector& x, const Vector& r);
   /// A with the rows and columns of active DOFs replaced by the identity, into m_'s values.
   void hold_active_rows(const std::vector<char>& active);
   /// x for the active set by a numeric factorisation of the held-rows matrix.
   void solve_by_factorisation(const std::vector<char>& active, const Vector& psi, Vector& x);
 
   const BoxQp& qp_;
-  PdasActiveSet test_;
   SparseMatrix m_;
+  Vector diagonal_;
   Eigen::CholmodSupernodalLLT<SparseMatrix> llt_;
   bool analysed_ = false;  // m_ and llt_'s pattern: on the first factorisation
   std::unique_ptr<BoundedComplementSolver> complement_;
+  std::vector<char> current_;
+  bool first_ = true;
 };
 
 }  // namespace fosls

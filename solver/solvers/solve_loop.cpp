@@ -3,7 +3,6 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
-#include <cstdlib>
 #include <limits>
 #include <memory>
 #include <optional>
@@ -17,7 +16,6 @@
 #include "core/peak_memory.hpp"
 #include "solvers/algebraic_error.hpp"
 #include "solvers/algebraic_error_stop.hpp"
-#include "solvers/inexact_pdas_step.hpp"
 #include "solvers/kink_sides.hpp"
 #include "solvers/kkt_residual_stop.hpp"
 #include "solvers/mmg_step.hpp"
@@ -42,13 +40,6 @@ bool is_multilevel(SolverMethod method) {
   return method == SolverMethod::kMmg || method == SolverMethod::kTnnmg;
 }
 
-/// Whether the steps run multilevel cycles and need the Galerkin chain: mmg, tnnmg and the
-/// inexact pdas.
-bool uses_cycles(const SolverOptions& options) {
-  return is_multilevel(options.method) ||
-         (options.method == SolverMethod::kPdas && options.newton_cycles > 0);
-}
-
 /// The iteration step of the method.
 std::unique_ptr<IterationStep> make_step(const BoxQp& qp, const LevelHierarchy& hierarchy,
                                          const SolverOptions& options,
@@ -59,9 +50,6 @@ std::unique_ptr<IterationStep> make_step(const BoxQp& qp, const LevelHierarchy& 
     case SolverMethod::kTnnmg:
       return std::make_unique<TnnmgStep>(qp, hierarchy, options.multilevel, std::move(chain));
     case SolverMethod::kPdas:
-      if (options.newton_cycles > 0)
-        return std::make_unique<InexactPdasStep>(qp, hierarchy, options.multilevel,
-                                                 std::move(chain), options.newton_cycles);
       return std::make_unique<PdasStep>(qp);
     case SolverMethod::kPgs:
       return std::make_unique<PgsStep>(qp, hierarchy, options.multilevel);
@@ -296,13 +284,14 @@ SolverReport solve_from_start(const BoxQp& qp, const LevelHierarchy& hierarchy,
   SolverReport report;
   const auto t_setup = Clock::now();
   start_feasible(qp, x);
-  if (uses_cycles(options) && !chain)
-    chain = std::make_shared<GalerkinChain>(galerkin_chain(qp.A, hierarchy));
-  if (is_multilevel(options.method) && options.nested) {
-    // Where the nested iteration cannot start (one level, or x = 0 infeasible) x stays as is.
-    const auto t_nested = Clock::now();
-    nested_initial_guess(qp, hierarchy, options, *chain, x, report, observer.out_of_time);
-    report.nested_s = seconds_since(t_nested);
+  if (is_multilevel(options.method)) {
+    if (!chain) chain = std::make_shared<GalerkinChain>(galerkin_chain(qp.A, hierarchy));
+    if (options.nested) {
+      // Where the nested iteration cannot start (one level, or x = 0 infeasible) x stays as is.
+      const auto t_nested = Clock::now();
+      nested_initial_guess(qp, hierarchy, options, *chain, x, report, observer.out_of_time);
+      report.nested_s = seconds_since(t_nested);
+    }
   }
   const std::unique_ptr<IterationStep> step = make_step(qp, hierarchy, options, chain);
   if (observer.on_sweep)
@@ -320,7 +309,7 @@ SolverReport solve_from_start(const BoxQp& qp, const LevelHierarchy& hierarchy,
 SolverReport solve_with_new_chain(const BoxQp& qp, const LevelHierarchy& hierarchy,
                                   const SolverOptions& options, const SolverObserver& observer,
                                   Vector& x, KinkSides* sides, CoulombUpdate* coulomb) {
-  const bool multilevel = uses_cycles(options);
+  const bool multilevel = is_multilevel(options.method);
   const auto t0 = Clock::now();
   std::shared_ptr<GalerkinChain> chain;
   if (multilevel) {
@@ -357,15 +346,6 @@ SolverReport solve_with_chain(const BoxQp& qp, const LevelHierarchy& hierarchy,
 
 namespace {
 
-/// TEMPORARY (experiment): the fallback's cycles per Newton step, FOSLS_INEXACT_CYCLES, and
-/// FOSLS_INEXACT_BELOW=1 for the inexact step below the limit too.
-int fallback_cycles(int unknowns) {
-  const char* k = std::getenv("FOSLS_INEXACT_CYCLES");
-  const char* below = std::getenv("FOSLS_INEXACT_BELOW");
-  const bool inexact = unknowns > kFallbackMaxUnknowns || (below && std::string(below) == "1");
-  return inexact ? (k ? std::atoi(k) : 2) : 0;
-}
-
 /// One frictional solve by options.method with the schedule given (or pdas's own).
 SolverReport solve_sided(BoxQp& qp, const KinkedProblem& kinked, const CoulombSchedule& schedule,
                          const LevelHierarchy& hierarchy, const SolverOptions& options,
@@ -391,8 +371,8 @@ SolverReport solve_kinked_qp(BoxQp& qp, const KinkedProblem& kinked,
     throw std::invalid_argument("solver.method tnnmg does not handle friction");
   // Coulomb with mmg: where it stalls, pdas finishes from its iterate, with the bounds of its
   // last update (they stay in qp) and the tolerance relative to mmg's initial residual.
-  const bool fallback =
-      kinked.coulomb && options.method == SolverMethod::kMmg && options.coulomb_fallback;
+  const bool fallback = kinked.coulomb && options.method == SolverMethod::kMmg &&
+                        options.coulomb_fallback && qp.size() <= kFallbackMaxUnknowns;
   CoulombSchedule schedule = kinked.schedule;
   if (!fallback)
     schedule.stall = StallTest::never();
@@ -402,9 +382,6 @@ SolverReport solve_kinked_qp(BoxQp& qp, const KinkedProblem& kinked,
   if (!report.stalled) return report;
   SolverOptions newton = options;
   newton.method = SolverMethod::kPdas;
-  newton.newton_cycles = fallback_cycles(qp.size());
-  newton.check_definiteness = false;  // checked by mmg's solve
-  newton.nested = false;              // pdas starts from mmg's iterate
   newton.max_iterations = options.max_iterations - report.iterations;
   newton.reference_kkt = report.initial_kkt;
   // The observer sees one solve: pdas's iterations numbered on from mmg's, its start not again.
@@ -417,7 +394,6 @@ SolverReport solve_kinked_qp(BoxQp& qp, const KinkedProblem& kinked,
       observer.on_iteration(rec);
     };
   append_fallback(report, solve_sided(qp, kinked, schedule, hierarchy, newton, continued, x));
-  report.fallback_cycles = newton.newton_cycles;
   return report;
 }
 

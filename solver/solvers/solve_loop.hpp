@@ -72,10 +72,6 @@ struct SolverOptions {
   /// Coulomb friction with mmg: where mmg stalls (solvers/coulomb_fallback.hpp), pdas finishes
   /// the solve from mmg's iterate, up to kFallbackMaxUnknowns unknowns (docs/method.md §8.4).
   bool coulomb_fallback = true;
-  /// pdas's linear solve per Newton step: 0 the exact one (pdas_step.hpp); k > 0 k linear
-  /// multilevel cycles (inexact_pdas_step.hpp; needs the level hierarchy), which Coulomb's
-  /// fallback uses above kFallbackMaxUnknowns (docs/method.md §8.4).
-  int newton_cycles = 0;
   /// The KKT residual `tolerance` is relative to (0: the initial iterate's): a solve that
   /// continues another (Coulomb's fallback) keeps its predecessor's.
   double reference_kkt = 0.0;
@@ -119,9 +115,6 @@ struct SolverReport {
   bool stalled = false;
   /// The iteration after which pdas took over from a stalled mmg (0: it did not).
   int switched_at = 0;
-  /// Of a switch: the multilevel cycles per Newton step of the pdas that took over (0: exact
-  /// pdas, SolverOptions::newton_cycles).
-  int fallback_cycles = 0;
 };
 
 /// The non-smooth parts of a frictional solve.

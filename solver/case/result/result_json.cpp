@@ -6,7 +6,6 @@
 #include "case/format/solver_methods.hpp"
 #include "case/result/obstacle_gap.hpp"
 #include "post/stick_front.hpp"
-#include "solvers/coulomb_fallback.hpp"
 #include "solvers/rounding_level_stop.hpp"
 
 namespace fosls {
@@ -16,14 +15,6 @@ namespace {
 using nlohmann::json;
 
 std::string short_number(double v) { return sentence_number(v, 3); }
-
-/// Which pdas finished a stalled Coulomb solve (SolverReport::fallback_cycles).
-std::string fallback_words(int cycles) {
-  if (cycles == 0) return "pdas (a direct factorisation)";
-  return "pdas with " + std::to_string(cycles) + " multilevel cycle" + (cycles > 1 ? "s" : "") +
-         " per Newton step instead of the factorisation (above " +
-         std::to_string(kFallbackMaxUnknowns) + " unknowns)";
-}
 
 /// The constraint's direction and each contact group's obstacle, in both dimensions.
 void add_constraint_json(json& c, const CaseSpec& spec) {
@@ -219,10 +210,9 @@ std::vector<ResultWarning> result_warnings(const SolverReport& report,
   if (report.switched_at > 0)
     warnings.push_back({"coulomb_fallback",
                         "mmg's Coulomb iteration stalled after " +
-                            std::to_string(report.switched_at) + " iterations; " +
-                            fallback_words(report.fallback_cycles) +
-                            " finished the solve from there (friction.fallback_after; "
-                            "docs/method.md §8.4)"});
+                            std::to_string(report.switched_at) +
+                            " iterations; pdas (a direct factorisation) finished the solve from "
+                            "there (friction.fallback_after; docs/method.md §8.4)"});
   if (report.cycle.safeguard_reductions > 0)
     warnings.push_back(
         {"coarse_corrections_shortened",
