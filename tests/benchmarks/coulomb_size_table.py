@@ -9,8 +9,16 @@ step is compared with mmg's. One `fosls-contact solve` after the other, never tw
 the three columns of a row are measured side by side; the times are only comparable within a
 row. Set OMP_NUM_THREADS for the runs as for every benchmark here.
 
-usage: coulomb_size_table.py FOSLS_CONTACT REFINEMENTS... [--pdas]
+With `--against OTHER` (another build's fosls-contact; repeatable) the Coulomb run only, each
+OTHER's then FOSLS_CONTACT's, one row each (a binary may be written VAR=VALUE,...@BINARY to run
+it with those environment variables): iterations per step (mmg + the fallback's pdas after a switch),
+the multilevel cycles spent (mmg's iterations plus the inexact pdas's cycles per Newton step
+times its iterations; the nested iteration's not counted), seconds per step, peak MiB and the
+force difference to OTHER's per step.
+
+usage: coulomb_size_table.py FOSLS_CONTACT REFINEMENTS... [--pdas | --against OTHER...]
 """
+import re
 import json
 import math
 import os
@@ -47,6 +55,56 @@ def cell(result):
     return f"{'/'.join(its)}, {seconds} s, {result['memory']['peak_mib']:.0f} MiB"
 
 
+def fallback_cycles(step):
+    """The inexact pdas's cycles per Newton step from the coulomb_fallback warning (0: exact)."""
+    for w in step.get("warning_details", []):
+        if w["code"] == "coulomb_fallback":
+            m = re.search(r"pdas with (\d+) multilevel cycle", w["message"])
+            return int(m.group(1)) if m else 0
+    return 0
+
+
+def cycles_cell(result):
+    """Iterations (mmg + pdas) and multilevel cycles per step."""
+    its, cycles = [], []
+    for s in result["load_steps"]["steps"]:
+        switched = (s.get("friction") or {}).get("fallback_after")
+        pdas = s["iterations"] - switched if switched else 0
+        its.append(f"{switched} + {pdas}" if switched else f"{s['iterations']}")
+        cycles.append(str(s["iterations"] - pdas + fallback_cycles(s) * pdas))
+    return "/".join(its), "/".join(cycles)
+
+
+def solve_with_environment(run, refinements):
+    """Coulomb 0.3 by `run`: a binary, or VAR=VALUE,...@BINARY."""
+    settings, _, binary = run.rpartition("@")
+    saved = dict(os.environ)
+    os.environ.update(s.split("=", 1) for s in settings.split(",") if s)
+    try:
+        return vl.solve(binary, case(binary, refinements, True, "mmg"), allow_unconverged=True)
+    finally:
+        os.environ.clear()
+        os.environ.update(saved)
+
+
+def against(runs, refinements):
+    """Coulomb 0.3 by each of `runs`, one row each."""
+    print("| refinements | binary | iterations (mmg + pdas) | cycles | s per step | peak MiB | "
+          "force difference to the first row |")
+    print("|---|---|---|---|---|---|---|")
+    for r in refinements:
+        first = None
+        for b in runs:
+            res = solve_with_environment(b, r)
+            first = first or res
+            steps = res["load_steps"]["steps"]
+            its, cycles = cycles_cell(res)
+            seconds = "/".join(f"{s['timing']['solve_s'] + s['timing']['setup_s']:.1f}"
+                               for s in steps)
+            print(f"| {r} | {b} | {its} | {cycles} | {seconds} | "
+                  f"{res['memory']['peak_mib']:.0f} | {force_difference(res, first)} |", flush=True)
+
+
 def force_difference(a, b):
     """Relative difference of the contact force per step, "/"-separated, a step that either
     solve did not converge marked."""
@@ -64,6 +122,10 @@ def main():
         print(__doc__)
         return 2
     binary, with_pdas = args[0], "--pdas" in sys.argv
+    if "--against" in sys.argv:
+        others = [sys.argv[i + 1] for i, a in enumerate(sys.argv) if a == "--against"]
+        against(others + [binary], [int(r) for r in args[1:] if r not in others])
+        return 0
     print("| refinements | unknowns | frictionless | Coulomb 0.3, mmg | Coulomb 0.3, pdas | "
           "mmg − pdas in force, per step |")
     print("|---|---|---|---|---|---|")

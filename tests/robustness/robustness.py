@@ -161,6 +161,7 @@ def check_case(binary, path, table_rows, plain, repeat=1, offset=0, friction=0.0
     table_rows.append(
         f"| {name} | {mmg['dofs']:,} | {mmg['levels']} | {weights} | "
         + " | ".join(f"{iterations(results[m])} its, {results[m]['wall_s']:.1f} s"
+                     + (f", {results[m]['memory']['peak_mib']:.0f} MiB" if friction else "")
                      + ("" if results[m]["converged"] else " (not converged)")
                      for m in methods)
         + f" | {mmg['asymptotic_rate']:.2f} |")
