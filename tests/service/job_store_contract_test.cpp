@@ -11,14 +11,10 @@
 #include "gzip.hpp"
 #include "job_store_contract.hpp"
 
-namespace fosls::service {
+// In the support's namespace: the fixture, claim_as, make_job and kUnlimited without usings.
+namespace fosls::service::testing {
 namespace {
 
-using testing::claim_as;
-using testing::JobStoreContract;
-using testing::kUnlimited;
-using testing::make_job;
-using testing::StoreUnderTest;
 using namespace std::chrono_literals;
 
 TEST_P(JobStoreContract, SubmitClaimSucceedStoresResultOnce) {
@@ -383,4 +379,4 @@ INSTANTIATE_TEST_SUITE_P(Stores, JobStoreContract, ::testing::Values("sqlite", "
                          [](const auto& info) { return info.param; });
 
 }  // namespace
-}  // namespace fosls::service
+}  // namespace fosls::service::testing

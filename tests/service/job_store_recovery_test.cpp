@@ -13,14 +13,10 @@
 
 #include "job_store_contract.hpp"
 
-namespace fosls::service {
+// In the support's namespace: the fixture, claim_as, make_job and kUnlimited without usings.
+namespace fosls::service::testing {
 namespace {
 
-using testing::claim_as;
-using testing::JobStoreContract;
-using testing::kUnlimited;
-using testing::make_job;
-using testing::StoreUnderTest;
 using namespace std::chrono_literals;
 
 TEST_P(JobStoreContract, RecoveryRequeuesThenFailsAtMaxAttemptsAndHonoursCancels) {
@@ -282,4 +278,4 @@ TEST_P(JobStoreContract, WorkersDeclareTheirBudgetAndTheSmallestLiveOneIsAdmitte
 }
 
 }  // namespace
-}  // namespace fosls::service
+}  // namespace fosls::service::testing

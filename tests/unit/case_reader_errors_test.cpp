@@ -14,13 +14,11 @@
 #include <string>
 #include <vector>
 
-namespace fosls {
+// In the test support's namespace: valid_case, dump_errors and has_error without usings.
+namespace fosls::testing {
 namespace {
 
 using nlohmann::json;
-using testing::dump_errors;
-using testing::has_error;
-using testing::valid_case;
 
 TEST(ReadCase, CollectsEveryError) {
   json j = json::parse(R"({
@@ -386,4 +384,4 @@ TEST(ReadCase, EmptyBoundaryAndIncompleteConditions) {
 }
 
 }  // namespace
-}  // namespace fosls
+}  // namespace fosls::testing

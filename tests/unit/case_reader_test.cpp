@@ -15,15 +15,13 @@
 #include <string>
 #include <vector>
 
-namespace fosls {
+// In the test support's namespace: valid_case, dump_errors and has_error without usings.
+namespace fosls::testing {
 namespace {
 
 using nlohmann::json;
-using testing::dump_errors;
-using testing::has_error;
-using testing::valid_case;
 
-json load_example(const std::string& name) { return testing::load_shipped_example(name); }
+json load_example(const std::string& name) { return load_shipped_example(name); }
 
 TEST(ReadCase, EveryShippedExampleReads) {
   int count = 0;
@@ -261,4 +259,4 @@ TEST(ReadCase, GeometryMustBeOneClosedLoopWithEveryCurveInOneGroup) {
 }
 
 }  // namespace
-}  // namespace fosls
+}  // namespace fosls::testing
