@@ -10,31 +10,23 @@ with its fronts located within their edges), in units of the contact half-width 
 usage: stick_zone_position.py FOSLS_CONTACT [refinements ...]   (default 5; 6 takes minutes)
 """
 import bisect
-import json
 import math
-import subprocess
 import sys
-import tempfile
 
-from cattaneo_mindlin import F, loads  # this directory's, as the script's own
+from cattaneo_mindlin import F, loads, shipped, solve  # this directory's, as the script's own
 
 VARIANTS = [  # (indentation, shift sign and scale, direction)
     (0.01, 1.0, "body_normal"), (0.01, -1.0, "body_normal"), (0.0025, 0.25, "body_normal"),
     (0.01, 1.0, "obstacle_normal"), (0.0025, 0.25, "obstacle_normal")]
 
 
-def solve(binary, refinements, depth, shift, direction):
-    c = json.loads(subprocess.run([binary, "example", "cattaneo_mindlin"], capture_output=True,
-                                  text=True, check=True).stdout)
-    c["mesh"]["refinements"] = refinements
+def variant(binary, refinements, depth, shift, direction):
+    """The shipped case with its indentation, shifts and contact direction changed."""
+    c = shipped(binary, refinements)
     c["boundary"]["top"]["displacement"] = [0, -depth]
     c["boundary"]["contact"]["direction"] = direction
     c["load_steps"] = [{"/boundary/top/displacement/0": shift * k * 0.001} for k in (1, 2)]
-    with tempfile.TemporaryDirectory() as d:
-        json.dump(c, open(d + "/case.json", "w"))
-        subprocess.run([binary, "solve", d + "/case.json", "--out", d + "/result.json"],
-                       capture_output=True, check=False)
-        return json.load(open(d + "/result.json")), c["mesh"]["builtin"]["radius"]
+    return c
 
 
 def x_at(contact, s):
@@ -64,7 +56,8 @@ def main():
     print("|---|---|---|---|---|---|---|---|---|---|---|---|---|")
     for r in levels:
         for depth, shift, direction in VARIANTS:
-            result, radius = solve(binary, r, depth, shift, direction)
+            c = variant(binary, r, depth, shift, direction)
+            result, radius = solve(binary, c), c["mesh"]["builtin"]["radius"]
             steps = result["load_steps"]["steps"]
             for k, step in enumerate(steps):
                 if not step["contact"]["stick_zone"].get("edges"):
