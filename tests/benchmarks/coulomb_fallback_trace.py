@@ -8,41 +8,27 @@ active set's size and how many unknowns entered or left it, side by side.
 usage: coulomb_fallback_trace.py CASE [VAR=VALUE,...@]FOSLS_CONTACT...
 (a run's environment variables before an @)
 """
-import json
 import os
-import subprocess
 import sys
-import tempfile
+
+HERE = os.path.dirname(os.path.abspath(__file__))
+sys.path.insert(0, os.path.join(HERE, "..", "robustness"))
+sys.path.insert(0, os.path.join(HERE, "..", "validation"))
+from coulomb_size_table import binary_and_environment  # noqa: E402
+from robustness import load_case  # noqa: E402
+import validation_lib as vl  # noqa: E402
 
 
 def solve(run, case):
-    env = dict(os.environ)
-    binary = run
-    if "@" in run:
-        settings, binary = run.split("@", 1)
-        env.update(s.split("=", 1) for s in settings.split(","))
-    with tempfile.TemporaryDirectory() as tmp:
-        path, out = os.path.join(tmp, "case.json"), os.path.join(tmp, "result.json")
-        with open(path, "w") as f:
-            json.dump(case, f)
-        subprocess.run([binary, "solve", path, "--out", out, "--quiet"], check=False, env=env)
-        with open(out) as f:
-            return json.load(f)
+    binary, env = binary_and_environment(run)
+    return vl.solve(binary, case, allow_unconverged=True, env=env)
 
 
 def main():
     if len(sys.argv) < 3:
         print(__doc__)
         return 2
-    with open(sys.argv[1]) as f:
-        case = json.load(f)
-    for key in ("geo_file", "msh_file"):
-        if key in case["mesh"]:
-            case["mesh"][key] = os.path.join(os.path.dirname(os.path.abspath(sys.argv[1])),
-                                             case["mesh"][key])
-    for condition in case["boundary"].values():
-        if condition["type"] == "contact":
-            condition["friction"] = {"coefficient": 0.3}
+    case = load_case(sys.argv[1], 0.3)
     case.setdefault("solver", {})["method"] = "mmg"
     runs = [solve(b, case) for b in sys.argv[2:]]
     start = min((r["friction"]["fallback_after"] or 0) for r in runs)

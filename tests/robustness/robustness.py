@@ -102,14 +102,12 @@ def iterations(result):
     return str(result["iterations"])
 
 
-def check_case(binary, path, table_rows, plain, repeat=1, offset=0, friction=0.0):
-    name = os.path.splitext(os.path.basename(path))[0]
+def load_case(path, friction=0.0):
+    """The case at `path`, ready to be solved from a temporary folder (a mesh file it names is
+    next to the case: its path made absolute), with Coulomb friction of coefficient `friction`
+    on every contact group when it is > 0."""
     with open(path) as f:
         case = json.load(f)
-    methods, bounds = METHODS, BOUNDS
-    if case.get("dimension") == 3:
-        methods, bounds = METHODS_3D, BOUNDS_3D
-    # The case is solved from a temporary folder: a mesh file it names is next to the case.
     for key in ("geo_file", "msh_file"):
         if key in case["mesh"]:
             case["mesh"][key] = os.path.join(os.path.dirname(os.path.abspath(path)),
@@ -118,6 +116,16 @@ def check_case(binary, path, table_rows, plain, repeat=1, offset=0, friction=0.0
         for condition in case["boundary"].values():
             if condition["type"] == "contact":
                 condition["friction"] = {"coefficient": friction}
+    return case
+
+
+def check_case(binary, path, table_rows, plain, repeat=1, offset=0, friction=0.0):
+    name = os.path.splitext(os.path.basename(path))[0]
+    case = load_case(path, friction)
+    methods, bounds = METHODS, BOUNDS
+    if case.get("dimension") == 3:
+        methods, bounds = METHODS_3D, BOUNDS_3D
+    if friction > 0:
         methods, bounds = FRICTION_METHODS, FRICTION_BOUNDS
     if offset:
         case["mesh"]["refinements"] = case["mesh"].get("refinements", 0) + offset

@@ -27,9 +27,10 @@ class SolveError(RuntimeError):
     """fosls-contact failed (exit code other than 0 = converged and 3 = not converged)."""
 
 
-def solve(binary, case, vtu=False, allow_unconverged=False):
-    """Runs `fosls-contact solve` on a case dict; returns the result JSON as a dict, and with
-    vtu=True also the solution as parsed by read_vtu under the key "vtu"."""
+def solve(binary, case, vtu=False, allow_unconverged=False, env=None):
+    """Runs `fosls-contact solve` on a case dict (in the environment `env`, the caller's if
+    None); returns the result JSON as a dict, and with vtu=True also the solution as parsed by
+    read_vtu under the key "vtu"."""
     with tempfile.TemporaryDirectory(prefix="fosls-validation-") as tmp:
         case_path = os.path.join(tmp, "case.json")
         out_path = os.path.join(tmp, "result.json")
@@ -39,7 +40,7 @@ def solve(binary, case, vtu=False, allow_unconverged=False):
         cmd = [binary, "solve", case_path, "--out", out_path, "--quiet"]
         if vtu:
             cmd += ["--vtu", vtu_path, "--vtu-format", "ascii"]
-        proc = subprocess.run(cmd, capture_output=True, text=True)
+        proc = subprocess.run(cmd, capture_output=True, text=True, env=env)
         if proc.returncode not in (0, 3, 4) or not os.path.exists(out_path):
             raise SolveError("%s exited with %d: %s" % (" ".join(cmd), proc.returncode,
                                                         proc.stderr.strip()))
