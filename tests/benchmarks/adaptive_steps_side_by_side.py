@@ -93,11 +93,11 @@ def main():
           "true error | iterations per solve |")
     print("|---|---:|---|---:|---:|---:|---:|---:|---|---:|---:|---|")
     levels = []
+    news = [("new" if len(args.new) == 1 else os.path.splitext(os.path.basename(b))[0], b)
+            for b in args.new]
     for rnd in range(args.rounds):
         for case in args.cases.split(","):
             for tol in (float(t) for t in args.tols.split(",")):
-                news = [("new" if len(args.new) == 1 else
-                         os.path.splitext(os.path.basename(b))[0], b) for b in args.new]
                 runs = [("base", args.base, "uniform")]
                 if not args.uniform_once:
                     runs += [(label, b, "uniform") for label, b in news]
