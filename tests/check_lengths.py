@@ -4,8 +4,9 @@
 Checked: the code of the repository (C++, Python, JavaScript, shell, CMake, HTML, CSS) under
 the top folders and at the root; not the docs, data, or what a build or npm writes
 (build*/, web/node_modules/, web/dist/). Prints one line per file that is too long, with its
-length, and exits 1 if there is any. `--root DIR` checks another tree (the self-test writes one
-with a file one line too long and one at the limit).
+length, and exits 1 if there is any. `--root DIR` checks another tree, which must hold solver/
+(exit 2 otherwise: an empty folder would pass); the self-test writes one with a file one line
+too long and one at the limit.
 """
 import argparse
 import os
@@ -39,6 +40,11 @@ def too_long(root):
     return sorted(found)
 
 
+def is_project_tree(root):
+    """An empty or wrong folder would have no files to find and pass: it is refused."""
+    return (root / "solver").is_dir()
+
+
 def self_test():
     with tempfile.TemporaryDirectory() as tmp:
         root = Path(tmp)
@@ -47,6 +53,9 @@ def self_test():
         (root / "solver" / "at_limit.py").write_text("x\n" * LIMIT)
         (root / "build-x").mkdir()
         (root / "build-x" / "generated.cpp").write_text("x\n" * (2 * LIMIT))
+        if is_project_tree(root / "build-x"):
+            print("self-test: a folder without solver/ was taken for the project's tree")
+            return 1
         found = [str(p) for p, _ in too_long(root)]
         if found != [os.path.join("solver", "long.cpp")]:
             print("self-test: expected only solver/long.cpp, found %s" % found)
@@ -62,7 +71,11 @@ def main():
     args = parser.parse_args()
     if args.self_test:
         return self_test()
-    found = too_long(Path(args.root))
+    root = Path(args.root)
+    if not is_project_tree(root):
+        print("--root %s: not the project's tree (no solver/ folder in it)" % root)
+        return 2
+    found = too_long(root)
     for path, n in found:
         print("%s: %d lines (at most %d: split it by concept)" % (path, n, LIMIT))
     return 1 if found else 0
